@@ -1,0 +1,54 @@
+// Creating and destroying grids, topology.
+#include "api/handle.hpp"
+
+using namespace eg2d;
+using namespace eg2d::api;
+
+extern "C" {
+
+EG2D_API int eg2d_create(int ni, int nj, eg2d_grid **grid) {
+    if (grid) *grid = nullptr;
+    std::string message;
+    int status = EG2D_OK;
+    try {
+        require_ptr(grid, "grid");
+        *grid = new eg2d_grid(ni, nj);
+        return EG2D_OK;
+    } catch (const Error &e) {
+        status = status_of(e.failure());
+        message = e.what();
+    } catch (const std::bad_alloc &) {
+        status = EG2D_ERR_MEMORY;
+        message = "out of memory";
+    } catch (const std::exception &e) {
+        status = EG2D_ERR_ARGUMENT;
+        message = e.what();
+    } catch (...) {
+        status = EG2D_ERR_ARGUMENT;
+        message = "unknown exception";
+    }
+    try {
+        set_thread_error("eg2d_create: " + message);
+    } catch (...) {
+    }
+    return status;
+}
+
+EG2D_API void eg2d_destroy(eg2d_grid *grid) { delete grid; }
+
+EG2D_API int eg2d_set_topology(eg2d_grid *grid, int topology) {
+    return guard(grid, "eg2d_set_topology", [&] {
+        require(topology == EG2D_TOPO_SINGLE || topology == EG2D_TOPO_O || topology == EG2D_TOPO_C,
+                format("topology = %d: not one of EG2D_TOPO_SINGLE, EG2D_TOPO_O, EG2D_TOPO_C", topology));
+        grid->gen.set_topology(static_cast<Topology>(topology));
+    });
+}
+
+EG2D_API int eg2d_get_topology(const eg2d_grid *grid, int *topology) {
+    return guard(grid, "eg2d_get_topology", [&] {
+        require_ptr(topology, "topology");
+        *topology = static_cast<int>(grid->gen.grid().topology());
+    });
+}
+
+}  // extern "C"

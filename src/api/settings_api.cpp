@@ -1,0 +1,87 @@
+// System, solver and parameters.
+#include "api/handle.hpp"
+#include "api/parameters.hpp"
+#include "solvers/solver.hpp"
+
+using namespace eg2d;
+using namespace eg2d::api;
+
+namespace {
+int set_param(eg2d_grid *grid, const char *function, int param, double value) {
+    return guard(grid, function, [&] {
+        const ParameterInfo *p = find_parameter(param);
+        require(p != nullptr, format("parameter %d: no such parameter", param));
+        check_parameter(*p, value);
+        grid->gen.settings.*(p->field) = value;
+    });
+}
+}  // namespace
+
+extern "C" {
+
+EG2D_API int eg2d_set_system(eg2d_grid *grid, int system) {
+    return guard(grid, "eg2d_set_system", [&] {
+        require(system == EG2D_SYSTEM_LAPLACE || system == EG2D_SYSTEM_WINSLOW,
+                format("system = %d: not EG2D_SYSTEM_LAPLACE (0) or EG2D_SYSTEM_WINSLOW (1)", system));
+        grid->gen.set_system(static_cast<System>(system));
+    });
+}
+
+EG2D_API int eg2d_set_solver(eg2d_grid *grid, int solver) {
+    return guard(grid, "eg2d_set_solver", [&] {
+        require(solver >= 0 && solver <= 99, format("solver = %d: no such solver id", solver));
+        grid->gen.set_solver(solver);
+    });
+}
+
+EG2D_API int eg2d_get_solver(const eg2d_grid *grid, int *solver) {
+    return guard(grid, "eg2d_get_solver", [&] {
+        require_ptr(solver, "solver");
+        *solver = grid->gen.solver_id();
+    });
+}
+
+EG2D_API const char *eg2d_solver_name(int solver) {
+    const SolverInfo *s = find_solver(solver);
+    return s ? s->name : nullptr;
+}
+
+EG2D_API int eg2d_set_relaxation(eg2d_grid *grid, double omega) {
+    return set_param(grid, "eg2d_set_relaxation", EG2D_PARAM_RELAXATION, omega);
+}
+
+EG2D_API int eg2d_set_tolerance(eg2d_grid *grid, double tolerance) {
+    return set_param(grid, "eg2d_set_tolerance", EG2D_PARAM_TOLERANCE, tolerance);
+}
+
+EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations) {
+    return set_param(grid, "eg2d_set_max_iterations", EG2D_PARAM_MAX_ITERATIONS, max_iterations);
+}
+
+EG2D_API int eg2d_set_parameter(eg2d_grid *grid, int param, double value) {
+    return set_param(grid, "eg2d_set_parameter", param, value);
+}
+
+EG2D_API int eg2d_get_parameter(const eg2d_grid *grid, int param, double *value) {
+    return guard(grid, "eg2d_get_parameter", [&] {
+        require_ptr(value, "value");
+        const ParameterInfo *p = find_parameter(param);
+        require(p != nullptr, format("parameter %d: no such parameter", param));
+        *value = grid->gen.settings.*(p->field);
+    });
+}
+
+EG2D_API int eg2d_parameter_bounds(int param, double *lower, double *upper, double *default_value) {
+    const ParameterInfo *p = find_parameter(param);
+    if (!p) {
+        set_thread_error(format("eg2d_parameter_bounds: parameter %d: no such parameter", param));
+        return EG2D_ERR_ARGUMENT;
+    }
+    const Settings defaults;
+    if (lower) *lower = p->lower;
+    if (upper) *upper = p->upper;
+    if (default_value) *default_value = defaults.*(p->field);
+    return EG2D_OK;
+}
+
+}  // extern "C"

@@ -1,0 +1,176 @@
+#include "core/generator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "eg2d.h"
+#include "grid/initializers.hpp"
+#include "quality/quality.hpp"
+
+namespace eg2d {
+
+namespace {
+// Below this residual growth is never taken for divergence: round-off near a
+// converged grid can grow by large factors and still mean nothing.
+constexpr double kDivergenceFloor = 1e-2;
+
+std::string missing_sides(const Grid &g) {
+    std::string s;
+    for (int k = 0; k < 4; ++k) {
+        const Side side = static_cast<Side>(k);
+        if (g.has_side(side) && !g.side_set(side)) {
+            if (!s.empty()) s += ", ";
+            s += side_name(side);
+        }
+    }
+    return s;
+}
+}  // namespace
+
+Generator::Generator(int ni, int nj)
+    : grid_(ni, nj), solver_info_(find_solver(EG2D_SOLVER_PSOR)), solver_(solver_info_->make()) {}
+
+void Generator::set_topology(Topology t) {
+    if (t == Topology::C) fail(Failure::Unsupported, "the C-grid topology is not built into this library yet");
+    Grid next(grid_);
+    next.set_topology(t);
+    grid_ = std::move(next);
+    changed_start();
+    controls_.invalidate();
+}
+
+void Generator::changed_boundary() {
+    controls_.invalidate();  // boundary-derived controls (Middlecoff-Thomas) must be recomputed
+}
+
+void Generator::changed_start() {
+    iterations_ = 0;
+    solver_->reset();
+}
+
+void Generator::set_coordinates(const double *x, const double *y) {
+    grid_.set_coordinates(x, y);
+    changed_start();
+    controls_.invalidate();
+}
+
+void Generator::initialize(int method) {
+    const InitMethod *m = find_init_method(method);
+    if (!m) fail(Failure::Argument, format("initialisation method %d: no such method", method));
+    if (!grid_.boundary_complete())
+        fail(Failure::State, format("the boundary is not complete: side %s not set", missing_sides(grid_).c_str()));
+    Grid next(grid_);
+    m->fill(next);
+    check_finite("initial x", next.x.data(), next.size());
+    check_finite("initial y", next.y.data(), next.size());
+    next.mark_initialized();
+    grid_ = std::move(next);
+    changed_start();
+    controls_.invalidate();
+}
+
+void Generator::set_system(System s) {
+    system_ = s;
+    solver_->reset();
+}
+
+void Generator::set_solver(int id) {
+    const SolverInfo *info = find_solver(id);
+    if (!info) fail(Failure::Unsupported, format("solver %d is not built into this library", id));
+    std::unique_ptr<Solver> next = info->make();
+    solver_info_ = info;
+    solver_ = std::move(next);
+}
+
+void Generator::changed_controls() {
+    controls_.invalidate();
+    solver_->reset();
+}
+
+void Generator::require_initialized(const char *what) const {
+    if (!grid_.boundary_complete())
+        fail(Failure::State, format("%s: the boundary is not complete: side %s not set", what,
+                                    missing_sides(grid_).c_str()));
+    if (!grid_.initialized())
+        fail(Failure::State, format("%s: the grid has a boundary but no interior yet: call eg2d_initialize, "
+                                    "eg2d_iterate or eg2d_solve first", what));
+}
+
+void Generator::ensure_ready() {
+    if (!grid_.boundary_complete())
+        fail(Failure::State,
+             format("the boundary is not complete: side %s not set", missing_sides(grid_).c_str()));
+    if (!grid_.initialized()) initialize(EG2D_INIT_TFI);
+}
+
+ResidualInfo Generator::residual() const {
+    require_initialized("residual");
+    Grid &g = const_cast<Grid &>(grid_);  // the Level view is read-only here
+    const ControlFields &f = controls_.update(g, false);
+    Problem p{g, system_, f, settings};
+    return eg2d::residual(system_, p.level(), grid_.extent());
+}
+
+Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
+    ensure_ready();
+    const ControlFields &fields = controls_.update(grid_, true);
+    Problem problem{grid_, system_, fields, settings};
+    const double extent = grid_.extent();
+    double r = eg2d::residual(system_, problem.level(), extent).value;
+    double best = r;
+    for (long it = 0; it < max_iterations; ++it) {
+        if (stop_at_tolerance && r <= settings.tolerance) return RunEnd::Converged;
+        saved_x_ = grid_.x;
+        saved_y_ = grid_.y;
+        if (it > 0 && controls_.has_dynamic()) controls_.update(grid_, false);
+        solver_->iterate(problem);
+        const ResidualInfo ri = eg2d::residual(system_, problem.level(), extent);
+        if (!std::isfinite(ri.value) ||
+            (ri.value > settings.divergence_factor * best && ri.value > kDivergenceFloor)) {
+            grid_.x.swap(saved_x_);
+            grid_.y.swap(saved_y_);
+            solver_->reset();
+            if (!std::isfinite(ri.value))
+                fail(Failure::Diverged,
+                     format("%s diverged at iteration %d: non-finite residual at node (%d, %d); "
+                            "the grid is restored to iteration %d",
+                            solver_info_->name, iterations_ + 1, ri.i, ri.j, iterations_));
+            fail(Failure::Diverged,
+                 format("%s diverged at iteration %d: residual %.3g is more than %.3g times the run's best %.3g "
+                        "(largest at node (%d, %d)); the grid is restored to iteration %d",
+                        solver_info_->name, iterations_ + 1, ri.value, settings.divergence_factor, best, ri.i,
+                        ri.j, iterations_));
+        }
+        ++iterations_;
+        r = ri.value;
+        best = std::min(best, r);
+        if (monitor && monitor(iterations_, r))
+            fail(Failure::Interrupted,
+                 format("stopped by the monitor at iteration %d (residual %.3g)", iterations_, r));
+    }
+    if (stop_at_tolerance) {
+        if (r <= settings.tolerance) return RunEnd::Converged;
+        fail(Failure::NotConverged,
+             format("%s did not converge in %ld iterations: residual %.3g > tolerance %.3g", solver_info_->name,
+                    max_iterations, r, settings.tolerance));
+    }
+    return RunEnd::Done;
+}
+
+void Generator::iterate(int n) { run(n, false); }
+
+void Generator::solve() {
+    run(static_cast<long>(settings.max_iterations), true);
+    if (settings.fold_check != 0.0) {
+        const FoldSummary fs = fold_summary(grid_);
+        if (fs.folded > 0)
+            fail(Failure::Folded,
+                 format("the converged grid has %ld folded cell%s; the first is cell (%d, %d) "
+                        "(cells are numbered by their lowest node)",
+                        fs.folded, fs.folded == 1 ? "" : "s", fs.first_i, fs.first_j));
+    }
+}
+
+}  // namespace eg2d

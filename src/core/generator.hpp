@@ -1,0 +1,72 @@
+// Generator: one grid with everything that defines its generation (system,
+// controls, solver, settings) and the run loop that is the same for every
+// solver: residual, divergence check and restore, monitor, stopping, folds.
+#pragma once
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "controls/control.hpp"
+#include "core/settings.hpp"
+#include "grid/grid.hpp"
+#include "operator/operator.hpp"
+#include "solvers/solver.hpp"
+
+namespace eg2d {
+
+class Generator {
+public:
+    Generator(int ni, int nj);
+
+    const Grid &grid() const { return grid_; }
+    Settings settings;
+    // Called after each iteration with (iteration count, residual); true stops the run.
+    std::function<bool(int, double)> monitor;
+
+    // Each of these has the strong guarantee: on a throw nothing changed.
+    void set_topology(Topology t);
+    void set_side(Side s, const double *x, const double *y) { grid_.set_side(s, x, y); changed_boundary(); }
+    void set_boundary(const double *x, const double *y) { grid_.set_boundary(x, y); changed_boundary(); }
+    void set_coordinates(const double *x, const double *y);
+    void initialize(int method);
+    void set_system(System s);
+    System system() const { return system_; }
+    void set_solver(int id);
+    int solver_id() const { return solver_info_->id; }
+    const char *solver_name() const { return solver_info_->name; }
+
+    ControlSet &controls() { return controls_; }
+    // Call after changing controls().
+    void changed_controls();
+
+    // Exactly n iterations (n >= 0). Throws Diverged (grid restored to before
+    // the failing iteration) or Interrupted (iterations kept).
+    void iterate(int n);
+    // Iterates to the tolerance; throws NotConverged, Diverged, Interrupted,
+    // and Folded when the converged grid has folded cells and settings ask.
+    void solve();
+
+    // NUMERICS.md's residual of the grid as it is. Needs an initialised grid.
+    ResidualInfo residual() const;
+    int iterations() const { return iterations_; }
+
+    // Throws State unless the boundary is complete and the grid initialised.
+    void require_initialized(const char *what) const;
+
+private:
+    void changed_boundary();
+    void changed_start();
+    void ensure_ready();
+    enum class RunEnd { Done, Converged, Limit };
+    RunEnd run(long max_iterations, bool stop_at_tolerance);
+
+    Grid grid_;
+    System system_ = System::Winslow;
+    mutable ControlSet controls_;
+    const SolverInfo *solver_info_;
+    std::unique_ptr<Solver> solver_;
+    int iterations_ = 0;
+    std::vector<double> saved_x_, saved_y_;  // the last good grid of a run
+};
+
+}  // namespace eg2d

@@ -1,0 +1,63 @@
+// Which nodes are unknowns and who their neighbours are, per topology.
+// Every solver and the operator reach neighbours only through stencil(), so a
+// topology (O-grid branch cut, C-grid wake cut) is defined once, here.
+#pragma once
+#include <cstddef>
+
+namespace eg2d {
+
+enum class Topology { Single = 0, O = 1, C = 2 };
+
+const char *topology_name(Topology t);
+
+// Array indices (k = i + ni*j) of a node and its eight neighbours.
+struct Stencil {
+    std::ptrdiff_t c, e, w, n, s, ne, nw, se, sw;
+};
+
+class Connectivity {
+public:
+    Connectivity(int ni, int nj, Topology topology) : ni_(ni), nj_(nj), topology_(topology) {}
+
+    int ni() const { return ni_; }
+    int nj() const { return nj_; }
+    Topology topology() const { return topology_; }
+    bool periodic_i() const { return topology_ == Topology::O; }
+
+    // Unknown nodes are i in [i_begin, i_end) x j in [j_begin, j_end).
+    // O-grid: column ni-1 duplicates column 0 (kept equal by sync_node).
+    int i_begin() const { return periodic_i() ? 0 : 1; }
+    int i_end() const { return ni_ - 1; }
+    int j_begin() const { return 1; }
+    int j_end() const { return nj_ - 1; }
+    // Number of distinct columns in i (ni-1 on a periodic grid).
+    int i_period() const { return ni_ - 1; }
+
+    Stencil stencil(int i, int j) const {
+        int iw = i - 1, ie = i + 1;
+        if (periodic_i()) {
+            if (iw < 0) iw = ni_ - 2;  // across the cut: column ni-1 is column 0
+            if (ie > ni_ - 1) ie = 1;
+        }
+        const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(ni_) * j;
+        const std::ptrdiff_t up = row + ni_, down = row - ni_;
+        return Stencil{row + i, row + ie, row + iw, up + i, down + i,
+                       up + ie, up + iw, down + ie, down + iw};
+    }
+
+    // After writing node (i, j), copy it to the node that stores the same point.
+    void sync_node(double *f, int i, int j) const {
+        if (periodic_i() && i == 0) {
+            const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(ni_) * j;
+            f[row + ni_ - 1] = f[row];
+        }
+    }
+    // The same for a whole field.
+    void sync(double *f) const;
+
+private:
+    int ni_, nj_;
+    Topology topology_;
+};
+
+}  // namespace eg2d

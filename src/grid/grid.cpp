@@ -1,0 +1,234 @@
+#include "grid/grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <new>
+
+#include "core/error.hpp"
+
+namespace eg2d {
+
+namespace {
+// Relative tolerance on the domain size for corners that must coincide.
+constexpr double kCornerTolerance = 1e-8;
+
+// Index of the p-th point of side s (increasing index along the side).
+std::size_t side_index(int ni, int nj, Side s, int p) {
+    switch (s) {
+    case Side::JMin: return static_cast<std::size_t>(p);
+    case Side::IMax: return static_cast<std::size_t>(ni - 1) + static_cast<std::size_t>(ni) * p;
+    case Side::JMax: return static_cast<std::size_t>(p) + static_cast<std::size_t>(ni) * (nj - 1);
+    case Side::IMin: return static_cast<std::size_t>(ni) * p;
+    }
+    return 0;
+}
+
+std::vector<double> allocate(std::size_t n) {
+    try {
+        return std::vector<double>(n, 0.0);
+    } catch (const std::bad_alloc &) {
+        fail(Failure::Memory, format("cannot allocate %zu nodes", n));
+    } catch (const std::length_error &) {
+        fail(Failure::Memory, format("cannot allocate %zu nodes", n));
+    }
+}
+}  // namespace
+
+const char *side_name(Side s) {
+    switch (s) {
+    case Side::JMin: return "JMIN";
+    case Side::IMax: return "IMAX";
+    case Side::JMax: return "JMAX";
+    case Side::IMin: return "IMIN";
+    }
+    return "?";
+}
+
+void check_finite(const char *what, const double *v, std::size_t n) {
+    for (std::size_t k = 0; k < n; ++k)
+        if (!std::isfinite(v[k]))
+            fail(Failure::Argument, format("%s[%zu] = %g: coordinates must be finite", what, k, v[k]));
+}
+
+Grid::Grid(int ni, int nj) : ni_(ni), nj_(nj), connectivity_(ni, nj, Topology::Single) {
+    if (ni < 3) fail(Failure::Argument, format("ni = %d: need at least 3", ni));
+    if (nj < 3) fail(Failure::Argument, format("nj = %d: need at least 3", nj));
+    // Each node costs tens of doubles across the library; refuse sizes whose
+    // byte counts could overflow before any allocation is tried.
+    const std::size_t limit = std::numeric_limits<std::size_t>::max() / (64 * sizeof(double));
+    if (static_cast<std::size_t>(ni) > limit / static_cast<std::size_t>(nj) ||
+        static_cast<long long>(ni) * nj > std::numeric_limits<int>::max())
+        fail(Failure::Argument, format("ni*nj = %d*%d overflows the node count", ni, nj));
+    const std::size_t n = static_cast<std::size_t>(ni) * static_cast<std::size_t>(nj);
+    x = allocate(n);
+    y = allocate(n);
+}
+
+void Grid::set_topology(Topology t) {
+    if (t == Topology::O && ni_ < 4)
+        fail(Failure::Argument, format("ni = %d: an O-grid needs at least 4", ni_));
+    connectivity_ = Connectivity(ni_, nj_, t);
+    sides_set_ = 0;
+    initialized_ = false;
+    std::fill(x.begin(), x.end(), 0.0);
+    std::fill(y.begin(), y.end(), 0.0);
+}
+
+int Grid::side_length(Side s) const {
+    return (s == Side::JMin || s == Side::JMax) ? ni_ : nj_;
+}
+
+bool Grid::has_side(Side s) const {
+    if (topology() == Topology::O) return s == Side::JMin || s == Side::JMax;
+    return true;
+}
+
+bool Grid::boundary_complete() const {
+    for (int s = 0; s < 4; ++s)
+        if (has_side(static_cast<Side>(s)) && !side_set(static_cast<Side>(s))) return false;
+    return true;
+}
+
+double Grid::extent() const {
+    double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
+    for (int s = 0; s < 4; ++s) {
+        const Side side = static_cast<Side>(s);
+        if (!side_set(side)) continue;
+        for (int p = 0; p < side_length(side); ++p) {
+            const std::size_t k = side_index(ni_, nj_, side, p);
+            xmin = std::min(xmin, x[k]); xmax = std::max(xmax, x[k]);
+            ymin = std::min(ymin, y[k]); ymax = std::max(ymax, y[k]);
+        }
+    }
+    if (!(xmax >= xmin)) return 0.0;
+    return std::hypot(xmax - xmin, ymax - ymin);
+}
+
+void Grid::check_closed(Side s, const double *px, const double *py, int n) const {
+    double xmin = px[0], xmax = px[0], ymin = py[0], ymax = py[0];
+    for (int p = 1; p < n; ++p) {
+        xmin = std::min(xmin, px[p]); xmax = std::max(xmax, px[p]);
+        ymin = std::min(ymin, py[p]); ymax = std::max(ymax, py[p]);
+    }
+    const double L = std::hypot(xmax - xmin, ymax - ymin);
+    if (std::hypot(px[n - 1] - px[0], py[n - 1] - py[0]) > kCornerTolerance * L)
+        fail(Failure::Boundary,
+             format("O-grid side %s is not closed: first point (%.17g, %.17g) vs last (%.17g, %.17g)",
+                    side_name(s), px[0], py[0], px[n - 1], py[n - 1]));
+    if (L == 0.0)
+        fail(Failure::Boundary, format("side %s has all its points at (%g, %g)", side_name(s), px[0], py[0]));
+}
+
+void Grid::check_corners(Side s, const double *px, const double *py) const {
+    const int n = side_length(s);
+    // The side's first and last points and the sides they are shared with.
+    struct End { int p; Side other; };
+    End ends[2];
+    switch (s) {
+    case Side::JMin: ends[0] = {0, Side::IMin}; ends[1] = {n - 1, Side::IMax}; break;
+    case Side::IMax: ends[0] = {0, Side::JMin}; ends[1] = {n - 1, Side::JMax}; break;
+    case Side::JMax: ends[0] = {0, Side::IMin}; ends[1] = {n - 1, Side::IMax}; break;
+    case Side::IMin: ends[0] = {0, Side::JMin}; ends[1] = {n - 1, Side::JMax}; break;
+    }
+    // Domain size: the bounding box of this side and of the sides already set.
+    double xmin = px[0], xmax = px[0], ymin = py[0], ymax = py[0];
+    for (int p = 0; p < n; ++p) {
+        xmin = std::min(xmin, px[p]); xmax = std::max(xmax, px[p]);
+        ymin = std::min(ymin, py[p]); ymax = std::max(ymax, py[p]);
+    }
+    const double L = std::max(std::hypot(xmax - xmin, ymax - ymin), extent());
+    for (const End &e : ends) {
+        if (!side_set(e.other)) continue;
+        const std::size_t k = side_index(ni_, nj_, s, e.p);
+        const double dx = px[e.p] - x[k], dy = py[e.p] - y[k];
+        if (std::hypot(dx, dy) > kCornerTolerance * L) {
+            // Name the pair in the fixed order JMIN/IMAX, IMAX/JMAX, IMIN/JMAX, JMIN/IMIN.
+            const bool first_is_j = (s == Side::JMin || s == Side::JMax);
+            const Side a = first_is_j ? s : e.other, b = first_is_j ? e.other : s;
+            const double ax = first_is_j ? px[e.p] : x[k], ay = first_is_j ? py[e.p] : y[k];
+            const double bx = first_is_j ? x[k] : px[e.p], by = first_is_j ? y[k] : py[e.p];
+            fail(Failure::Boundary, format("corner %s/%s: (%.17g, %.17g) vs (%.17g, %.17g)",
+                                           side_name(a), side_name(b), ax, ay, bx, by));
+        }
+    }
+}
+
+void Grid::set_side(Side s, const double *px, const double *py) {
+    if (!has_side(s))
+        fail(Failure::Argument, format("side %s: an %s has only the sides JMIN (inner) and JMAX (outer); "
+                                       "IMIN/IMAX is its periodic cut", side_name(s), topology_name(topology())));
+    const int n = side_length(s);
+    check_finite(s == Side::JMin ? "JMIN x" : s == Side::IMax ? "IMAX x" : s == Side::JMax ? "JMAX x" : "IMIN x",
+                 px, static_cast<std::size_t>(n));
+    check_finite(s == Side::JMin ? "JMIN y" : s == Side::IMax ? "IMAX y" : s == Side::JMax ? "JMAX y" : "IMIN y",
+                 py, static_cast<std::size_t>(n));
+    if (connectivity_.periodic_i()) check_closed(s, px, py, n);
+    else check_corners(s, px, py);
+    for (int p = 0; p < n; ++p) {
+        const std::size_t k = side_index(ni_, nj_, s, p);
+        x[k] = px[p];
+        y[k] = py[p];
+    }
+    if (connectivity_.periodic_i()) {  // the cut column holds the same point exactly
+        const std::size_t k0 = side_index(ni_, nj_, s, 0), k1 = side_index(ni_, nj_, s, n - 1);
+        x[k1] = x[k0];
+        y[k1] = y[k0];
+    }
+    sides_set_ |= 1u << static_cast<int>(s);
+}
+
+void Grid::set_boundary(const double *px, const double *py) {
+    // Validate every side against the others before changing anything.
+    std::vector<double> sx[4], sy[4];
+    for (int s = 0; s < 4; ++s) {
+        const Side side = static_cast<Side>(s);
+        if (!has_side(side)) continue;
+        const int n = side_length(side);
+        sx[s].resize(static_cast<std::size_t>(n));
+        sy[s].resize(static_cast<std::size_t>(n));
+        for (int p = 0; p < n; ++p) {
+            const std::size_t k = side_index(ni_, nj_, side, p);
+            sx[s][static_cast<std::size_t>(p)] = px[k];
+            sy[s][static_cast<std::size_t>(p)] = py[k];
+        }
+    }
+    Grid trial(*this);
+    trial.sides_set_ = 0;
+    for (int s = 0; s < 4; ++s)
+        if (has_side(static_cast<Side>(s))) trial.set_side(static_cast<Side>(s), sx[s].data(), sy[s].data());
+    *this = std::move(trial);
+}
+
+void Grid::set_coordinates(const double *px, const double *py) {
+    check_finite("x", px, size());
+    check_finite("y", py, size());
+    Grid trial(*this);
+    trial.sides_set_ = 0;
+    if (connectivity_.periodic_i()) {
+        const double L = [&] {
+            double xmin = px[0], xmax = px[0], ymin = py[0], ymax = py[0];
+            for (std::size_t k = 0; k < size(); ++k) {
+                xmin = std::min(xmin, px[k]); xmax = std::max(xmax, px[k]);
+                ymin = std::min(ymin, py[k]); ymax = std::max(ymax, py[k]);
+            }
+            return std::hypot(xmax - xmin, ymax - ymin);
+        }();
+        for (int j = 0; j < nj_; ++j) {
+            const std::size_t k0 = static_cast<std::size_t>(ni_) * j, k1 = k0 + ni_ - 1;
+            if (std::hypot(px[k1] - px[k0], py[k1] - py[k0]) > kCornerTolerance * L)
+                fail(Failure::Boundary,
+                     format("O-grid cut: node (0, %d) = (%.17g, %.17g) vs node (%d, %d) = (%.17g, %.17g)", j,
+                            px[k0], py[k0], ni_ - 1, j, px[k1], py[k1]));
+        }
+    }
+    trial.set_boundary(px, py);
+    std::copy(px, px + size(), trial.x.begin());
+    std::copy(py, py + size(), trial.y.begin());
+    trial.connectivity_.sync(trial.x.data());
+    trial.connectivity_.sync(trial.y.data());
+    trial.initialized_ = true;
+    *this = std::move(trial);
+}
+
+}  // namespace eg2d

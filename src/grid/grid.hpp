@@ -1,0 +1,64 @@
+// Grid: the node coordinates (Fortran order), the topology and which parts of
+// the boundary ring the user has given. Coordinates are checked here so that
+// nothing downstream sees NaN, Inf or a boundary whose corners disagree.
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "grid/connectivity.hpp"
+
+namespace eg2d {
+
+enum class Side { JMin = 0, IMax = 1, JMax = 2, IMin = 3 };
+const char *side_name(Side s);
+
+class Grid {
+public:
+    // Throws Failure::Argument for ni or nj < 3 or a node count that
+    // overflows, Failure::Memory when the arrays cannot be allocated.
+    Grid(int ni, int nj);
+
+    int ni() const { return ni_; }
+    int nj() const { return nj_; }
+    std::size_t size() const { return x.size(); }
+    Topology topology() const { return connectivity_.topology(); }
+    const Connectivity &connectivity() const { return connectivity_; }
+
+    // Forgets boundary and interior (the sides a topology has differ).
+    void set_topology(Topology t);
+
+    // Number of points of a side, and whether the topology has that side.
+    int side_length(Side s) const;
+    bool has_side(Side s) const;
+    bool side_set(Side s) const { return (sides_set_ >> static_cast<int>(s)) & 1u; }
+    bool boundary_complete() const;
+
+    // Strong guarantee: on a throw nothing changed.
+    void set_side(Side s, const double *px, const double *py);
+    void set_boundary(const double *px, const double *py);   // ring of ni*nj arrays
+    void set_coordinates(const double *px, const double *py);  // whole grid
+
+    bool initialized() const { return initialized_; }
+    void mark_initialized() { initialized_ = true; }
+
+    // Diagonal of the bounding box of the boundary ring: the L of NUMERICS.md.
+    double extent() const;
+
+    // Node coordinates, ni*nj each. Solvers write them; the boundary ring
+    // holds the user's points whenever side_set says so.
+    std::vector<double> x, y;
+
+private:
+    void check_corners(Side s, const double *px, const double *py) const;
+    void check_closed(Side s, const double *px, const double *py, int n) const;
+
+    int ni_, nj_;
+    Connectivity connectivity_;
+    unsigned sides_set_ = 0;
+    bool initialized_ = false;
+};
+
+// Checks every value is finite; names the array and the first bad index.
+void check_finite(const char *what, const double *v, std::size_t n);
+
+}  // namespace eg2d

@@ -1,0 +1,19 @@
+#include "grid/initializers.hpp"
+
+#include "eg2d.h"
+
+namespace eg2d {
+
+namespace {
+const InitMethod kMethods[] = {
+    {EG2D_INIT_TFI, "tfi", tfi_linear},
+};
+}
+
+const InitMethod *find_init_method(int id) {
+    for (const InitMethod &m : kMethods)
+        if (m.id == id) return &m;
+    return nullptr;
+}
+
+}  // namespace eg2d

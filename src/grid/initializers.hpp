@@ -1,0 +1,21 @@
+// Initial-grid methods, selected by their EG2D_INIT_* id. Adding one is adding
+// a file with its function and a line in initializers.cpp.
+#pragma once
+#include "grid/grid.hpp"
+
+namespace eg2d {
+
+struct InitMethod {
+    int id;             // EG2D_INIT_*
+    const char *name;
+    // Fills the interior (and the O-grid cut) of a grid whose boundary is
+    // complete. May throw; callers run it on a copy.
+    void (*fill)(Grid &grid);
+};
+
+// nullptr if no method has that id.
+const InitMethod *find_init_method(int id);
+
+void tfi_linear(Grid &grid);  // tfi.cpp
+
+}  // namespace eg2d

@@ -1,0 +1,102 @@
+// The discrete operator of NUMERICS.md at one node: central differences
+// (seed 000 eqs 5.1a-e), the metric coefficients alpha, beta, gamma, J and the
+// control terms. Every solver and the residual use this one definition.
+#pragma once
+#include <cstddef>
+
+#include "controls/control_fields.hpp"
+#include "grid/connectivity.hpp"
+#include "operator/system.hpp"
+
+namespace eg2d {
+
+// What the operator needs of one grid level: coordinates, neighbours,
+// control fields (nullptr = none) and an optional right-hand side f
+// (nullptr = 0; multigrid's FAS coarse levels solve L(r) = f).
+struct Level {
+    const Connectivity *conn = nullptr;
+    double *x = nullptr;
+    double *y = nullptr;
+    const ControlFields *controls = nullptr;
+    const double *fx = nullptr;
+    const double *fy = nullptr;
+};
+
+// The equation at a node: R = L(r) - f for x and y, and the magnitude of the
+// coefficient of r at the node itself, 2(alpha+gamma) (Laplace: 4). A point
+// Jacobi/Gauss-Seidel step is r += R/diag.
+struct NodeEquation {
+    double rx, ry, diag;
+};
+
+// The local metric coefficients, for solvers that build line systems.
+struct Metrics {
+    double alpha, beta, gamma, jac2, cxi, ceta;
+};
+
+inline Metrics node_metrics(const Level &L, const Stencil &s) {
+    const double *x = L.x, *y = L.y;
+    const double xxi = 0.5 * (x[s.e] - x[s.w]), yxi = 0.5 * (y[s.e] - y[s.w]);
+    const double xeta = 0.5 * (x[s.n] - x[s.s]), yeta = 0.5 * (y[s.n] - y[s.s]);
+    Metrics m;
+    m.alpha = xeta * xeta + yeta * yeta;
+    m.beta = xxi * xeta + yxi * yeta;
+    m.gamma = xxi * xxi + yxi * yxi;
+    const double jac = xxi * yeta - xeta * yxi;
+    m.jac2 = jac * jac;
+    m.cxi = m.ceta = 0.0;
+    if (const ControlFields *cf = L.controls) {
+        const std::ptrdiff_t c = s.c;
+        auto add = [&](Term t, double weight, double &into) {
+            if (const double *f = cf->data(t)) into += weight * f[c];
+        };
+        add(Term::AXi, m.alpha, m.cxi);
+        add(Term::BXi, m.beta, m.cxi);
+        add(Term::CXi, m.gamma, m.cxi);
+        add(Term::DXi, m.jac2, m.cxi);
+        add(Term::AEta, m.alpha, m.ceta);
+        add(Term::BEta, m.beta, m.ceta);
+        add(Term::CEta, m.gamma, m.ceta);
+        add(Term::DEta, m.jac2, m.ceta);
+    }
+    return m;
+}
+
+inline NodeEquation node_equation(System system, const Level &L, const Stencil &s) {
+    const double *x = L.x, *y = L.y;
+    NodeEquation eq;
+    if (system == System::Laplace) {
+        eq.rx = x[s.e] + x[s.w] + x[s.n] + x[s.s] - 4.0 * x[s.c];
+        eq.ry = y[s.e] + y[s.w] + y[s.n] + y[s.s] - 4.0 * y[s.c];
+        eq.diag = 4.0;
+    } else {
+        const Metrics m = node_metrics(L, s);
+        const double xxixi = x[s.e] - 2.0 * x[s.c] + x[s.w], yxixi = y[s.e] - 2.0 * y[s.c] + y[s.w];
+        const double xetaeta = x[s.n] - 2.0 * x[s.c] + x[s.s], yetaeta = y[s.n] - 2.0 * y[s.c] + y[s.s];
+        const double xxieta = 0.25 * (x[s.ne] - x[s.se] - x[s.nw] + x[s.sw]);
+        const double yxieta = 0.25 * (y[s.ne] - y[s.se] - y[s.nw] + y[s.sw]);
+        eq.rx = m.alpha * xxixi - 2.0 * m.beta * xxieta + m.gamma * xetaeta;
+        eq.ry = m.alpha * yxixi - 2.0 * m.beta * yxieta + m.gamma * yetaeta;
+        if (m.cxi != 0.0 || m.ceta != 0.0) {
+            eq.rx += 0.5 * (m.cxi * (x[s.e] - x[s.w]) + m.ceta * (x[s.n] - x[s.s]));
+            eq.ry += 0.5 * (m.cxi * (y[s.e] - y[s.w]) + m.ceta * (y[s.n] - y[s.s]));
+        }
+        eq.diag = 2.0 * (m.alpha + m.gamma);
+        if (!(eq.diag > 0.0)) eq.diag = 1.0;  // all neighbours coincide: R is 0 too
+    }
+    if (L.fx) {
+        eq.rx -= L.fx[s.c];
+        eq.ry -= L.fy[s.c];
+    }
+    return eq;
+}
+
+struct ResidualInfo {
+    double value = 0.0;  // NUMERICS.md's residual
+    int i = -1, j = -1;  // where its maximum is
+};
+
+// max over unknown nodes of max(|R_x|, |R_y|)/diag, divided by `extent` (L).
+ResidualInfo residual(System system, const Level &L, double extent);
+
+}  // namespace eg2d

@@ -1,0 +1,22 @@
+// The solvers this library has, by their public EG2D_SOLVER_* id.
+// Adding a solver: a file with its class and factory, and one line here.
+#include "eg2d.h"
+#include "solvers/solver.hpp"
+
+namespace eg2d {
+
+std::unique_ptr<Solver> make_psor();
+
+namespace {
+const SolverInfo kSolvers[] = {
+    {EG2D_SOLVER_PSOR, "psor", make_psor},
+};
+}
+
+const SolverInfo *find_solver(int id) {
+    for (const SolverInfo &s : kSolvers)
+        if (s.id == id) return &s;
+    return nullptr;
+}
+
+}  // namespace eg2d

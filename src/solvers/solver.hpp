@@ -1,0 +1,54 @@
+// A solver does one iteration (a sweep, or a cycle of a multilevel method) on
+// a Problem. It never computes the stopping residual or checks divergence:
+// the Generator does that, the same way for every solver.
+#pragma once
+#include <memory>
+
+#include "controls/control_fields.hpp"
+#include "core/settings.hpp"
+#include "grid/grid.hpp"
+#include "operator/operator.hpp"
+#include "operator/system.hpp"
+
+namespace eg2d {
+
+struct Problem {
+    Grid &grid;
+    System system;
+    const ControlFields &controls;  // the fine grid's control fields
+    const Settings &settings;
+
+    // The fine grid as an operator Level.
+    Level level() const {
+        Level L;
+        L.conn = &grid.connectivity();
+        L.x = grid.x.data();
+        L.y = grid.y.data();
+        L.controls = controls.empty() ? nullptr : &controls;
+        return L;
+    }
+};
+
+class Solver {
+public:
+    virtual ~Solver() = default;
+    // One iteration. May leave NaN in the grid: the caller checks and restores.
+    virtual void iterate(Problem &problem) = 0;
+    // Called when the problem changed shape (topology, size, a new start):
+    // drop any cached hierarchy or time-step cycle.
+    virtual void reset() {}
+};
+
+struct SolverInfo {
+    int id;             // EG2D_SOLVER_*
+    const char *name;   // short name: "psor"
+    std::unique_ptr<Solver> (*make)();
+};
+
+// nullptr if this library has no solver with that id.
+const SolverInfo *find_solver(int id);
+
+// Seed 003's optimal SOR factor for Laplace on an N1 x N2 grid.
+double optimal_sor_omega(int n1, int n2);
+
+}  // namespace eg2d

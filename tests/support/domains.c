@@ -1,0 +1,104 @@
+#include "domains.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define EG2D_TEST_PI 3.14159265358979323846
+
+const char *const domain_names[] = {"valley", "almost-convex", "swan", "dome", NULL};
+
+typedef void (*curve_fn)(double s, double *x, double *y);
+
+/* Seed 003, A1: valley. */
+static void valley_b(double s, double *x, double *y) { *x = s; *y = 0; }
+static void valley_t(double s, double *x, double *y) { *x = s; *y = 0.75 + 0.25 * sin(EG2D_TEST_PI * (0.5 + 2 * s)); }
+static void valley_l(double s, double *x, double *y) { *x = 0; *y = s; }
+static void valley_r(double s, double *x, double *y) { *x = 1; *y = s; }
+/* A2: almost convex, right side x = 1/2 + cos(pi y)/6. */
+static void convex_b(double s, double *x, double *y) { *x = 2.0 / 3.0 * s; *y = 0; }
+static void convex_t(double s, double *x, double *y) { *x = 1.0 / 3.0 * s; *y = 1; }
+static void convex_l(double s, double *x, double *y) { *x = 0; *y = s; }
+static void convex_r(double s, double *x, double *y) { *x = 0.5 + cos(EG2D_TEST_PI * s) / 6.0; *y = s; }
+/* A4: swan. */
+static void swan_b(double s, double *x, double *y) { *x = s; *y = 0; }
+static void swan_t(double s, double *x, double *y) { *x = s; *y = 1 - 2 * s + 2 * s * s; }
+static void swan_l(double s, double *x, double *y) { *x = 0; *y = s; }
+static void swan_r(double s, double *x, double *y) { *x = 1 + 2 * s - 2 * s * s; *y = s; }
+/* A5: dome. */
+static void dome_b(double s, double *x, double *y) { *x = s; *y = 0; }
+static void dome_t(double s, double *x, double *y) { *x = s; *y = -4 * (s - 0.5) * (s - 0.5) + 2; }
+static void dome_l(double s, double *x, double *y) { *x = 0; *y = s; }
+static void dome_r(double s, double *x, double *y) { *x = 1; *y = s; }
+/* A bilinear quadrilateral. */
+static void bil(double u, double v, double *x, double *y) {
+    const double X[4] = {0, 2, 2.4, 0.3}, Y[4] = {0, 0.2, 1.6, 1};
+    *x = (1 - u) * (1 - v) * X[0] + u * (1 - v) * X[1] + u * v * X[2] + (1 - u) * v * X[3];
+    *y = (1 - u) * (1 - v) * Y[0] + u * (1 - v) * Y[1] + u * v * Y[2] + (1 - u) * v * Y[3];
+}
+static void quadr_b(double s, double *x, double *y) { bil(s, 0, x, y); }
+static void quadr_t(double s, double *x, double *y) { bil(s, 1, x, y); }
+static void quadr_l(double s, double *x, double *y) { bil(0, s, x, y); }
+static void quadr_r(double s, double *x, double *y) { bil(1, s, x, y); }
+
+static int set_curve(eg2d_grid *g, int side, int n, curve_fn f) {
+    double *x = malloc(sizeof(double) * (size_t)n), *y = malloc(sizeof(double) * (size_t)n);
+    int i, status;
+    if (!x || !y) {
+        free(x);
+        free(y);
+        return EG2D_ERR_MEMORY;
+    }
+    for (i = 0; i < n; ++i) f((double)i / (n - 1), &x[i], &y[i]);
+    status = eg2d_set_side(g, side, x, y);
+    free(x);
+    free(y);
+    return status;
+}
+
+int domain_set(eg2d_grid *g, const char *name) {
+    curve_fn b, r, t, l;
+    int ni, nj, status;
+    if (!strcmp(name, "valley")) { b = valley_b; r = valley_r; t = valley_t; l = valley_l; }
+    else if (!strcmp(name, "almost-convex")) { b = convex_b; r = convex_r; t = convex_t; l = convex_l; }
+    else if (!strcmp(name, "swan")) { b = swan_b; r = swan_r; t = swan_t; l = swan_l; }
+    else if (!strcmp(name, "dome")) { b = dome_b; r = dome_r; t = dome_t; l = dome_l; }
+    else if (!strcmp(name, "quad")) { b = quadr_b; r = quadr_r; t = quadr_t; l = quadr_l; }
+    else return EG2D_ERR_ARGUMENT;
+    status = eg2d_get_size(g, &ni, &nj);
+    if (status) return status;
+    if ((status = set_curve(g, EG2D_SIDE_JMIN, ni, b))) return status;
+    if ((status = set_curve(g, EG2D_SIDE_IMAX, nj, r))) return status;
+    if ((status = set_curve(g, EG2D_SIDE_JMAX, ni, t))) return status;
+    return set_curve(g, EG2D_SIDE_IMIN, nj, l);
+}
+
+int domain_set_annulus(eg2d_grid *g, double ri, double ro) {
+    int ni, nj, i, status;
+    double *x, *y;
+    if ((status = eg2d_get_size(g, &ni, &nj))) return status;
+    if ((status = eg2d_set_topology(g, EG2D_TOPO_O))) return status;
+    x = malloc(sizeof(double) * (size_t)ni);
+    y = malloc(sizeof(double) * (size_t)ni);
+    if (!x || !y) {
+        free(x);
+        free(y);
+        return EG2D_ERR_MEMORY;
+    }
+    for (i = 0; i < ni; ++i) {
+        const double t = 2 * EG2D_TEST_PI * i / (ni - 1);
+        x[i] = ri * cos(t);
+        y[i] = ri * sin(t);
+    }
+    x[ni - 1] = x[0];
+    y[ni - 1] = y[0];
+    status = eg2d_set_side(g, EG2D_SIDE_JMIN, x, y);
+    for (i = 0; i < ni && !status; ++i) {
+        x[i] *= ro / ri;
+        y[i] *= ro / ri;
+    }
+    if (!status) status = eg2d_set_side(g, EG2D_SIDE_JMAX, x, y);
+    free(x);
+    free(y);
+    return status;
+}

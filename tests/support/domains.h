@@ -1,0 +1,27 @@
+/* The seed domains as boundary points, shared by the tests, the examples and
+ * the benchmark. Points are uniform in each side's parameter s in [0, 1]. */
+#ifndef EG2D_TEST_DOMAINS_H
+#define EG2D_TEST_DOMAINS_H
+
+#include "eg2d.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Simply connected domains of seed 003: "valley", "almost-convex", "swan",
+ * "dome"; and the bilinear quadrilateral "quad" with corners (0,0), (2,0.2),
+ * (2.4,1.6), (0.3,1). Sets the four sides; returns the eg2d status. */
+int domain_set(eg2d_grid *grid, const char *name);
+
+/* The annulus r_inner <= r <= r_outer as an O-grid (JMIN inner, JMAX outer,
+ * counter-clockwise from theta = 0). Sets the topology and both sides. */
+int domain_set_annulus(eg2d_grid *grid, double r_inner, double r_outer);
+
+/* Names of the simply connected domains, NULL-terminated. */
+extern const char *const domain_names[];
+
+#ifdef __cplusplus
+}
+#endif
+#endif
