@@ -3,6 +3,7 @@
 // topology (O-grid branch cut, C-grid wake cut) is defined once, here.
 #pragma once
 #include <cstddef>
+#include <vector>
 
 namespace eg2d {
 
@@ -30,6 +31,11 @@ public:
     int i_end() const { return ni_ - 1; }
     int j_begin() const { return 1; }
     int j_end() const { return nj_ - 1; }
+    // Unknown nodes outside that rectangle (the C-grid's wake cut), solved
+    // pointwise by every solver and counted by the residual. Empty for the
+    // single-block and O topologies.
+    struct Node { int i, j; };
+    const std::vector<Node> &extra_unknowns() const { return extra_; }
     // Number of distinct columns in i (ni-1 on a periodic grid).
     int i_period() const { return ni_ - 1; }
 
@@ -58,6 +64,7 @@ public:
 private:
     int ni_, nj_;
     Topology topology_;
+    std::vector<Node> extra_;
 };
 
 }  // namespace eg2d

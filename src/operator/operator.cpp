@@ -14,22 +14,23 @@ ResidualInfo residual(System system, const Level &L, double extent) {
     ResidualInfo r;
     double worst = 0.0;
     bool nan = false;
-    for (int j = conn.j_begin(); j < conn.j_end(); ++j) {
-        for (int i = conn.i_begin(); i < conn.i_end(); ++i) {
-            const NodeEquation eq = node_equation(system, L, conn.stencil(i, j));
-            const double v = std::max(std::fabs(eq.rx), std::fabs(eq.ry)) / eq.diag;
-            if (std::isnan(v) && !nan) {  // the first NaN decides: report it, not a number
-                nan = true;
-                worst = v;
-                r.i = i;
-                r.j = j;
-            } else if (!nan && v > worst) {
-                worst = v;
-                r.i = i;
-                r.j = j;
-            }
+    auto visit = [&](int i, int j) {
+        const NodeEquation eq = node_equation(system, L, conn.stencil(i, j));
+        const double v = std::max(std::fabs(eq.rx), std::fabs(eq.ry)) / eq.diag;
+        if (std::isnan(v) && !nan) {  // the first NaN decides: report it, not a number
+            nan = true;
+            worst = v;
+            r.i = i;
+            r.j = j;
+        } else if (!nan && v > worst) {
+            worst = v;
+            r.i = i;
+            r.j = j;
         }
-    }
+    };
+    for (int j = conn.j_begin(); j < conn.j_end(); ++j)
+        for (int i = conn.i_begin(); i < conn.i_end(); ++i) visit(i, j);
+    for (const Connectivity::Node &n : conn.extra_unknowns()) visit(n.i, n.j);
     r.value = extent > 0.0 ? worst / extent : worst;
     return r;
 }

@@ -22,16 +22,17 @@ public:
         const Connectivity &conn = *L.conn;
         const double omega =
             p.settings.relaxation > 0.0 ? p.settings.relaxation : optimal_sor_omega(conn.ni(), conn.nj());
-        for (int j = conn.j_begin(); j < conn.j_end(); ++j) {
-            for (int i = conn.i_begin(); i < conn.i_end(); ++i) {
-                const Stencil s = conn.stencil(i, j);
-                const NodeEquation eq = node_equation(p.system, L, s);
-                L.x[s.c] += omega * eq.rx / eq.diag;
-                L.y[s.c] += omega * eq.ry / eq.diag;
-                conn.sync_node(L.x, i, j);
-                conn.sync_node(L.y, i, j);
-            }
-        }
+        auto relax = [&](int i, int j) {
+            const Stencil s = conn.stencil(i, j);
+            const NodeEquation eq = node_equation(p.system, L, s);
+            L.x[s.c] += omega * eq.rx / eq.diag;
+            L.y[s.c] += omega * eq.ry / eq.diag;
+            conn.sync_node(L.x, i, j);
+            conn.sync_node(L.y, i, j);
+        };
+        for (int j = conn.j_begin(); j < conn.j_end(); ++j)
+            for (int i = conn.i_begin(); i < conn.i_end(); ++i) relax(i, j);
+        for (const Connectivity::Node &n : conn.extra_unknowns()) relax(n.i, n.j);
     }
 };
 
