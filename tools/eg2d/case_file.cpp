@@ -1,0 +1,239 @@
+#include "case_file.hpp"
+
+#include <eg2d.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "failure.hpp"
+#include "features.hpp"
+#include "toml_fields.hpp"
+
+namespace eg2dtool {
+
+namespace {
+
+const std::vector<std::string> top_keys = {"title", "size", "topology", "system", "initial", "constants",
+                                           "solver", "sides", "controls", "output"};
+const std::vector<std::string> controls_keys = {"orthogonality", "wall_spacing", "line_source", "point_source",
+                                                "source_arrays"};
+
+// A name of `table`, or EXIT_CASE (unknown) / EXIT_UNSUPPORTED (not in this build).
+const Feature &pick(const std::vector<Feature> &table, const std::string &name, const Location &at) {
+    for (const auto &f : table)
+        if (name == f.name) {
+            if (!f.available)
+                throw Failure(EXIT_UNSUPPORTED, at.str() + ": \"" + name + "\" is not available in this build of eg2d");
+            return f;
+        }
+    throw Failure(EXIT_CASE, at.str() + ": \"" + name + "\" is not one of: " + join(names(table)));
+}
+
+const Feature &pick_key(const Fields &f, const std::string &key, const std::string &fallback,
+                        const std::vector<Feature> &table) {
+    return pick(table, f.text(key, fallback), f.at(key));
+}
+
+void check_size(long ni, long nj, const Location &at) {
+    if (ni < 3 || nj < 3 || ni > 100000 || nj > 100000)
+        throw Failure(EXIT_CASE, at.str() + ": each of ni, nj must be in [3, 100000], found [" + std::to_string(ni) +
+                                     ", " + std::to_string(nj) + "]");
+}
+
+void read_solver(const Fields &top, Case &c) {
+    if (!top.has("solver")) return;
+    std::vector<std::string> keys = {"method"};
+    for (const auto &p : parameters()) keys.push_back(p.name);
+    const Location where = top.at("solver");
+    Fields f(top.table("solver"), where, keys);
+    f.finish();
+    const Feature &s = pick_key(f, "method", "psor", solvers());
+    c.solver = s.id;
+    c.solver_at = f.at("method");
+    for (const auto &p : parameters()) {
+        if (!f.has(p.name)) continue;
+        if (!p.available)
+            throw Failure(EXIT_UNSUPPORTED, f.at(p.name).str() + ": is not available in this build of eg2d");
+        double v = p.id == EG2D_PARAM_FOLD_CHECK && f.node(p.name)->is_boolean() ? (f.boolean(p.name, true) ? 1 : 0)
+                                                                                   : f.number(p.name, c.constants);
+        c.parameters.push_back({p.id, v, f.at(p.name)});
+    }
+}
+
+void read_sides(const Fields &top, Case &c) {
+    const auto &valid = side_names(c.topology);
+    std::vector<std::string> keys;
+    for (const auto &s : valid) keys.push_back(s.first);
+    const Location where = top.at("sides");
+    Fields f(top.table("sides"), where, keys);
+    f.finish();
+    for (const auto &s : valid) {
+        if (!f.has(s.first))
+            throw Failure(EXIT_CASE, f.at(s.first).str() + ": missing (a " + (c.topology == EG2D_TOPO_O ? "O-grid" : "single-block") +
+                                         " case needs the sides " + join(keys) + ")");
+        c.sides.push_back(parse_side(*f.node(s.first), s.second, s.first, f.at(s.first), c.dir));
+    }
+}
+
+void read_controls(const Fields &top, Case &c) {
+    if (!top.has("controls")) return;
+    Fields f(top.table("controls"), top.at("controls"), controls_keys);
+    f.finish();
+    if (f.has("orthogonality")) {
+        c.orthogonality = pick_key(f, "orthogonality", "none", orthogonality()).id;
+        c.orthogonality_at = f.at("orthogonality");
+    }
+#if !defined(EG2D_ORTHO_WALL)
+    for (const char *k : {"wall_spacing", "line_source", "point_source", "source_arrays"})
+        if (f.has(k)) throw Failure(EXIT_UNSUPPORTED, f.at(k).str() + ": is not available in this build of eg2d");
+#else
+    if (f.has("wall_spacing")) {
+        const auto &valid = side_names(c.topology);
+        std::vector<std::string> keys;
+        for (const auto &s : valid) keys.push_back(s.first);
+        Fields w(f.table("wall_spacing"), f.at("wall_spacing"), keys);
+        w.finish();
+        for (const auto &s : valid)
+            if (w.has(s.first)) {
+                const double h = w.number(s.first, c.constants);
+                if (h < 0) throw Failure(EXIT_CASE, w.at(s.first).str() + ": must be >= 0 (0 = orthogonality only)");
+                c.wall_spacings.push_back({s.second, h, w.at(s.first)});
+            }
+    }
+    auto each_table = [&](const char *key, auto &&fn) {
+        if (!f.has(key)) return;
+        const toml::node &n = *f.node(key);
+        if (n.is_table()) return fn(*n.as_table(), f.at(key));
+        const toml::array &a = f.array(key);
+        for (std::size_t k = 0; k < a.size(); ++k) {
+            Location l = locate(f.where(), std::string(key) + "[" + std::to_string(k) + "]", *a.get(k));
+            if (!a.get(k)->is_table()) throw Failure(EXIT_CASE, l.str() + ": expected a table, found " + type_name(*a.get(k)));
+            fn(*a.get(k)->as_table(), l);
+        }
+    };
+    each_table("line_source", [&](const toml::table &t, const Location &l) {
+        Fields s(t, l, {"direction", "line", "amplitude", "decay"});
+        s.finish();
+        const std::string d = s.choice("direction", "", {"xi", "eta"});
+        c.line_sources.push_back({d == "xi" ? EG2D_XI : EG2D_ETA, s.number("line", c.constants),
+                                  s.number("amplitude", c.constants), s.number("decay", c.constants), l});
+    });
+    each_table("point_source", [&](const toml::table &t, const Location &l) {
+        Fields s(t, l, {"xi", "eta", "amplitude", "decay"});
+        s.finish();
+        c.point_sources.push_back({s.number("xi", c.constants), s.number("eta", c.constants),
+                                   s.number("amplitude", c.constants), s.number("decay", c.constants), l});
+    });
+    if (f.has("source_arrays")) {
+        Fields s(f.table("source_arrays"), f.at("source_arrays"), {"P", "Q"});
+        s.finish();
+        c.source_p = s.text("P", "0");
+        c.source_q = s.text("Q", "0");
+        c.source_p_at = s.at("P");
+        c.source_q_at = s.at("Q");
+        // compile now, so that a bad formula is reported before any work
+        Formula(c.source_p, {"i", "j"}, c.constants, c.source_p_at);
+        Formula(c.source_q, {"i", "j"}, c.constants, c.source_q_at);
+    }
+#endif
+}
+
+void read_output(const Fields &top, Case &c, const std::string &stem) {
+    std::string name = stem;
+    std::vector<std::pair<std::string, Location>> wanted;
+    if (top.has("output")) {
+        Fields f(top.table("output"), top.at("output"), {"name", "formats"});
+        f.finish();
+        name = f.text("name", stem);
+        if (name.empty() || name.find('/') != std::string::npos)
+            throw Failure(EXIT_CASE, f.at("name").str() + ": a file name without '/' is required");
+        if (f.has("formats")) {
+            const toml::array &a = f.array("formats");
+            for (std::size_t k = 0; k < a.size(); ++k) {
+                Location l = locate(f.where(), "formats[" + std::to_string(k) + "]", *a.get(k));
+                if (!a.get(k)->is_string()) throw Failure(EXIT_CASE, l.str() + ": expected a string, found " + type_name(*a.get(k)));
+                wanted.emplace_back(std::string(*a.get(k)->value<std::string>()), l);
+            }
+        }
+    }
+    if (wanted.empty()) wanted.emplace_back("svg", top.where());
+    for (const auto &w : wanted) {
+        const Feature &fmt = pick(formats(), w.first, w.second);
+        c.outputs.push_back({fmt.id, name + fmt.extension, w.second});
+    }
+}
+
+std::string stem_of(const std::string &file) {
+    std::string base = file.substr(file.find_last_of("/:") + 1);
+    const auto dot = base.rfind('.');
+    return dot == std::string::npos || dot == 0 ? base : base.substr(0, dot);
+}
+
+}  // namespace
+
+Case read_case(const std::string &text, const std::string &file, const std::string &dir, int ni, int nj) {
+    toml::table root;
+    try {
+        root = toml::parse(text, file);
+    } catch (const toml::parse_error &e) {
+        const auto &b = e.source().begin;
+        throw Failure(EXIT_CASE, file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+                                     ": TOML syntax error: " + std::string(e.description()));
+    }
+    Case c;
+    c.file = file;
+    c.dir = dir;
+    const Location where{file, "", 1, 1};
+    Fields top(root, where, top_keys);
+    top.finish();
+    c.title = top.text("title", stem_of(file));
+
+    // size first: ni and nj are constants of every formula
+    const toml::array &size = top.array("size");
+    c.size_at = top.at("size");
+    double dni = 0, dnj = 0;
+    read_pair(size, c.size_at, {}, dni, dnj);
+    if (dni != static_cast<long>(dni) || dnj != static_cast<long>(dnj))
+        throw Failure(EXIT_CASE, c.size_at.str() + ": expected whole numbers [ni, nj]");
+    check_size(static_cast<long>(dni), static_cast<long>(dnj), c.size_at);
+    c.ni = ni > 0 ? ni : static_cast<int>(dni);
+    c.nj = nj > 0 ? nj : static_cast<int>(dnj);
+    c.constants["ni"] = c.ni;
+    c.constants["nj"] = c.nj;
+    if (top.has("constants")) {
+        const Location at = top.at("constants");
+        const toml::table &t = top.table("constants");
+        std::vector<std::string> keys;
+        for (const auto &kv : t) keys.emplace_back(kv.first.str());
+        Fields f(t, at, keys);
+        for (const auto &k : keys) {
+            if (c.constants.count(k) || k == "pi" || k == "e" || k == "s" || k == "i" || k == "j")
+                throw Failure(EXIT_CASE, f.at(k).str() + ": is a reserved name (pi, e, s, i, j, ni, nj)");
+            c.constants[k] = f.number(k, c.constants);
+        }
+    }
+    c.topology = pick_key(top, "topology", "single", topologies()).id;
+    c.system = pick_key(top, "system", "winslow", systems()).id;
+    c.initial = pick_key(top, "initial", "tfi", initializers()).id;
+    c.topology_at = top.at("topology");
+    c.system_at = top.at("system");
+    c.initial_at = top.at("initial");
+    read_solver(top, c);
+    read_sides(top, c);
+    read_controls(top, c);
+    read_output(top, c, stem_of(file));
+    return c;
+}
+
+Case read_case_file(const std::string &path, int ni, int nj) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Failure(EXIT_IO, path + ": cannot read the case file: " + std::strerror(errno));
+    std::ostringstream text;
+    text << in.rdbuf();
+    const auto slash = path.find_last_of('/');
+    return read_case(text.str(), path, slash == std::string::npos ? "." : path.substr(0, slash), ni, nj);
+}
+
+}  // namespace eg2dtool

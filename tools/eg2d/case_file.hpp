@@ -1,0 +1,74 @@
+// A case file: everything that defines one grid, read from TOML (schema in docs/case-files.md).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "formula.hpp"
+#include "location.hpp"
+#include "side_spec.hpp"
+
+namespace eg2dtool {
+
+struct ParameterSetting {  // a generic EG2D_PARAM_* setting
+    int id;
+    double value;
+    Location where;
+};
+
+struct LineSource {  // eg2d_add_line_source
+    int direction;   // EG2D_XI / EG2D_ETA
+    double line, amplitude, decay;
+    Location where;
+};
+
+struct PointSource {  // eg2d_add_point_source
+    double xi, eta, amplitude, decay;
+    Location where;
+};
+
+struct WallSpacing {  // eg2d_set_wall_spacing
+    int side;
+    double height;
+    Location where;
+};
+
+struct OutputFile {
+    int format;         // EG2D_FORMAT_* (or the tool's own SVG until the library has one)
+    std::string name;   // file name, e.g. "swan.svg"
+    Location where;
+};
+
+struct Case {
+    std::string file;  // as given
+    std::string dir;   // directory of the case file: relative point files are read from here
+    std::string title;
+    int ni = 0, nj = 0;
+    Location size_at;
+    int topology = 0, system = 1, initial = 0;
+    Location topology_at, system_at, initial_at;
+    int solver = 0;
+    Location solver_at;
+    std::vector<ParameterSetting> parameters;
+    Constants constants;
+    std::vector<SideSpec> sides;
+    // controls
+    int orthogonality = -1;  // -1: not set
+    Location orthogonality_at;
+    std::vector<WallSpacing> wall_spacings;
+    std::vector<LineSource> line_sources;
+    std::vector<PointSource> point_sources;
+    std::string source_p, source_q;  // formulas in i, j, ni, nj ("" = none)
+    Location source_p_at, source_q_at;
+    std::vector<OutputFile> outputs;
+};
+
+// Reads a case from TOML text; `file` names it in messages, `dir` resolves relative
+// point files; ni, nj > 0 override the file's size (--size). Throws Failure(EXIT_CASE
+// or EXIT_UNSUPPORTED) with "FILE:LINE:COL: key 'K': ...".
+Case read_case(const std::string &text, const std::string &file, const std::string &dir, int ni = 0, int nj = 0);
+
+// Reads the file at `path` (EXIT_IO if it cannot be read), then read_case.
+Case read_case_file(const std::string &path, int ni = 0, int nj = 0);
+
+}  // namespace eg2dtool

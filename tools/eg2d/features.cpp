@@ -1,0 +1,99 @@
+#include "features.hpp"
+
+#include <eg2d.h>
+
+namespace eg2dtool {
+
+// A feature whose constant is not in this header is listed with available = false.
+#define EG2D_FEATURE(name, macro) {name, macro, true}
+#define EG2D_MISSING(name) {name, -1, false}
+
+const std::vector<Feature> &solvers() {
+    // Solvers are known at run time too: eg2d_solver_name(id) is NULL when absent.
+    static const std::vector<Feature> t = [] {
+        std::vector<Feature> v = {{"psor", EG2D_SOLVER_PSOR, true}, {"lsor", EG2D_SOLVER_LSOR, true},
+                                  {"af", EG2D_SOLVER_AF, true}, {"nested", EG2D_SOLVER_NESTED, true},
+                                  {"multigrid", EG2D_SOLVER_MULTIGRID, true}};
+        for (auto &f : v) f.available = eg2d_solver_name(f.id) != nullptr;
+        return v;
+    }();
+    return t;
+}
+
+const std::vector<Feature> &parameters() {
+    static const std::vector<Feature> t = {
+        EG2D_FEATURE("relaxation", EG2D_PARAM_RELAXATION),
+        EG2D_FEATURE("tolerance", EG2D_PARAM_TOLERANCE),
+        EG2D_FEATURE("max_iterations", EG2D_PARAM_MAX_ITERATIONS),
+        EG2D_FEATURE("divergence_factor", EG2D_PARAM_DIVERGENCE_FACTOR),
+        EG2D_FEATURE("fold_check", EG2D_PARAM_FOLD_CHECK),
+    };
+    return t;
+}
+
+const std::vector<Feature> &orthogonality() {
+    static const std::vector<Feature> t = {
+#ifdef EG2D_ORTHO_NONE
+        EG2D_FEATURE("none", EG2D_ORTHO_NONE),
+        EG2D_FEATURE("middlecoff-thomas", EG2D_ORTHO_MIDDLECOFF_THOMAS),
+        EG2D_FEATURE("wall", EG2D_ORTHO_WALL),
+#else
+        EG2D_MISSING("none"), EG2D_MISSING("middlecoff-thomas"), EG2D_MISSING("wall"),
+#endif
+    };
+    return t;
+}
+
+const std::vector<Feature> &formats() {
+    static const std::vector<Feature> t = {
+#ifdef EG2D_FORMAT_PLOT3D
+        {"plot3d", EG2D_FORMAT_PLOT3D, true, ".xyz"},
+        {"plot3d-ascii", EG2D_FORMAT_PLOT3D_ASCII, true, ".p3d"},
+        {"vts", EG2D_FORMAT_VTS, true, ".vts"},
+        {"cgns", EG2D_FORMAT_CGNS, true, ".cgns"},
+        {"gmv", EG2D_FORMAT_GMV, true, ".gmv"},
+        {"matlab", EG2D_FORMAT_MATLAB, true, ".m"},
+#else
+        {"plot3d", -1, false, ".xyz"}, {"plot3d-ascii", -1, false, ".p3d"}, {"vts", -1, false, ".vts"},
+        {"cgns", -1, false, ".cgns"}, {"gmv", -1, false, ".gmv"}, {"matlab", -1, false, ".m"},
+#endif
+#ifdef EG2D_FORMAT_SVG
+        {"svg", EG2D_FORMAT_SVG, true, ".svg"},
+#else
+        {"svg", -1, true, ".svg"},  // the tool's own picture writer (svg_picture.cpp) until the library has one
+#endif
+    };
+    return t;
+}
+
+const std::vector<Feature> &systems() {
+    static const std::vector<Feature> t = {EG2D_FEATURE("laplace", EG2D_SYSTEM_LAPLACE),
+                                           EG2D_FEATURE("winslow", EG2D_SYSTEM_WINSLOW)};
+    return t;
+}
+
+const std::vector<Feature> &topologies() {
+    // Asked of the library: a topology it reserves but lacks is EG2D_ERR_UNSUPPORTED.
+    static const std::vector<Feature> t = [] {
+        std::vector<Feature> v = {{"single", EG2D_TOPO_SINGLE, true}, {"o", EG2D_TOPO_O, true}, {"c", EG2D_TOPO_C, true}};
+        eg2d_grid *g = nullptr;
+        if (eg2d_create(5, 5, &g) == EG2D_OK)
+            for (auto &f : v) f.available = eg2d_set_topology(g, f.id) == EG2D_OK;
+        eg2d_destroy(g);
+        return v;
+    }();
+    return t;
+}
+
+const std::vector<Feature> &initializers() {
+    static const std::vector<Feature> t = {EG2D_FEATURE("tfi", EG2D_INIT_TFI)};
+    return t;
+}
+
+std::vector<std::string> names(const std::vector<Feature> &table) {
+    std::vector<std::string> v;
+    for (const auto &f : table) v.push_back(f.name);
+    return v;
+}
+
+}  // namespace eg2dtool

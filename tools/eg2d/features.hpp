@@ -1,0 +1,29 @@
+// What the case file can ask for, by name, and whether this build of the library has it.
+// A name that exists but whose library part is not in this build gives a precise
+// "not available in this build" error (EXIT_UNSUPPORTED) instead of "unknown".
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace eg2dtool {
+
+struct Feature {
+    const char *name;  // as written in a case file
+    int id;            // the library's constant
+    bool available;    // compiled into this build of the tool's library
+    const char *extension = "";  // output formats: file name extension
+};
+
+const std::vector<Feature> &solvers();        // [solver] method
+const std::vector<Feature> &parameters();     // [solver] keys that are EG2D_PARAM_* settings
+const std::vector<Feature> &orthogonality();  // [controls] orthogonality
+const std::vector<Feature> &formats();        // [output] formats
+const std::vector<Feature> &systems();
+const std::vector<Feature> &topologies();
+const std::vector<Feature> &initializers();
+
+// The names of a table (for messages: "expected one of: ...").
+std::vector<std::string> names(const std::vector<Feature> &table);
+
+}  // namespace eg2dtool

@@ -1,0 +1,62 @@
+#include "progress.hpp"
+
+#include <csignal>
+#include <cmath>
+
+namespace eg2dtool {
+
+namespace {
+volatile std::sig_atomic_t sigint_seen = 0;
+struct sigaction previous_action;
+
+extern "C" void on_sigint(int) { sigint_seen = 1; }
+}  // namespace
+
+Progress::Progress(bool live, bool quiet) : live_(live), quiet_(quiet) {
+    sigint_seen = 0;
+    struct sigaction a = {};
+    a.sa_handler = on_sigint;
+    sigemptyset(&a.sa_mask);
+    a.sa_flags = SA_RESETHAND;  // a second Ctrl-C ends the program the usual way
+    sigaction(SIGINT, &a, &previous_action);
+    last_time_ = std::chrono::steady_clock::now();
+}
+
+Progress::~Progress() { sigaction(SIGINT, &previous_action, nullptr); }
+
+bool Progress::interrupted() { return sigint_seen != 0; }
+
+void Progress::print(int iteration, double residual) {
+    if (live_)
+        std::printf("\r  iteration %8d  residual %.3e  rate %.4f/iteration ", iteration, residual, rate_);
+    else
+        std::printf("  iteration %d  residual %.3e  rate %.4f/iteration\n", iteration, residual, rate_);
+    std::fflush(stdout);
+    shown_ = true;
+}
+
+int Progress::monitor(void *user, int iteration, double residual) {
+    Progress &p = *static_cast<Progress *>(user);
+    if (sigint_seen) return 1;
+    if (p.quiet_) return 0;
+    const auto now = std::chrono::steady_clock::now();
+    const double since = std::chrono::duration<double>(now - p.last_time_).count();
+    // The first line at once, then a few a second on a terminal, one a second otherwise.
+    if (p.shown_ && since < (p.live_ ? 0.2 : 1.0)) return 0;
+    // rate: the mean factor by which the residual fell per iteration since the last line
+    if (p.last_iteration_ > 0 && iteration > p.last_iteration_ && p.last_residual_ > 0 && residual > 0)
+        p.rate_ = std::pow(residual / p.last_residual_, 1.0 / (iteration - p.last_iteration_));
+    p.print(iteration, residual);
+    p.last_time_ = now;
+    p.last_iteration_ = iteration;
+    p.last_residual_ = residual;
+    return 0;
+}
+
+void Progress::finish() {
+    if (live_ && shown_) std::printf("\r%72s\r", "");
+    std::fflush(stdout);
+    shown_ = false;
+}
+
+}  // namespace eg2dtool

@@ -1,0 +1,171 @@
+#include "runner.hpp"
+
+#include <eg2d.h>
+
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+#include "failure.hpp"
+#include "features.hpp"
+#include "progress.hpp"
+#include "svg_picture.hpp"
+
+namespace eg2dtool {
+
+int exit_code_for_status(int status) {
+    switch (status) {
+    case EG2D_OK: return EXIT_OK;
+    case EG2D_ERR_ARGUMENT:
+    case EG2D_ERR_BOUNDARY:
+    case EG2D_ERR_STATE: return EXIT_GEOMETRY;
+    case EG2D_ERR_NOT_CONVERGED: return EXIT_NOT_CONVERGED;
+    case EG2D_ERR_DIVERGED: return EXIT_DIVERGED;
+    case EG2D_ERR_FOLDED: return EXIT_FOLDED;
+    case EG2D_ERR_IO: return EXIT_IO;
+    case EG2D_ERR_UNSUPPORTED: return EXIT_UNSUPPORTED;
+    case EG2D_ERR_INTERRUPTED: return EXIT_INTERRUPTED;
+    default: return EXIT_INTERNAL;
+    }
+}
+
+namespace {
+
+struct GridDeleter {
+    void operator()(eg2d_grid *g) const { eg2d_destroy(g); }
+};
+using GridPtr = std::unique_ptr<eg2d_grid, GridDeleter>;
+
+// A failed library call: the location in the case file and the library's message.
+void check(eg2d_grid *g, int status, const Location &at) {
+    if (status != EG2D_OK) throw Failure(exit_code_for_status(status), at.str() + ": " + eg2d_last_error(g));
+}
+
+const char *name_of(const std::vector<Feature> &table, int id) {
+    for (const auto &f : table)
+        if (f.id == id) return f.name;
+    return "?";
+}
+
+void make_directory(const std::string &dir) {
+    std::string partial;
+    for (std::size_t k = 0; k <= dir.size(); ++k) {
+        if (k == dir.size() || dir[k] == '/') {
+            if (!partial.empty() && mkdir(partial.c_str(), 0777) != 0 && errno != EEXIST)
+                throw Failure(EXIT_IO, partial + ": cannot create the output directory: " + std::strerror(errno));
+        }
+        if (k < dir.size()) partial += dir[k];
+    }
+}
+
+void apply_controls(eg2d_grid *g, const Case &c) {
+#ifdef EG2D_ORTHO_WALL
+    if (c.orthogonality >= 0) check(g, eg2d_set_orthogonality(g, c.orthogonality), c.orthogonality_at);
+    for (const auto &w : c.wall_spacings) check(g, eg2d_set_wall_spacing(g, w.side, w.height), w.where);
+    for (const auto &s : c.line_sources)
+        check(g, eg2d_add_line_source(g, s.direction, s.line, s.amplitude, s.decay), s.where);
+    for (const auto &s : c.point_sources)
+        check(g, eg2d_add_point_source(g, s.xi, s.eta, s.amplitude, s.decay), s.where);
+    if (!c.source_p.empty()) {
+        const Formula fp(c.source_p, {"i", "j"}, c.constants, c.source_p_at);
+        const Formula fq(c.source_q, {"i", "j"}, c.constants, c.source_q_at);
+        std::vector<double> p(static_cast<std::size_t>(c.ni) * c.nj), q(p.size());
+        for (int j = 0; j < c.nj; ++j)
+            for (int i = 0; i < c.ni; ++i) {
+                const std::size_t k = static_cast<std::size_t>(i) + static_cast<std::size_t>(c.ni) * j;
+                p[k] = fp({double(i), double(j)});
+                q[k] = fq({double(i), double(j)});
+            }
+        check(g, eg2d_set_source_arrays(g, p.data(), q.data()), c.source_p_at);
+    }
+#else
+    (void)g;
+    (void)c;  // read_case already refused controls this build lacks
+#endif
+}
+
+void print_quality(eg2d_grid *g) {
+    double folded = 0, min_area = 0;
+    eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &folded);
+    eg2d_get_quality(g, EG2D_QUALITY_MIN_AREA, &min_area);
+    std::printf("quality: %.0f folded cells, min cell area %.4g\n", folded, min_area);
+}
+
+void write_outputs(eg2d_grid *g, const Case &c, const RunOptions &o) {
+    make_directory(o.out_dir);
+    for (const auto &out : c.outputs) {
+        if (Progress::interrupted()) throw Failure(EXIT_INTERRUPTED, "interrupted: no further files written");
+        const std::string path = o.out_dir + "/" + out.name;
+        if (out.format < 0) {  // the tool's own SVG picture (until the library writes SVG)
+            std::vector<double> x(static_cast<std::size_t>(c.ni) * c.nj), y(x.size());
+            check(g, eg2d_get_coordinates(g, x.data(), y.data()), out.where);
+            const std::string reason = write_svg_picture(path, c.ni, c.nj, x, y);
+            if (!reason.empty()) throw Failure(EXIT_IO, path + ": cannot write: " + reason);
+        } else {
+#ifdef EG2D_FORMAT_PLOT3D
+            check(g, eg2d_write(g, path.c_str(), out.format), out.where);
+#endif
+        }
+        std::printf("wrote %s\n", path.c_str());
+    }
+}
+
+}  // namespace
+
+int run_case(const Case &c, const RunOptions &o) {
+    eg2d_grid *raw = nullptr;
+    check(nullptr, eg2d_create(c.ni, c.nj, &raw), c.size_at);
+    GridPtr grid(raw);
+    eg2d_grid *g = grid.get();
+    check(g, eg2d_set_topology(g, c.topology), c.topology_at);
+    check(g, eg2d_set_system(g, c.system), c.system_at);
+    check(g, eg2d_set_solver(g, c.solver), c.solver_at);
+    for (const auto &p : c.parameters) check(g, eg2d_set_parameter(g, p.id, p.value), p.where);
+    for (const auto &s : c.sides) {
+        const bool along_i = s.side == EG2D_SIDE_JMIN || s.side == EG2D_SIDE_JMAX;
+        std::vector<double> x, y;
+        side_nodes(s, along_i ? c.ni : c.nj, c.topology == EG2D_TOPO_O, c.constants, x, y);
+        check(g, eg2d_set_side(g, s.side, x.data(), y.data()), s.where);
+    }
+    apply_controls(g, c);
+    check(g, eg2d_initialize(g, c.initial), c.initial_at);
+
+    double tolerance = 0;
+    eg2d_get_parameter(g, EG2D_PARAM_TOLERANCE, &tolerance);
+    std::printf("%s: %d x %d %s grid, %s system, %s solver, tolerance %.3g\n", c.title.c_str(), c.ni, c.nj,
+                c.topology == EG2D_TOPO_O ? "O" : "single-block", name_of(systems(), c.system),
+                eg2d_solver_name(c.solver), tolerance);
+    std::fflush(stdout);
+
+    int status;
+    const auto start = std::chrono::steady_clock::now();
+    {
+        Progress progress(o.live, o.quiet);
+        eg2d_set_monitor(g, &Progress::monitor, &progress);
+        status = eg2d_solve(g);
+        eg2d_set_monitor(g, nullptr, nullptr);
+        progress.finish();
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    int iterations = 0;
+    double residual = 0;
+    eg2d_get_iterations(g, &iterations);
+    eg2d_get_residual(g, &residual);
+    if (status == EG2D_ERR_INTERRUPTED) {
+        std::printf("interrupted at iteration %d, residual %.3e: no files written\n", iterations, residual);
+        return EXIT_INTERRUPTED;
+    }
+    if (status == EG2D_OK)
+        std::printf("converged in %d iterations, residual %.3e, %.2f s\n", iterations, residual, seconds);
+    print_quality(g);
+    if (status != EG2D_OK)
+        throw Failure(exit_code_for_status(status), c.file + ": " + eg2d_last_error(g) + " (no files written)");
+    write_outputs(g, c, o);
+    return EXIT_OK;
+}
+
+}  // namespace eg2dtool

@@ -1,0 +1,47 @@
+// One side of the domain as the case file gives it: one piece or a chain of pieces,
+// each a formula in s, inline points or a point file; and the nodes it puts on the side.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "formula.hpp"
+#include "location.hpp"
+
+namespace toml {
+inline namespace v3 {
+class node;
+}
+}  // namespace toml
+
+namespace eg2dtool {
+
+struct SidePiece {
+    Location where;
+    std::string x, y;                  // formulas in s (both or neither)
+    Location x_at, y_at;
+    std::vector<double> px, py;        // points (inline or from a file), used as nodes
+    Location points_at;
+    double share = -1;                 // fraction of the side's intervals; < 0: by length
+};
+
+struct SideSpec {
+    int side = 0;      // EG2D_SIDE_*
+    std::string name;  // as written ("bottom", "inner", ...)
+    Location where;
+    std::vector<SidePiece> pieces;
+};
+
+// The side names of a topology, in EG2D_SIDE_* order (e.g. bottom right top left).
+const std::vector<std::pair<std::string, int>> &side_names(int topology);
+
+// Parses `sides.NAME` (a table or an array of tables). `dir` resolves point files.
+SideSpec parse_side(const toml::node &node, int side, const std::string &name, const Location &where,
+                    const std::string &dir);
+
+// The n nodes of a side. closed: the side is a closed curve (O-grid), so the last
+// node is snapped onto the first when they agree to roundoff.
+void side_nodes(const SideSpec &spec, int n, bool closed, const Constants &constants, std::vector<double> &x,
+                std::vector<double> &y);
+
+}  // namespace eg2dtool
