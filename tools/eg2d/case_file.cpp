@@ -85,10 +85,10 @@ void read_controls(const Fields &top, Case &c) {
         c.orthogonality = pick_key(f, "orthogonality", "none", orthogonality()).id;
         c.orthogonality_at = f.at("orthogonality");
     }
-#if !defined(EG2D_ORTHO_WALL)
-    for (const char *k : {"wall_spacing", "line_source", "point_source", "source_arrays"})
-        if (f.has(k)) throw Failure(EXIT_UNSUPPORTED, f.at(k).str() + ": is not available in this build of eg2d");
-#else
+    for (const auto &feature : controls())
+        if (f.has(feature.name) && !feature.available)
+            throw Failure(EXIT_UNSUPPORTED, f.at(feature.name).str() + ": is not available in this build of eg2d");
+#ifdef EG2D_XI
     if (f.has("wall_spacing")) {
         const auto &valid = side_names(c.topology);
         std::vector<std::string> keys;

@@ -44,6 +44,22 @@ const std::vector<Feature> &orthogonality() {
     return t;
 }
 
+const std::vector<Feature> &controls() {
+    static const std::vector<Feature> t = {
+#ifdef EG2D_XI
+        {"line_source", 0, true}, {"point_source", 0, true}, {"source_arrays", 0, true},
+#else
+        {"line_source", 0, false}, {"point_source", 0, false}, {"source_arrays", 0, false},
+#endif
+#ifdef EG2D_ORTHO_WALL
+        {"wall_spacing", 0, true},
+#else
+        {"wall_spacing", 0, false},
+#endif
+    };
+    return t;
+}
+
 const std::vector<Feature> &formats() {
     static const std::vector<Feature> t = {
 #ifdef EG2D_FORMAT_PLOT3D

@@ -18,6 +18,7 @@ struct Feature {
 const std::vector<Feature> &solvers();        // [solver] method
 const std::vector<Feature> &parameters();     // [solver] keys that are EG2D_PARAM_* settings
 const std::vector<Feature> &orthogonality();  // [controls] orthogonality
+const std::vector<Feature> &controls();       // the other [controls] keys
 const std::vector<Feature> &formats();        // [output] formats
 const std::vector<Feature> &systems();
 const std::vector<Feature> &topologies();

@@ -13,6 +13,7 @@
 #include "case_file.hpp"
 #include "demos.hpp"
 #include "failure.hpp"
+#include "features.hpp"
 #include "runner.hpp"
 
 using namespace eg2dtool;
@@ -134,6 +135,20 @@ int list_demos() {
     return EXIT_OK;
 }
 
+// What this build offers, by the names case files use (tests read this too).
+void print_features() {
+    auto line = [](const char *what, const std::vector<Feature> &table) {
+        std::string have, lack;
+        for (const auto &f : table) (f.available ? have : lack) += std::string(" ") + f.name;
+        std::printf("%-14s%s%s%s\n", what, have.c_str(), lack.empty() ? "" : "   not in this build:", lack.c_str());
+    };
+    line("topologies:", topologies());
+    line("solvers:", solvers());
+    line("orthogonality:", orthogonality());
+    line("controls:", controls());
+    line("formats:", formats());
+}
+
 int run(const Args &a) {
     RunOptions o;
     o.out_dir = a.out_dir;
@@ -163,6 +178,7 @@ int main(int argc, char **argv) {
             int major, minor, patch;
             eg2d_version(&major, &minor, &patch);
             std::printf("eg2d %d.%d.%d\n", major, minor, patch);
+            print_features();
             return EXIT_OK;
         }
     }

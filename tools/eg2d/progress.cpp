@@ -27,10 +27,12 @@ Progress::~Progress() { sigaction(SIGINT, &previous_action, nullptr); }
 bool Progress::interrupted() { return sigint_seen != 0; }
 
 void Progress::print(int iteration, double residual) {
+    char rate[32] = "-";  // unknown until two lines apart
+    if (rate_ > 0) std::snprintf(rate, sizeof rate, "%.4f", rate_);
     if (live_)
-        std::printf("\r  iteration %8d  residual %.3e  rate %.4f/iteration ", iteration, residual, rate_);
+        std::printf("\r  iteration %8d  residual %.3e  rate %s/iteration ", iteration, residual, rate);
     else
-        std::printf("  iteration %d  residual %.3e  rate %.4f/iteration\n", iteration, residual, rate_);
+        std::printf("  iteration %d  residual %.3e  rate %s/iteration\n", iteration, residual, rate);
     std::fflush(stdout);
     shown_ = true;
 }

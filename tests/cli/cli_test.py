@@ -1,0 +1,287 @@
+"""Tests of the eg2d command: examples, demo, messages of bad case files, exit codes,
+progress and Ctrl-C. Run by ctest with /usr/bin/python3:
+
+    cli_test.py TOOL EXAMPLES_DIR [unittest arguments, e.g. ErrorMessages]
+    cli_test.py TOOL EXAMPLES_DIR --example NAME SIZE   (one example at a small size)
+"""
+import os
+import re
+import signal
+import subprocess
+import sys
+import tempfile
+import textwrap
+import unittest
+import xml.etree.ElementTree as ET
+
+TOOL = EXAMPLES = None
+
+
+def run(*args, cwd=None):
+    p = subprocess.run([TOOL, *args], capture_output=True, text=True, cwd=cwd, timeout=600)
+    return p.returncode, p.stdout, p.stderr
+
+
+def features():
+    """{"solvers": {"psor": True, "lsor": False, ...}, ...} from eg2d --version."""
+    code, out, _ = run("--version")
+    assert code == 0
+    table = {}
+    for line in out.splitlines()[1:]:
+        what, rest = line.split(":", 1)
+        have, _, lack = rest.partition("not in this build:")
+        table[what] = {**{n: True for n in have.split()}, **{n: False for n in lack.split()}}
+    return table
+
+
+def check_svg(test, path):
+    """The picture is well-formed XML with an <svg> root holding drawing elements."""
+    root = ET.parse(path).getroot()
+    test.assertEqual(root.tag, "{http://www.w3.org/2000/svg}svg")
+    test.assertGreater(len(list(root.iter())), 4)
+
+
+class Example(unittest.TestCase):
+    """One example case file, run at a small size (set by main())."""
+    name = size = None
+
+    def test_runs(self):
+        case = os.path.join(EXAMPLES, self.name + ".toml")
+        with tempfile.TemporaryDirectory() as out:
+            code, stdout, stderr = run("run", case, "-o", out, "--size", self.size)
+            self.assertEqual(code, 0, stdout + stderr)
+            self.assertRegex(stdout, r"converged in \d+ iterations")
+            self.assertIn("quality: 0 folded cells", stdout)
+            written = re.findall(r"^wrote (.*)$", stdout, re.M)
+            self.assertTrue(written)
+            for path in written:
+                self.assertTrue(os.path.getsize(path) > 0, path)
+                if path.endswith(".svg"):
+                    check_svg(self, path)
+            self.assertEqual(sorted(os.listdir(out)), sorted(os.path.basename(p) for p in written))
+
+
+class ErrorMessages(unittest.TestCase):
+    """A bad case file gives one precise message naming the file, line, column and key."""
+
+    GOOD_SIDES = textwrap.dedent("""
+        [sides.bottom]
+        x = "s"
+        y = "0"
+        [sides.right]
+        x = "1"
+        y = "s"
+        [sides.top]
+        x = "s"
+        y = "1"
+        [sides.left]
+        x = "0"
+        y = "s"
+        """)
+
+    def check(self, text, code, message, extra_files=None):
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "case.toml")
+            with open(path, "w") as f:
+                f.write(textwrap.dedent(text).lstrip("\n"))
+            for name, content in (extra_files or {}).items():
+                with open(os.path.join(d, name), "w") as f:
+                    f.write(content)
+            got, stdout, stderr = run("run", path, "-o", os.path.join(d, "out"))
+            self.assertEqual(stderr, "eg2d: " + message.replace("CASE", path) + "\n")
+            self.assertEqual(got, code)
+            self.assertFalse(os.path.exists(os.path.join(d, "out")), "a failed run wrote files")
+
+    def test_unknown_key(self):
+        self.check('size = [9, 9]\nsovler = "psor"\n' + self.GOOD_SIDES, 3,
+                   "CASE:2:1: key 'sovler': unknown key (expected one of: title, size, topology, system, "
+                   "initial, constants, solver, sides, controls, output)")
+
+    def test_unknown_key_in_a_side(self):
+        self.check('size = [9, 9]\n' + self.GOOD_SIDES + 'z = "1"\n', 3,
+                   "CASE:15:1: key 'sides.left.z': unknown key (expected one of: x, y, points, file, share)")
+
+    def test_wrong_type(self):
+        self.check('size = [9, 9]\n[solver]\ntolerance = true\n' + self.GOOD_SIDES, 3,
+                   "CASE:3:13: key 'solver.tolerance': expected a number, found a boolean")
+
+    def test_wrong_type_size(self):
+        self.check('size = 9\n' + self.GOOD_SIDES, 3,
+                   "CASE:1:8: key 'size': expected an array, found an integer")
+
+    def test_missing_side(self):
+        text = 'size = [9, 9]\n' + self.GOOD_SIDES.replace('[sides.left]\nx = "0"\ny = "s"\n', "")
+        self.check(text, 3, "CASE:3:1: key 'sides.left': missing (a single-block case needs the sides "
+                            "bottom, right, top, left)")
+
+    def test_bad_formula(self):
+        text = 'size = [9, 9]\n' + self.GOOD_SIDES.replace('y = "1"', 'y = "0.75 + 0.25*sin(pi*(0.5 + 2*s)"')
+        self.check(text, 3, "CASE:11:5: key 'sides.top.y': bad formula \"0.75 + 0.25*sin(pi*(0.5 + 2*s)\": "
+                            "Missing parenthesis")
+
+    def test_unknown_name_in_formula(self):
+        text = 'size = [9, 9]\n' + self.GOOD_SIDES.replace('y = "1"', 'y = "1 + t"')
+        self.check(text, 3, "CASE:11:5: key 'sides.top.y': bad formula \"1 + t\": Unexpected token \"t\" "
+                            "found at position 4.")
+
+    def test_formula_not_finite(self):
+        text = 'size = [9, 9]\n' + self.GOOD_SIDES.replace('y = "1"', 'y = "1/(s - 0.5)"')
+        self.check(text, 3, "CASE:11:5: key 'sides.top.y': formula \"1/(s - 0.5)\" gives inf at s = 0.5")
+
+    def test_corner_mismatch_from_the_library(self):
+        text = 'size = [9, 9]\n' + self.GOOD_SIDES.replace('x = "1"', 'x = "1.25"')
+        self.check(text, 4, "CASE:6:1: key 'sides.right': eg2d_set_side: corner JMIN/IMAX: (1, 0) vs (1.25, 0)")
+
+    def test_toml_syntax(self):
+        self.check('size = [9, 9\n', 3, "CASE:1:14: TOML syntax error: Error while parsing array: encountered end-of-file")
+
+    def test_bad_choice(self):
+        self.check('size = [9, 9]\nsystem = "poisson"\n' + self.GOOD_SIDES, 3,
+                   "CASE:2:10: key 'system': \"poisson\" is not one of: laplace, winslow")
+
+    def test_point_count(self):
+        text = 'size = [4, 3]\n' + self.GOOD_SIDES.replace('[sides.left]\nx = "0"\ny = "s"',
+                                                          '[sides.left]\npoints = [[0, 0], [0, 1]]')
+        self.check(text, 3, "CASE:13:10: key 'sides.left.points': 2 points given, but this side needs 3 (size 3)")
+
+    def test_point_file_bad_line(self):
+        text = 'size = [3, 3]\n' + self.GOOD_SIDES.replace('[sides.left]\nx = "0"\ny = "s"',
+                                                          '[sides.left]\nfile = "left.txt"')
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "case.toml")
+            with open(path, "w") as f:
+                f.write(textwrap.dedent(text).lstrip("\n"))
+            with open(os.path.join(d, "left.txt"), "w") as f:
+                f.write("# x y\n0 0\n0 0.5 7\n0 1\n")
+            code, _, stderr = run("run", path, "-o", os.path.join(d, "out"))
+            self.assertEqual(stderr, f"eg2d: {d}/left.txt:3: expected two numbers \"x y\" (file named by "
+                                     f"{path}:13:8: key 'sides.left.file')\n")
+            self.assertEqual(code, 3)
+            os.remove(os.path.join(d, "left.txt"))
+            code, _, stderr = run("run", path, "-o", os.path.join(d, "out"))
+            self.assertEqual(stderr, f"eg2d: {path}:13:8: key 'sides.left.file': cannot read \"{d}/left.txt\": "
+                                     "No such file or directory\n")
+            self.assertEqual(code, 8)
+
+    def test_pieces_that_do_not_meet(self):
+        text = 'size = [9, 9]\n' + self.GOOD_SIDES.replace(
+            '[sides.bottom]\nx = "s"\ny = "0"',
+            '[[sides.bottom]]\nx = "0.5*s"\ny = "0"\n[[sides.bottom]]\n'
+            '        x = "0.6 + 0.4*s"\ny = "0"')
+        self.check(text, 3, "CASE:6:1: key 'sides.bottom[1]': starts at (0.6, 0) but the previous piece ends "
+                            "at (0.5, 0)")
+
+    def test_not_available_in_this_build(self):
+        solvers = features()["solvers"]
+        missing = [n for n, have in solvers.items() if not have]
+        for name in missing:
+            self.check(f'size = [9, 9]\n[solver]\nmethod = "{name}"\n' + self.GOOD_SIDES, 9,
+                       f"CASE:3:10: key 'solver.method': \"{name}\" is not available in this build of eg2d")
+        self.check('size = [9, 9]\n[solver]\nmethod = "sor"\n' + self.GOOD_SIDES, 3,
+                   "CASE:3:10: key 'solver.method': \"sor\" is not one of: psor, lsor, af, nested, multigrid")
+
+
+class CommandLine(unittest.TestCase):
+    def test_help_documents_exit_codes_and_an_example(self):
+        code, out, _ = run("--help")
+        self.assertEqual(code, 0)
+        for line in ("  3    bad case file", "  9    the case asks for a feature not available in this build",
+                     "  130  interrupted by Ctrl-C", "eg2d demo -o demo-out"):
+            self.assertIn(line, out)
+
+    def test_usage_errors(self):
+        for args, message in [(["frobnicate"], "unknown command \"frobnicate\""),
+                              (["run"], "run needs a case file"),
+                              (["demo", "--size", "2x9"], "--size expects NIxNJ with 3 <= NI, NJ <= 100000, found \"2x9\""),
+                              (["demo", "--bogus"], "unknown option --bogus"),
+                              (["demo", "nosuch"], "no demo named \"nosuch\"")]:
+            code, _, err = run(*args)
+            self.assertEqual(code, 2, args)
+            self.assertTrue(err.startswith("eg2d: " + message), err)
+
+    def test_missing_case_file(self):
+        code, _, err = run("run", "/nonexistent/case.toml")
+        self.assertEqual(code, 8)
+        self.assertEqual(err, "eg2d: /nonexistent/case.toml: cannot read the case file: No such file or directory\n")
+
+    def test_not_converged_writes_nothing(self):
+        with tempfile.TemporaryDirectory() as d:
+            case = os.path.join(EXAMPLES, "swan.toml")
+            path = os.path.join(d, "case.toml")
+            with open(case) as f:
+                text = f.read().replace("max_iterations = 20000", "max_iterations = 5")
+            with open(path, "w") as f:
+                f.write(text)
+            code, out, err = run("run", path, "-o", os.path.join(d, "out"), "--size", "17x17")
+            self.assertEqual(code, 5, out + err)
+            self.assertIn("(no files written)", err)
+            self.assertFalse(os.path.exists(os.path.join(d, "out")))
+
+
+class Demo(unittest.TestCase):
+    def test_default_demo_writes_a_picture(self):
+        with tempfile.TemporaryDirectory() as d:
+            code, out, err = run("demo", "-o", os.path.join(d, "demo-out"), "--quiet")
+            self.assertEqual(code, 0, out + err)
+            self.assertTrue(out.startswith("Swan (seed 003, A4): 65 x 65 single-block grid"))
+            files = sorted(os.listdir(os.path.join(d, "demo-out")))
+            self.assertIn("swan.svg", files)
+            check_svg(self, os.path.join(d, "demo-out", "swan.svg"))
+            if features()["formats"].get("plot3d"):
+                self.assertIn("swan.xyz", files)
+
+    def test_list_is_the_examples(self):
+        code, out, _ = run("demo", "--list")
+        self.assertEqual(code, 0)
+        listed = [line.split()[0] for line in out.splitlines()]
+        examples = sorted(f[:-5] for f in os.listdir(EXAMPLES) if f.endswith(".toml"))
+        self.assertEqual(listed, examples)
+        self.assertRegex(out, r"(?m)^swan +Swan \(seed 003, A4\) \(default\)$")
+
+    def test_demo_text_is_the_example_file(self):
+        # the embedded demo runs the same case as the file: same first line and counts
+        with tempfile.TemporaryDirectory() as d:
+            a = run("demo", "valley", "-o", d, "--size", "17x17", "--quiet")
+            b = run("run", os.path.join(EXAMPLES, "valley.toml"), "-o", d, "--size", "17x17", "--quiet")
+            self.assertEqual(a[0], 0)
+            strip = lambda s: re.sub(r", [0-9.]+ s$", "", s, flags=re.M)
+            self.assertEqual(strip(a[1]), strip(b[1]))
+
+
+class Progress(unittest.TestCase):
+    def test_plain_progress_lines_and_ctrl_c(self):
+        """Not a terminal: plain lines. SIGINT after the first line stops the run, writes nothing, exit 130."""
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "big.toml")
+            with open(os.path.join(EXAMPLES, "swan.toml")) as f:
+                text = f.read().replace("tolerance = 1e-10", "tolerance = 1e-15").replace(
+                    "max_iterations = 20000", "max_iterations = 100000000")
+            with open(path, "w") as f:
+                f.write(text)
+            out_dir = os.path.join(d, "out")
+            p = subprocess.Popen([TOOL, "run", path, "-o", out_dir, "--size", "801x801"],
+                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            header = p.stdout.readline()
+            first = p.stdout.readline()
+            p.send_signal(signal.SIGINT)
+            rest, err = p.communicate(timeout=120)
+            self.assertTrue(header.startswith("Swan (seed 003, A4): 801 x 801"), header)
+            self.assertRegex(first, r"^  iteration 1  residual \d\.\d{3}e[-+]\d\d  rate -/iteration\n$")
+            self.assertEqual(p.returncode, 130, rest + err)
+            self.assertRegex(rest, r"(?m)^interrupted at iteration \d+, residual .*: no files written$")
+            self.assertFalse(os.path.exists(out_dir))
+
+
+def main():
+    global TOOL, EXAMPLES
+    TOOL, EXAMPLES = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+    args = sys.argv[3:]
+    if args[:1] == ["--example"]:
+        Example.name, Example.size = args[1], args[2]
+        suite = unittest.defaultTestLoader.loadTestsFromTestCase(Example)
+        sys.exit(0 if unittest.TextTestRunner(verbosity=2).run(suite).wasSuccessful() else 1)
+    unittest.main(argv=[sys.argv[0], *args], verbosity=2)
+
+
+if __name__ == "__main__":
+    main()

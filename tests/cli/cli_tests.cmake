@@ -1,0 +1,24 @@
+# Tests of the eg2d command (tools/eg2d), driven by cli_test.py under the system
+# Python (/usr/bin/python3: its xml module checks the pictures).
+set(EG2D_CLI_PYTHON /usr/bin/python3)
+set(EG2D_CLI_TEST ${CMAKE_CURRENT_LIST_DIR}/cli_test.py)
+set(EG2D_CLI_ARGS $<TARGET_FILE:eg2d_tool> ${PROJECT_SOURCE_DIR}/examples)
+
+# Every example case runs, at a small size, converged and unfolded, and its files are written.
+file(GLOB EG2D_CLI_EXAMPLES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/examples/*.toml)
+foreach(path IN LISTS EG2D_CLI_EXAMPLES)
+  get_filename_component(name ${path} NAME_WE)
+  set(size 33x33)
+  if(name MATCHES "annulus|rose|naca|circle")
+    set(size 65x25)   # O- and C-grids need points around the body
+  endif()
+  add_test(NAME cli_example_${name} COMMAND ${EG2D_CLI_PYTHON} ${EG2D_CLI_TEST} ${EG2D_CLI_ARGS} --example ${name} ${size})
+endforeach()
+
+foreach(group ErrorMessages CommandLine Demo Progress)
+  add_test(NAME cli_${group} COMMAND ${EG2D_CLI_PYTHON} ${EG2D_CLI_TEST} ${EG2D_CLI_ARGS} ${group})
+endforeach()
+
+# Every gallery picture is what the tool makes now of the case file beside it.
+add_test(NAME gallery_up_to_date
+         COMMAND ${EG2D_CLI_PYTHON} ${PROJECT_SOURCE_DIR}/tools/eg2d/gallery.py $<TARGET_FILE:eg2d_tool> ${PROJECT_SOURCE_DIR} --check)
