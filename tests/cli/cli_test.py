@@ -181,6 +181,62 @@ class ErrorMessages(unittest.TestCase):
                    "CASE:3:10: key 'solver.method': \"sor\" is not one of: psor, lsor, af, nested, multigrid")
 
 
+class Sides(unittest.TestCase):
+    """Inline points, a point file, pieces and constants give the same grid as formulas."""
+
+    FORMULAS = textwrap.dedent("""
+        size = [5, 5]
+        [solver]
+        tolerance = 1e-12
+        [sides.bottom]
+        x = "s"
+        y = "0"
+        [sides.right]
+        x = "1 + 2*s - 2*s^2"
+        y = "s"
+        [sides.top]
+        x = "s"
+        y = "1 - 2*s + 2*s^2"
+        [sides.left]
+        x = "0"
+        y = "s"
+        """)
+    POINTS = textwrap.dedent("""
+        size = [5, 5]
+        [constants]
+        half = 0.5
+        [solver]
+        tolerance = 1e-12
+        [[sides.bottom]]
+        x = "half*s"
+        y = "0"
+        [[sides.bottom]]
+        points = [[0.5, 0], [0.75, 0], [1, 0]]
+        [sides.right]
+        file = "right.txt"
+        [sides.top]
+        points = [[0, 1], [0.25, 0.625], [0.5, 0.5], [0.75, 0.625], [1, 1]]
+        [sides.left]
+        x = "0"
+        y = "s"
+        """)
+
+    def test_points_files_and_pieces(self):
+        with tempfile.TemporaryDirectory() as d:
+            for name, text in (("formulas.toml", self.FORMULAS), ("points.toml", self.POINTS)):
+                with open(os.path.join(d, name), "w") as f:
+                    f.write(text)
+            with open(os.path.join(d, "right.txt"), "w") as f:
+                f.write("# the swan's right side, x = 1 + 2y - 2y^2\n1 0\n1.375, 0.25\n\n1.5 0.5\n1.375 0.75\n1 1\n")
+            a = run("run", os.path.join(d, "formulas.toml"), "-o", d, "--quiet")
+            b = run("run", os.path.join(d, "points.toml"), "-o", d, "--quiet")
+            self.assertEqual(a[0], 0, a)
+            self.assertEqual(b[0], 0, b)
+            strip = lambda s: re.sub(r", [0-9.]+ s$", "", s.split("\n", 1)[1], flags=re.M).replace("formulas", "points")
+            self.assertEqual(strip(a[1]), strip(b[1]))
+            self.assertRegex(a[1], r"converged in \d+ iterations")
+
+
 class CommandLine(unittest.TestCase):
     def test_help_documents_exit_codes_and_an_example(self):
         code, out, _ = run("--help")

@@ -208,10 +208,11 @@ Case read_case(const std::string &text, const std::string &file, const std::stri
         std::vector<std::string> keys;
         for (const auto &kv : t) keys.emplace_back(kv.first.str());
         Fields f(t, at, keys);
+        const Constants builtin = c.constants;  // a constant is a number or a formula of ni, nj (and pi, e)
         for (const auto &k : keys) {
             if (c.constants.count(k) || k == "pi" || k == "e" || k == "s" || k == "i" || k == "j")
                 throw Failure(EXIT_CASE, f.at(k).str() + ": is a reserved name (pi, e, s, i, j, ni, nj)");
-            c.constants[k] = f.number(k, c.constants);
+            c.constants[k] = f.number(k, builtin);
         }
     }
     c.topology = pick_key(top, "topology", "single", topologies()).id;
