@@ -2,6 +2,7 @@
 
 #include <eg2d.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -73,7 +74,7 @@ void read_sides(const Fields &top, Case &c) {
         if (!f.has(s.first))
             throw Failure(EXIT_CASE, f.at(s.first).str() + ": missing (a " + (c.topology == EG2D_TOPO_O ? "O-grid" : "single-block") +
                                          " case needs the sides " + join(keys) + ")");
-        c.sides.push_back(parse_side(*f.node(s.first), s.second, s.first, f.at(s.first), c.dir));
+        c.sides.push_back(parse_side(*f.node(s.first), s.second, s.first, f.at(s.first), c.dir, c.constants));
     }
 }
 
@@ -205,14 +206,17 @@ Case read_case(const std::string &text, const std::string &file, const std::stri
     if (top.has("constants")) {
         const Location at = top.at("constants");
         const toml::table &t = top.table("constants");
+        // in the file's order: a constant may use the ones above it (and ni, nj, pi, e)
+        std::vector<std::pair<std::size_t, std::string>> order;
+        for (const auto &kv : t) order.emplace_back(kv.first.source().begin.line, std::string(kv.first.str()));
+        std::sort(order.begin(), order.end());
         std::vector<std::string> keys;
-        for (const auto &kv : t) keys.emplace_back(kv.first.str());
+        for (const auto &o : order) keys.push_back(o.second);
         Fields f(t, at, keys);
-        const Constants builtin = c.constants;  // a constant is a number or a formula of ni, nj (and pi, e)
         for (const auto &k : keys) {
             if (c.constants.count(k) || k == "pi" || k == "e" || k == "s" || k == "i" || k == "j")
-                throw Failure(EXIT_CASE, f.at(k).str() + ": is a reserved name (pi, e, s, i, j, ni, nj)");
-            c.constants[k] = f.number(k, builtin);
+                throw Failure(EXIT_CASE, f.at(k).str() + ": is a reserved or repeated name (pi, e, s, i, j, ni, nj)");
+            c.constants[k] = f.number(k, c.constants);
         }
     }
     c.topology = pick_key(top, "topology", "single", topologies()).id;

@@ -52,7 +52,8 @@ void read_point_file(const std::string &path, const Location &where, std::vector
     if (px.size() < 2) throw Failure(EXIT_CASE, where.str() + ": \"" + path + "\" holds fewer than 2 points");
 }
 
-SidePiece parse_piece(const toml::table &table, const Location &where, const std::string &dir) {
+SidePiece parse_piece(const toml::table &table, const Location &where, const std::string &dir,
+                      const Constants &constants) {
     Fields f(table, where, piece_keys);
     f.finish();
     SidePiece p;
@@ -70,7 +71,7 @@ SidePiece parse_piece(const toml::table &table, const Location &where, const std
         p.points_at = f.at("points");
         for (std::size_t k = 0; k < a.size(); ++k) {
             double x, y;
-            read_pair(*a.get(k), locate(where, "points[" + std::to_string(k) + "]", *a.get(k)), {}, x, y);
+            read_pair(*a.get(k), locate(where, "points[" + std::to_string(k) + "]", *a.get(k)), constants, x, y);
             p.px.push_back(x);
             p.py.push_back(y);
         }
@@ -82,7 +83,7 @@ SidePiece parse_piece(const toml::table &table, const Location &where, const std
         read_point_file(path, p.points_at, p.px, p.py);
     }
     if (f.has("share")) {
-        p.share = f.number("share", {});
+        p.share = f.number("share", constants);
         if (!(p.share > 0 && p.share < 1)) throw Failure(EXIT_CASE, f.at("share").str() + ": must be in (0, 1)");
     }
     return p;
@@ -115,13 +116,13 @@ const std::vector<std::pair<std::string, int>> &side_names(int topology) {
 }
 
 SideSpec parse_side(const toml::node &node, int side, const std::string &name, const Location &where,
-                    const std::string &dir) {
+                    const std::string &dir, const Constants &constants) {
     SideSpec spec;
     spec.side = side;
     spec.name = name;
     spec.where = where;
     if (const toml::table *t = node.as_table()) {
-        spec.pieces.push_back(parse_piece(*t, where, dir));
+        spec.pieces.push_back(parse_piece(*t, where, dir, constants));
     } else if (const toml::array *a = node.as_array()) {
         if (a->empty()) throw Failure(EXIT_CASE, where.str() + ": an empty list of pieces");
         for (std::size_t k = 0; k < a->size(); ++k) {
@@ -131,7 +132,7 @@ SideSpec parse_side(const toml::node &node, int side, const std::string &name, c
             l.line = static_cast<int>(e.source().begin.line);
             l.column = static_cast<int>(e.source().begin.column);
             if (!e.is_table()) throw Failure(EXIT_CASE, l.str() + ": expected a table, found " + type_name(e));
-            spec.pieces.push_back(parse_piece(*e.as_table(), l, dir));
+            spec.pieces.push_back(parse_piece(*e.as_table(), l, dir, constants));
         }
     } else {
         throw Failure(EXIT_CASE, where.str() + ": expected a table (or an array of tables), found " + type_name(node));

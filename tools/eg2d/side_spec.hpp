@@ -35,9 +35,10 @@ struct SideSpec {
 // The side names of a topology, in EG2D_SIDE_* order (e.g. bottom right top left).
 const std::vector<std::pair<std::string, int>> &side_names(int topology);
 
-// Parses `sides.NAME` (a table or an array of tables). `dir` resolves point files.
+// Parses `sides.NAME` (a table or an array of tables). `dir` resolves point files;
+// numbers (points, share) may be formulas of the constants.
 SideSpec parse_side(const toml::node &node, int side, const std::string &name, const Location &where,
-                    const std::string &dir);
+                    const std::string &dir, const Constants &constants);
 
 // The n nodes of a side. closed: the side is a closed curve (O-grid), so the last
 // node is snapped onto the first when they agree to roundoff.
