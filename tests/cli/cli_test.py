@@ -99,7 +99,8 @@ class ErrorMessages(unittest.TestCase):
 
     def test_unknown_key_in_a_side(self):
         self.check('size = [9, 9]\n' + self.GOOD_SIDES + 'z = "1"\n', 3,
-                   "CASE:15:1: key 'sides.left.z': unknown key (expected one of: x, y, points, file, share)")
+                   "CASE:15:1: key 'sides.left.z': unknown key (expected one of: x, y, points, file, naca, "
+                   "airfoil, curve, closed_te, distribution, reverse, share)")
 
     def test_wrong_type(self):
         self.check('size = [9, 9]\n[solver]\ntolerance = true\n' + self.GOOD_SIDES, 3,
@@ -177,6 +178,9 @@ class ErrorMessages(unittest.TestCase):
         for name in missing:
             self.check(f'size = [9, 9]\n[solver]\nmethod = "{name}"\n' + self.GOOD_SIDES, 9,
                        f"CASE:3:10: key 'solver.method': \"{name}\" is not available in this build of eg2d")
+        if not features()["geometry"]["curves"]:
+            self.check('size = [9, 9]\n' + self.GOOD_SIDES.replace('y = "1"', 'y = "1"\ndistribution = "uniform"'), 9,
+                       "CASE:12:16: key 'sides.top.distribution': is not available in this build of eg2d")
         self.check('size = [9, 9]\n[solver]\nmethod = "sor"\n' + self.GOOD_SIDES, 3,
                    "CASE:3:10: key 'solver.method': \"sor\" is not one of: psor, lsor, af, nested, multigrid")
 

@@ -60,6 +60,15 @@ const std::vector<Feature> &controls() {
     return t;
 }
 
+const std::vector<Feature> &geometry() {
+#ifdef EG2D_DIST_VINOKUR
+    static const std::vector<Feature> t = {{"curves", 0, true}};
+#else
+    static const std::vector<Feature> t = {{"curves", 0, false}};
+#endif
+    return t;
+}
+
 const std::vector<Feature> &formats() {
     static const std::vector<Feature> t = {
 #ifdef EG2D_FORMAT_PLOT3D

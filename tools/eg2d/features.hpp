@@ -20,6 +20,7 @@ const std::vector<Feature> &parameters();     // [solver] keys that are EG2D_PAR
 const std::vector<Feature> &orthogonality();  // [controls] orthogonality
 const std::vector<Feature> &controls();       // the other [controls] keys
 const std::vector<Feature> &formats();        // [output] formats
+const std::vector<Feature> &geometry();       // curves and distributions on sides
 const std::vector<Feature> &systems();
 const std::vector<Feature> &topologies();
 const std::vector<Feature> &initializers();

@@ -146,6 +146,7 @@ void print_features() {
     line("solvers:", solvers());
     line("orthogonality:", orthogonality());
     line("controls:", controls());
+    line("geometry:", geometry());
     line("formats:", formats());
 }
 

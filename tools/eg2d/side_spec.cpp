@@ -10,13 +10,15 @@
 #include <sstream>
 
 #include "failure.hpp"
+#include "piece_curve.hpp"
 #include "toml_fields.hpp"
 
 namespace eg2dtool {
 
 namespace {
 
-const std::vector<std::string> piece_keys = {"x", "y", "points", "file", "share"};
+const std::vector<std::string> piece_keys = {"x",        "y",     "points",       "file",    "naca",  "airfoil",
+                                             "curve",    "closed_te", "distribution", "reverse", "share"};
 
 std::string point(double x, double y) {
     std::ostringstream s;
@@ -56,11 +58,15 @@ SidePiece parse_piece(const toml::table &table, const Location &where, const std
                       const Constants &constants) {
     Fields f(table, where, piece_keys);
     f.finish();
+    if (!curves_available())
+        for (const char *k : {"naca", "airfoil", "curve", "closed_te", "distribution"})
+            if (f.has(k)) throw Failure(EXIT_UNSUPPORTED, f.at(k).str() + ": is not available in this build of eg2d");
     SidePiece p;
     p.where = where;
-    const int kinds = (f.has("x") || f.has("y")) + f.has("points") + f.has("file");
+    const int kinds = (f.has("x") || f.has("y")) + f.has("points") + f.has("file") + f.has("naca") + f.has("airfoil");
     if (kinds != 1)
-        throw Failure(EXIT_CASE, where.str() + ": give exactly one of: x and y (formulas in s), points, file");
+        throw Failure(EXIT_CASE, where.str() + ": give exactly one of: x and y (formulas in s), points, file, naca, airfoil");
+    auto relative = [&](std::string path) { return path.empty() || path[0] == '/' || dir.empty() ? path : dir + "/" + path; };
     if (f.has("x") || f.has("y")) {
         p.x = f.text("x");
         p.y = f.text("y");
@@ -76,12 +82,23 @@ SidePiece parse_piece(const toml::table &table, const Location &where, const std
             p.py.push_back(y);
         }
         if (p.px.size() < 2) throw Failure(EXIT_CASE, p.points_at.str() + ": at least 2 points are needed");
-    } else {
-        std::string path = f.text("file");
-        if (!path.empty() && path[0] != '/' && !dir.empty()) path = dir + "/" + path;
+    } else if (f.has("file")) {
         p.points_at = f.at("file");
-        read_point_file(path, p.points_at, p.px, p.py);
+        read_point_file(relative(f.text("file")), p.points_at, p.px, p.py);
+    } else if (f.has("naca")) {
+        p.naca = f.text("naca");
+        p.closed_te = f.boolean("closed_te", true);
+    } else {
+        p.airfoil = relative(f.text("airfoil"));
+        p.points_at = f.at("airfoil");
     }
+    if (f.has("closed_te") && p.naca.empty()) throw Failure(EXIT_CASE, f.at("closed_te").str() + ": belongs to a naca piece");
+    if (f.has("curve")) {
+        if (p.px.empty()) throw Failure(EXIT_CASE, f.at("curve").str() + ": belongs to a points or file piece");
+        p.curve = f.choice("curve", "", {"polyline", "spline"});
+    }
+    if (f.has("distribution")) p.distribution = parse_distribution(*f.node("distribution"), f.at("distribution"), constants);
+    p.reverse = f.boolean("reverse", false);
     if (f.has("share")) {
         p.share = f.number("share", constants);
         if (!(p.share > 0 && p.share < 1)) throw Failure(EXIT_CASE, f.at("share").str() + ": must be in (0, 1)");
@@ -89,20 +106,40 @@ SidePiece parse_piece(const toml::table &table, const Location &where, const std
     return p;
 }
 
-// Sampled length of a piece (to split a side's intervals in proportion when no share is given).
-double piece_length(const SidePiece &p, const Formula *fx, const Formula *fy) {
-    double len = 0;
-    if (fx) {
-        double x0 = (*fx)({0.0}), y0 = (*fy)({0.0});
-        for (int k = 1; k <= 256; ++k) {
-            const double s = k / 256.0, x1 = (*fx)({s}), y1 = (*fy)({s});
-            len += std::hypot(x1 - x0, y1 - y0);
-            x0 = x1;
-            y0 = y1;
+// count nodes of one piece: a library curve with a distribution, a formula at equal
+// steps of s, or the points themselves (whose number must be `count`).
+void piece_nodes(const SidePiece &p, int count, int side_n, bool alone, const Constants &constants,
+                 std::vector<double> &x, std::vector<double> &y) {
+    if (needs_curve(p)) {
+        curve_nodes(p, count, constants, x, y);
+    } else if (!p.x.empty()) {
+        const Formula fx(p.x, {"s"}, constants, p.x_at), fy(p.y, {"s"}, constants, p.y_at);
+        x.resize(static_cast<std::size_t>(count));
+        y.resize(x.size());
+        for (int q = 0; q < count; ++q) {
+            const double s = static_cast<double>(q) / (count - 1);
+            x[static_cast<std::size_t>(q)] = fx({s});
+            y[static_cast<std::size_t>(q)] = fy({s});
         }
     } else {
-        for (std::size_t k = 1; k < p.px.size(); ++k) len += std::hypot(p.px[k] - p.px[k - 1], p.py[k] - p.py[k - 1]);
+        if (static_cast<int>(p.px.size()) != count) {
+            const std::string need = alone ? "this side needs " + std::to_string(side_n) + " (size " + std::to_string(side_n) + ")"
+                                           : "this piece has " + std::to_string(count) + " nodes of the side's " +
+                                                 std::to_string(side_n);
+            throw Failure(EXIT_CASE, p.points_at.str() + ": " + std::to_string(p.px.size()) + " points given, but " + need);
+        }
+        x = p.px;
+        y = p.py;
     }
+    if (p.reverse) {
+        std::reverse(x.begin(), x.end());
+        std::reverse(y.begin(), y.end());
+    }
+}
+
+double polyline_length(const std::vector<double> &x, const std::vector<double> &y) {
+    double len = 0;
+    for (std::size_t k = 1; k < x.size(); ++k) len += std::hypot(x[k] - x[k - 1], y[k] - y[k - 1]);
     return len;
 }
 
@@ -151,24 +188,21 @@ SideSpec parse_side(const toml::node &node, int side, const std::string &name, c
 void side_nodes(const SideSpec &spec, int n, bool closed, const Constants &constants, std::vector<double> &x,
                 std::vector<double> &y) {
     const std::size_t m = spec.pieces.size();
-    std::vector<Formula> fx, fy;
-    std::vector<double> weight(m);
-    for (std::size_t k = 0; k < m; ++k) {
-        const SidePiece &p = spec.pieces[k];
-        if (!p.x.empty()) {
-            fx.emplace_back(p.x, std::vector<std::string>{"s"}, constants, p.x_at);
-            fy.emplace_back(p.y, std::vector<std::string>{"s"}, constants, p.y_at);
-        }
-    }
     // Intervals per piece: by share, else by length, rounded cumulatively (as seed 000's
     // listing splits a side: round(nj*k/10)).
-    std::size_t f = 0;
+    std::vector<double> weight(m);
     double total = 0;
     for (std::size_t k = 0; k < m; ++k) {
         const SidePiece &p = spec.pieces[k];
-        const bool formula = !p.x.empty();
-        weight[k] = p.share > 0 ? p.share : piece_length(p, formula ? &fx[f] : nullptr, formula ? &fy[f] : nullptr);
-        if (formula) ++f;
+        if (p.share > 0) {
+            weight[k] = p.share;
+        } else if (!p.px.empty() && !needs_curve(p)) {
+            weight[k] = polyline_length(p.px, p.py);
+        } else {
+            std::vector<double> sx, sy;
+            piece_nodes(p, 257, n, m == 1, constants, sx, sy);
+            weight[k] = polyline_length(sx, sy);
+        }
         total += weight[k];
     }
     std::vector<int> cut(m + 1, 0);
@@ -182,44 +216,21 @@ void side_nodes(const SideSpec &spec, int n, bool closed, const Constants &const
     }
     x.assign(static_cast<std::size_t>(n), 0);
     y.assign(static_cast<std::size_t>(n), 0);
-    f = 0;
     for (std::size_t k = 0; k < m; ++k) {
         const SidePiece &p = spec.pieces[k];
-        const int a = cut[k], intervals = cut[k + 1] - cut[k];
-        double x0 = 0, y0 = 0;  // the piece's first point, which must meet the previous piece's last
-        if (!p.x.empty()) {
-            for (int q = 0; q <= intervals; ++q) {
-                const double s = static_cast<double>(q) / intervals;
-                const double xv = fx[f]({s}), yv = fy[f]({s});
-                if (q == 0) {
-                    x0 = xv;
-                    y0 = yv;
-                    if (k > 0) continue;
-                }
-                x[static_cast<std::size_t>(a + q)] = xv;
-                y[static_cast<std::size_t>(a + q)] = yv;
-            }
-            ++f;
-        } else {
-            if (static_cast<int>(p.px.size()) != intervals + 1) {
-                std::string need = m == 1 ? "this side needs " + std::to_string(n) + " (size " + std::to_string(n) + ")"
-                                          : "this piece has " + std::to_string(intervals + 1) + " nodes of the side's " +
-                                                std::to_string(n);
-                throw Failure(EXIT_CASE, p.points_at.str() + ": " + std::to_string(p.px.size()) + " points given, but " + need);
-            }
-            x0 = p.px[0];
-            y0 = p.py[0];
-            for (int q = k > 0 ? 1 : 0; q <= intervals; ++q) {
-                x[static_cast<std::size_t>(a + q)] = p.px[static_cast<std::size_t>(q)];
-                y[static_cast<std::size_t>(a + q)] = p.py[static_cast<std::size_t>(q)];
-            }
-        }
-        if (k > 0) {
-            const double xe = x[static_cast<std::size_t>(a)], ye = y[static_cast<std::size_t>(a)];
+        const std::size_t a = static_cast<std::size_t>(cut[k]);
+        std::vector<double> px, py;
+        piece_nodes(p, cut[k + 1] - cut[k] + 1, n, m == 1, constants, px, py);
+        if (k > 0) {  // the piece must start where the previous one ended
+            const double xe = x[a], ye = y[a];
             const double scale = std::max({1.0, std::fabs(xe), std::fabs(ye)});
-            if (std::hypot(x0 - xe, y0 - ye) > 1e-9 * scale)
-                throw Failure(EXIT_CASE, p.where.str() + ": starts at " + point(x0, y0) + " but the previous piece ends at " +
-                                             point(xe, ye));
+            if (std::hypot(px[0] - xe, py[0] - ye) > 1e-9 * scale)
+                throw Failure(EXIT_CASE, p.where.str() + ": starts at " + point(px[0], py[0]) +
+                                             " but the previous piece ends at " + point(xe, ye));
+        }
+        for (std::size_t q = k > 0 ? 1 : 0; q < px.size(); ++q) {
+            x[a + q] = px[q];
+            y[a + q] = py[q];
         }
     }
     if (closed) {

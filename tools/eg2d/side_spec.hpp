@@ -16,12 +16,26 @@ class node;
 
 namespace eg2dtool {
 
+// How nodes are placed along a curve (the library's EG2D_DIST_*, by arc length).
+struct Distribution {
+    bool given = false;  // absent: formula nodes at equal steps of s; points are the nodes
+    int kind = 0;
+    double p1 = 0, p2 = 0;
+    Location where;
+};
+
 struct SidePiece {
     Location where;
     std::string x, y;                  // formulas in s (both or neither)
     Location x_at, y_at;
-    std::vector<double> px, py;        // points (inline or from a file), used as nodes
+    std::vector<double> px, py;        // points (inline or from a file)
     Location points_at;
+    std::string curve;                 // for points: "" (the nodes), "polyline" or "spline"
+    std::string naca;                  // NACA 4-digit section, e.g. "0012"
+    bool closed_te = true;             // NACA: the closed (sharp) trailing edge
+    std::string airfoil;               // path of a Selig/Lednicer airfoil file
+    Distribution distribution;
+    bool reverse = false;              // run the piece from its end to its start
     double share = -1;                 // fraction of the side's intervals; < 0: by length
 };
 

@@ -1,0 +1,27 @@
+// The nodes of a side piece placed by the library's curves and distributions
+// (eg2d_curve_*, eg2d_curve_points): formulas, points, NACA sections and
+// airfoil files, by arc length. Refused as "not available in this build" when
+// the library has no curves.
+#pragma once
+
+#include <vector>
+
+#include "formula.hpp"
+#include "side_spec.hpp"
+
+namespace eg2dtool {
+
+// True when the piece needs a library curve (a distribution, a curve kind, an airfoil).
+bool needs_curve(const SidePiece &piece);
+
+// Whether this build's library has curves (else such keys are "not available").
+bool curves_available();
+
+// The distribution named by a case file: "uniform" or a table {kind = ..., ...}.
+Distribution parse_distribution(const toml::node &node, const Location &where, const Constants &constants);
+
+// n >= 2 nodes of the piece along its curve.
+void curve_nodes(const SidePiece &piece, int n, const Constants &constants, std::vector<double> &x,
+                 std::vector<double> &y);
+
+}  // namespace eg2dtool
