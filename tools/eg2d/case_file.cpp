@@ -72,7 +72,8 @@ void read_sides(const Fields &top, Case &c) {
     f.finish();
     for (const auto &s : valid) {
         if (!f.has(s.first))
-            throw Failure(EXIT_CASE, f.at(s.first).str() + ": missing (a " + (c.topology == EG2D_TOPO_O ? "O-grid" : "single-block") +
+            throw Failure(EXIT_CASE, f.at(s.first).str() + ": missing (a " +
+                                         (c.topology == EG2D_TOPO_O ? "O-grid" : c.topology == EG2D_TOPO_C ? "C-grid" : "single-block") +
                                          " case needs the sides " + join(keys) + ")");
         c.sides.push_back(parse_side(*f.node(s.first), s.second, s.first, f.at(s.first), c.dir, c.constants));
     }

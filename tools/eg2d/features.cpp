@@ -102,7 +102,7 @@ const std::vector<Feature> &topologies() {
     static const std::vector<Feature> t = [] {
         std::vector<Feature> v = {{"single", EG2D_TOPO_SINGLE, true}, {"o", EG2D_TOPO_O, true}, {"c", EG2D_TOPO_C, true}};
         eg2d_grid *g = nullptr;
-        if (eg2d_create(5, 5, &g) == EG2D_OK)
+        if (eg2d_create(9, 9, &g) == EG2D_OK)
             for (auto &f : v) f.available = eg2d_set_topology(g, f.id) == EG2D_OK;
         eg2d_destroy(g);
         return v;

@@ -137,7 +137,7 @@ int run_case(const Case &c, const RunOptions &o) {
     double tolerance = 0;
     eg2d_get_parameter(g, EG2D_PARAM_TOLERANCE, &tolerance);
     std::printf("%s: %d x %d %s grid, %s system, %s solver, tolerance %.3g\n", c.title.c_str(), c.ni, c.nj,
-                c.topology == EG2D_TOPO_O ? "O" : "single-block", name_of(systems(), c.system),
+                c.topology == EG2D_TOPO_O ? "O" : c.topology == EG2D_TOPO_C ? "C" : "single-block", name_of(systems(), c.system),
                 eg2d_solver_name(c.solver), tolerance);
     std::fflush(stdout);
 

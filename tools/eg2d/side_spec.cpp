@@ -149,7 +149,12 @@ const std::vector<std::pair<std::string, int>> &side_names(int topology) {
     static const std::vector<std::pair<std::string, int>> single = {
         {"bottom", EG2D_SIDE_JMIN}, {"right", EG2D_SIDE_IMAX}, {"top", EG2D_SIDE_JMAX}, {"left", EG2D_SIDE_IMIN}};
     static const std::vector<std::pair<std::string, int>> o = {{"inner", EG2D_SIDE_JMIN}, {"outer", EG2D_SIDE_JMAX}};
-    return topology == EG2D_TOPO_O ? o : single;
+    // C-grid: inner = lower wake, body, upper wake; outer = far field; the outflow lines
+    static const std::vector<std::pair<std::string, int>> c = {{"inner", EG2D_SIDE_JMIN},
+                                                               {"outflow_upper", EG2D_SIDE_IMAX},
+                                                               {"outer", EG2D_SIDE_JMAX},
+                                                               {"outflow_lower", EG2D_SIDE_IMIN}};
+    return topology == EG2D_TOPO_O ? o : topology == EG2D_TOPO_C ? c : single;
 }
 
 SideSpec parse_side(const toml::node &node, int side, const std::string &name, const Location &where,
