@@ -60,6 +60,9 @@ EG2D_API int eg2d_set_side_from_file(eg2d_grid *grid, int side, const char *path
                 format("side = %d: not one of EG2D_SIDE_JMIN (0), IMAX (1), JMAX (2), IMIN (3)", side));
         require_ptr(path, "path");
         const Side s = static_cast<Side>(side);
+        if (!grid->gen.grid().has_side(s))
+            fail(Failure::Argument, format("side %s: the %s topology has no such side", side_name(s),
+                                           topology_name(grid->gen.grid().topology())));
         const Points p = read_points(path);
         const int want = grid->gen.grid().side_length(s);
         if (p.x.size() != static_cast<std::size_t>(want))

@@ -115,8 +115,9 @@ bool try_binary(const std::vector<unsigned char> &bytes, bool big_endian, bool m
         total_nodes += nodes(b);
     }
     // The real size follows from the bytes left: every byte must be used.
-    const std::size_t left = c.size() - c.position() - (markers ? 8 * blocks.size() : 0);
-    if (total_nodes == 0 || c.size() - c.position() < (markers ? 8 * blocks.size() : 0)) return false;
+    const std::size_t framing = markers ? 8 * blocks.size() : 0;
+    if (total_nodes == 0 || c.size() - c.position() < framing) return false;
+    const std::size_t left = c.size() - c.position() - framing;
     const std::size_t per = total_nodes * static_cast<std::size_t>(layout.dims);
     if (left % per != 0) return false;
     const std::size_t real = left / per;
@@ -200,17 +201,20 @@ bool numbers(const std::vector<unsigned char> &bytes, std::vector<double> &out, 
             ++s;
             continue;
         }
+        // Fortran may write a D exponent (1.5D+00): read it as E.
+        const char *e = s;
+        while (e < end && !std::isspace(static_cast<unsigned char>(*e)) && *e != ',') ++e;
+        std::string token(s, e);
+        for (char &ch : token)
+            if (ch == 'D' || ch == 'd') ch = 'E';
         char *stop;
-        errno = 0;
-        const double v = std::strtod(s, &stop);
-        if (stop == s || !std::isfinite(v)) {
-            const char *e = s;
-            while (e < end && !std::isspace(static_cast<unsigned char>(*e)) && e - s < 20) ++e;
-            where = format("line %d: \"%s\" is not a number", line, std::string(s, e).c_str());
+        const double v = std::strtod(token.c_str(), &stop);
+        if (stop != token.c_str() + token.size() || !std::isfinite(v)) {
+            where = format("line %d: \"%s\" is not a number", line, std::string(s, e).substr(0, 24).c_str());
             return false;
         }
         out.push_back(v);
-        s = stop;
+        s = e;
     }
     return true;
 }

@@ -130,7 +130,7 @@ static void test_plot3d_multi_block(void **state) {
     (void)state;
     write_text(in_dir("two.x"), "2\n 2 2 1\n 3 2 1\n"
                                 "0 1 0 1  0 0 1 1  0 0 0 0\n"
-                                "5 6 7 5 6 7  0 0 0 2 2 2  3 3 3 3 3 3\n");
+                                "5 6 7.0D+00 5 6 7  0 0 0 2 2 2  3 3 3 3 3 3\n"); /* Fortran's D exponent */
     assert_int_equal(eg2d_read_plot3d(in_dir("two.x"), 1, &format, &nblocks, &ni, &nj, x, y), EG2D_OK);
     assert_int_equal(format, EG2D_FORMAT_PLOT3D_ASCII | EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI);
     assert_int_equal(nblocks, 2);
@@ -344,6 +344,9 @@ static void test_point_file_errors(void **state) {
     assert_contains(eg2d_last_error(g), "p5.txt holds 4 points; side JMIN has 5");
     assert_int_equal(eg2d_set_side_from_file(g, EG2D_SIDE_IMAX, in_dir("p5.txt")), EG2D_OK); /* nj = 4 */
     assert_int_equal(eg2d_set_side_from_file(g, 4, in_dir("p5.txt")), EG2D_ERR_ARGUMENT);
+    assert_int_equal(eg2d_set_topology(g, EG2D_TOPO_O), EG2D_OK);
+    assert_int_equal(eg2d_set_side_from_file(g, EG2D_SIDE_IMIN, in_dir("p5.txt")), EG2D_ERR_ARGUMENT);
+    assert_contains(eg2d_last_error(g), "side IMIN: the O-grid topology has no such side");
     assert_int_equal(eg2d_set_side_from_file(g, EG2D_SIDE_JMIN, in_dir("none.txt")), EG2D_ERR_IO);
     assert_contains(eg2d_last_error(g), "none.txt: cannot open: No such file or directory");
     eg2d_destroy(g);
