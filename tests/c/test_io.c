@@ -171,6 +171,11 @@ static void test_plot3d_read_errors(void **state) {
     assert_int_equal(truncate(in_dir("cut.x"), size - 1), 0);
     assert_int_equal(eg2d_read_plot3d(in_dir("cut.x"), 0, NULL, NULL, NULL, NULL, NULL, NULL), EG2D_ERR_IO);
     assert_contains(eg2d_last_error(NULL), "not a Plot3D grid file");
+    {
+        double xs[4];
+        assert_int_equal(eg2d_read_plot3d(in_dir("cut.x"), 0, NULL, NULL, NULL, NULL, xs, NULL), EG2D_ERR_ARGUMENT);
+        assert_string_equal(eg2d_last_error(NULL), "eg2d_read_plot3d: x and y must both be given or both be NULL");
+    }
     assert_int_equal(eg2d_read_plot3d(NULL, 0, NULL, NULL, NULL, NULL, NULL, NULL), EG2D_ERR_ARGUMENT);
     assert_string_equal(eg2d_last_error(NULL), "eg2d_read_plot3d: path is NULL");
     eg2d_destroy(g);
