@@ -263,6 +263,7 @@ static void test_failed_write_leaves_nothing(void **state) {
     eg2d_destroy(g);
 }
 
+#ifdef EG2D_TEST_HAVE_CGNS
 static void test_cgns_with_plugin(void **state) {
     eg2d_grid *g = converged();
     (void)state;
@@ -272,13 +273,14 @@ static void test_cgns_with_plugin(void **state) {
     assert_contains(eg2d_last_error(g), "No such file or directory");
     eg2d_destroy(g);
 }
+#endif
 
 static void test_cgns_missing_plugin(void **state) {
     eg2d_grid *g = converged();
     (void)state;
     assert_int_equal(eg2d_write(g, in_dir("grid.cgns"), EG2D_FORMAT_CGNS), EG2D_ERR_UNSUPPORTED);
     assert_contains(eg2d_last_error(g), "EG2D_FORMAT_CGNS needs the optional plugin libeg2d_cgns.so");
-    assert_contains(eg2d_last_error(g), "no-such-plugin-dir/libeg2d_cgns.so");
+    if (getenv("EG2D_PLUGIN_DIR")) assert_contains(eg2d_last_error(g), "no-such-plugin-dir/libeg2d_cgns.so");
     assert_false(exists(in_dir("grid.cgns")));
     assert_int_equal(count_files(".eg2d-tmp-"), 0);
     /* The other formats do not need it. */
@@ -374,7 +376,12 @@ int main(int argc, char **argv) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_plot3d_round_trip), cmocka_unit_test(test_plot3d_multi_block),
         cmocka_unit_test(test_plot3d_read_errors), cmocka_unit_test(test_write_errors),
-        cmocka_unit_test(test_failed_write_leaves_nothing), cmocka_unit_test(test_cgns_with_plugin),
+        cmocka_unit_test(test_failed_write_leaves_nothing),
+#ifdef EG2D_TEST_HAVE_CGNS
+        cmocka_unit_test(test_cgns_with_plugin),
+#else
+        cmocka_unit_test(test_cgns_missing_plugin),
+#endif
         cmocka_unit_test(test_point_files), cmocka_unit_test(test_point_file_errors),
     };
     const struct CMUnitTest missing[] = {cmocka_unit_test(test_cgns_missing_plugin)};
