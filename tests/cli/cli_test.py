@@ -7,6 +7,7 @@ progress and Ctrl-C. Run by ctest with /usr/bin/python3:
 import os
 import re
 import signal
+import struct
 import subprocess
 import sys
 import tempfile
@@ -155,13 +156,13 @@ class ErrorMessages(unittest.TestCase):
             with open(os.path.join(d, "left.txt"), "w") as f:
                 f.write("# x y\n0 0\n0 0.5 7\n0 1\n")
             code, _, stderr = run("run", path, "-o", os.path.join(d, "out"))
-            self.assertEqual(stderr, f"eg2d: {d}/left.txt:3: expected two numbers \"x y\" (file named by "
-                                     f"{path}:13:8: key 'sides.left.file')\n")
-            self.assertEqual(code, 3)
+            self.assertEqual(stderr, f"eg2d: {path}:13:8: key 'sides.left.file': eg2d_read_points: {d}/left.txt:3: "
+                                     "\"0 0.5 7\": unexpected \"7\" after the two numbers x y\n")
+            self.assertEqual(code, 8)
             os.remove(os.path.join(d, "left.txt"))
             code, _, stderr = run("run", path, "-o", os.path.join(d, "out"))
-            self.assertEqual(stderr, f"eg2d: {path}:13:8: key 'sides.left.file': cannot read \"{d}/left.txt\": "
-                                     "No such file or directory\n")
+            self.assertEqual(stderr, f"eg2d: {path}:13:8: key 'sides.left.file': eg2d_read_points: {d}/left.txt: "
+                                     "cannot open: No such file or directory\n")
             self.assertEqual(code, 8)
 
     def test_pieces_that_do_not_meet(self):
@@ -287,8 +288,22 @@ class Demo(unittest.TestCase):
             files = sorted(os.listdir(os.path.join(d, "demo-out")))
             self.assertIn("swan.svg", files)
             check_svg(self, os.path.join(d, "demo-out", "swan.svg"))
-            if features()["formats"].get("plot3d"):
-                self.assertIn("swan.xyz", files)
+            self.assertEqual(files, ["swan.svg", "swan.vts", "swan.xyz"])
+            # 2D Plot3D, Fortran unformatted: [8] ni nj [8], [16 ni nj] x y [16 ni nj]
+            with open(os.path.join(d, "demo-out", "swan.xyz"), "rb") as f:
+                data = f.read()
+            self.assertEqual(len(data), 4 + 8 + 4 + 4 + 16 * 65 * 65 + 4)
+            self.assertEqual(struct.unpack("<iiii", data[:16]), (8, 65, 65, 8))
+            x = struct.unpack("<%dd" % (65 * 65), data[20:20 + 8 * 65 * 65])
+            self.assertEqual((min(x), max(x)), (0.0, 1.5))  # the swan's right side bulges to x = 1.5
+
+    def test_picture_coloured_by_quality(self):
+        """[output] svg_quality colours every cell: one polygon per cell."""
+        with tempfile.TemporaryDirectory() as d:
+            code, out, err = run("demo", "antenna", "-o", d, "--size", "21x11", "--quiet")
+            self.assertEqual(code, 0, out + err)
+            root = ET.parse(os.path.join(d, "antenna.svg")).getroot()
+            self.assertEqual(len(list(root.iter("{http://www.w3.org/2000/svg}polygon"))), 20 * 10)
 
     def test_list_is_the_examples(self):
         code, out, _ = run("demo", "--list")

@@ -146,8 +146,16 @@ void read_output(const Fields &top, Case &c, const std::string &stem) {
     std::string name = stem;
     std::vector<std::pair<std::string, Location>> wanted;
     if (top.has("output")) {
-        Fields f(top.table("output"), top.at("output"), {"name", "formats"});
+        Fields f(top.table("output"), top.at("output"), {"name", "formats", "svg_quality"});
         f.finish();
+        if (f.has("svg_quality")) {  // colour the picture's cells by a per-cell metric
+            static const std::vector<Feature> metrics = {
+                {"folded", EG2D_QUALITY_FOLDED_CELLS, true},     {"area", EG2D_QUALITY_MIN_AREA, true},
+                {"skewness", EG2D_QUALITY_SKEWNESS, true},        {"aspect_ratio", EG2D_QUALITY_ASPECT_RATIO, true},
+                {"smoothness_i", EG2D_QUALITY_SMOOTHNESS_I, true}, {"smoothness_j", EG2D_QUALITY_SMOOTHNESS_J, true}};
+            c.svg_quality = pick_key(f, "svg_quality", "", metrics).id;
+            c.svg_quality_at = f.at("svg_quality");
+        }
         name = f.text("name", stem);
         if (name.empty() || name.find('/') != std::string::npos)
             throw Failure(EXIT_CASE, f.at("name").str() + ": a file name without '/' is required");

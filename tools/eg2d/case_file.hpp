@@ -61,6 +61,8 @@ struct Case {
     std::string source_p, source_q;  // formulas in i, j, ni, nj ("" = none)
     Location source_p_at, source_q_at;
     std::vector<OutputFile> outputs;
+    int svg_quality = -1;  // EG2D_QUALITY_* the picture is coloured by; -1: none
+    Location svg_quality_at;
 };
 
 // Reads a case from TOML text; `file` names it in messages, `dir` resolves relative

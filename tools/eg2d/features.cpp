@@ -71,22 +71,13 @@ const std::vector<Feature> &geometry() {
 
 const std::vector<Feature> &formats() {
     static const std::vector<Feature> t = {
-#ifdef EG2D_FORMAT_PLOT3D
         {"plot3d", EG2D_FORMAT_PLOT3D, true, ".xyz"},
         {"plot3d-ascii", EG2D_FORMAT_PLOT3D_ASCII, true, ".p3d"},
         {"vts", EG2D_FORMAT_VTS, true, ".vts"},
         {"cgns", EG2D_FORMAT_CGNS, true, ".cgns"},
         {"gmv", EG2D_FORMAT_GMV, true, ".gmv"},
         {"matlab", EG2D_FORMAT_MATLAB, true, ".m"},
-#else
-        {"plot3d", -1, false, ".xyz"}, {"plot3d-ascii", -1, false, ".p3d"}, {"vts", -1, false, ".vts"},
-        {"cgns", -1, false, ".cgns"}, {"gmv", -1, false, ".gmv"}, {"matlab", -1, false, ".m"},
-#endif
-#ifdef EG2D_FORMAT_SVG
         {"svg", EG2D_FORMAT_SVG, true, ".svg"},
-#else
-        {"svg", -1, true, ".svg"},  // the tool's own picture writer (svg_picture.cpp) until the library has one
-#endif
     };
     return t;
 }

@@ -13,7 +13,6 @@
 #include "failure.hpp"
 #include "features.hpp"
 #include "progress.hpp"
-#include "svg_picture.hpp"
 
 namespace eg2dtool {
 
@@ -88,28 +87,37 @@ void apply_controls(eg2d_grid *g, const Case &c) {
 #endif
 }
 
-void print_quality(eg2d_grid *g) {
-    double folded = 0, min_area = 0;
-    eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &folded);
-    eg2d_get_quality(g, EG2D_QUALITY_MIN_AREA, &min_area);
-    std::printf("quality: %.0f folded cells, min cell area %.4g\n", folded, min_area);
+// The quality summary: the library's metrics (EG2D_QUALITY_*), orthogonality at each side.
+void print_quality(eg2d_grid *g, int topology) {
+    auto q = [g](int metric) {
+        double v = 0;
+        eg2d_get_quality(g, metric, &v);
+        return v;
+    };
+    std::printf("quality: %.0f folded cells, cell area %.4g to %.4g, skewness max %.2f deg, aspect ratio max %.3g,\n"
+                "         smoothness max %.3g (i) %.3g (j)\n",
+                q(EG2D_QUALITY_FOLDED_CELLS), q(EG2D_QUALITY_MIN_AREA), q(EG2D_QUALITY_MAX_AREA),
+                q(EG2D_QUALITY_SKEWNESS), q(EG2D_QUALITY_ASPECT_RATIO), q(EG2D_QUALITY_SMOOTHNESS_I),
+                q(EG2D_QUALITY_SMOOTHNESS_J));
+    // orthogonality at the sides the topology has, named as in the case file
+    static const int max_metric[] = {EG2D_QUALITY_ORTHO_MAX_JMIN, EG2D_QUALITY_ORTHO_MAX_IMAX,
+                                     EG2D_QUALITY_ORTHO_MAX_JMAX, EG2D_QUALITY_ORTHO_MAX_IMIN};
+    static const int mean_metric[] = {EG2D_QUALITY_ORTHO_MEAN_JMIN, EG2D_QUALITY_ORTHO_MEAN_IMAX,
+                                      EG2D_QUALITY_ORTHO_MEAN_JMAX, EG2D_QUALITY_ORTHO_MEAN_IMIN};
+    std::printf("orthogonality at the sides (deviation from 90 deg, max/mean):");
+    for (const auto &s : side_names(topology))
+        std::printf(" %s %.2f/%.2f", s.first.c_str(), q(max_metric[s.second]), q(mean_metric[s.second]));
+    std::printf("\n");
 }
 
 void write_outputs(eg2d_grid *g, const Case &c, const RunOptions &o) {
     make_directory(o.out_dir);
+    if (c.svg_quality >= 0) check(g, eg2d_set_parameter(g, EG2D_PARAM_SVG_QUALITY, c.svg_quality), c.svg_quality_at);
     for (const auto &out : c.outputs) {
         if (Progress::interrupted()) throw Failure(EXIT_INTERRUPTED, "interrupted: no further files written");
         const std::string path = o.out_dir + "/" + out.name;
-        if (out.format < 0) {  // the tool's own SVG picture (until the library writes SVG)
-            std::vector<double> x(static_cast<std::size_t>(c.ni) * c.nj), y(x.size());
-            check(g, eg2d_get_coordinates(g, x.data(), y.data()), out.where);
-            const std::string reason = write_svg_picture(path, c.ni, c.nj, x, y);
-            if (!reason.empty()) throw Failure(EXIT_IO, path + ": cannot write: " + reason);
-        } else {
-#ifdef EG2D_FORMAT_PLOT3D
-            check(g, eg2d_write(g, path.c_str(), out.format), out.where);
-#endif
-        }
+        // the library writes to a temporary name and renames: never a half-written file
+        check(g, eg2d_write(g, path.c_str(), out.format), out.where);
         std::printf("wrote %s\n", path.c_str());
     }
 }
@@ -161,7 +169,7 @@ int run_case(const Case &c, const RunOptions &o) {
     }
     if (status == EG2D_OK)
         std::printf("converged in %d iterations, residual %.3e, %.2f s\n", iterations, residual, seconds);
-    print_quality(g);
+    print_quality(g, c.topology);
     if (status != EG2D_OK)
         throw Failure(exit_code_for_status(status), c.file + ": " + eg2d_last_error(g) + " (no files written)");
     write_outputs(g, c, o);

@@ -2,11 +2,8 @@
 
 #include <eg2d.h>
 
-#include <cerrno>
 #include <algorithm>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <sstream>
 
 #include "failure.hpp"
@@ -27,30 +24,17 @@ std::string point(double x, double y) {
     return s.str();
 }
 
-// A two-column text file "x y" per line ('#' starts a comment; commas allowed).
+// A point file through the library's reader (eg2d_read_points: "x y" per line).
 void read_point_file(const std::string &path, const Location &where, std::vector<double> &px,
                      std::vector<double> &py) {
-    std::ifstream in(path);
-    if (!in) throw Failure(EXIT_IO, where.str() + ": cannot read \"" + path + "\": " + std::strerror(errno));
-    std::string line;
-    for (int number = 1; std::getline(in, line); ++number) {
-        line = line.substr(0, line.find('#'));
-        for (char &ch : line)
-            if (ch == ',' || ch == '\t' || ch == '\r') ch = ' ';
-        std::istringstream s(line);
-        double x, y;
-        std::string rest;
-        if (!(s >> x)) {
-            if (line.find_first_not_of(' ') == std::string::npos) continue;  // blank
-            throw Failure(EXIT_CASE, path + ":" + std::to_string(number) + ": expected two numbers \"x y\" (file named by " +
-                                         where.str() + ")");
-        }
-        if (!(s >> y) || (s >> rest) || !std::isfinite(x) || !std::isfinite(y))
-            throw Failure(EXIT_CASE, path + ":" + std::to_string(number) + ": expected two numbers \"x y\" (file named by " +
-                                         where.str() + ")");
-        px.push_back(x);
-        py.push_back(y);
+    int n = 0;
+    int status = eg2d_read_points(path.c_str(), 0, &n, nullptr, nullptr);
+    if (status == EG2D_OK) {
+        px.resize(static_cast<std::size_t>(n));
+        py.resize(px.size());
+        status = eg2d_read_points(path.c_str(), n, &n, px.data(), py.data());
     }
+    if (status != EG2D_OK) throw Failure(exit_code_for_status(status), where.str() + ": " + eg2d_last_error(nullptr));
     if (px.size() < 2) throw Failure(EXIT_CASE, where.str() + ": \"" + path + "\" holds fewer than 2 points");
 }
 
