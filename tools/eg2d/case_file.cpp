@@ -18,8 +18,8 @@ namespace {
 
 const std::vector<std::string> top_keys = {"title", "size", "topology", "system", "initial", "constants",
                                            "solver", "sides", "controls", "output"};
-const std::vector<std::string> controls_keys = {"orthogonality", "wall_spacing", "line_source", "point_source",
-                                                "source_arrays"};
+const std::vector<std::string> controls_keys = {"orthogonality", "wall_spacing",  "line_source", "point_source",
+                                                "source_arrays", "parameter_grid", "weight"};
 
 // A name of `table`, or EXIT_CASE (unknown) / EXIT_UNSUPPORTED (not in this build).
 const Feature &pick(const std::vector<Feature> &table, const std::string &name, const Location &at) {
@@ -43,24 +43,34 @@ void check_size(long ni, long nj, const Location &at) {
                                      ", " + std::to_string(nj) + "]");
 }
 
+// The keys of `section` that are EG2D_PARAM_* settings.
+std::vector<std::string> parameter_keys(const char *section) {
+    std::vector<std::string> keys;
+    for (const auto &p : parameters())
+        if (!std::strcmp(p.section, section)) keys.push_back(p.name);
+    return keys;
+}
+
+void read_parameters(const Fields &f, const char *section, Case &c) {
+    for (const auto &p : parameters()) {
+        if (std::strcmp(p.section, section) || !f.has(p.name)) continue;
+        if (!p.available)
+            throw Failure(EXIT_UNSUPPORTED, f.at(p.name).str() + ": is not available in this build of eg2d");
+        const double v = f.node(p.name)->is_boolean() ? (f.boolean(p.name, true) ? 1 : 0) : f.number(p.name, c.constants);
+        c.parameters.push_back({p.id, v, f.at(p.name)});
+    }
+}
+
 void read_solver(const Fields &top, Case &c) {
     if (!top.has("solver")) return;
     std::vector<std::string> keys = {"method"};
-    for (const auto &p : parameters()) keys.push_back(p.name);
-    const Location where = top.at("solver");
-    Fields f(top.table("solver"), where, keys);
+    for (const auto &k : parameter_keys("solver")) keys.push_back(k);
+    Fields f(top.table("solver"), top.at("solver"), keys);
     f.finish();
     const Feature &s = pick_key(f, "method", "psor", solvers());
     c.solver = s.id;
     c.solver_at = f.at("method");
-    for (const auto &p : parameters()) {
-        if (!f.has(p.name)) continue;
-        if (!p.available)
-            throw Failure(EXIT_UNSUPPORTED, f.at(p.name).str() + ": is not available in this build of eg2d");
-        double v = p.id == EG2D_PARAM_FOLD_CHECK && f.node(p.name)->is_boolean() ? (f.boolean(p.name, true) ? 1 : 0)
-                                                                                   : f.number(p.name, c.constants);
-        c.parameters.push_back({p.id, v, f.at(p.name)});
-    }
+    read_parameters(f, "solver", c);
 }
 
 void read_sides(const Fields &top, Case &c) {
@@ -81,8 +91,11 @@ void read_sides(const Fields &top, Case &c) {
 
 void read_controls(const Fields &top, Case &c) {
     if (!top.has("controls")) return;
-    Fields f(top.table("controls"), top.at("controls"), controls_keys);
+    std::vector<std::string> keys = controls_keys;
+    for (const auto &k : parameter_keys("controls")) keys.push_back(k);
+    Fields f(top.table("controls"), top.at("controls"), keys);
     f.finish();
+    read_parameters(f, "controls", c);
     if (f.has("orthogonality")) {
         c.orthogonality = pick_key(f, "orthogonality", "none", orthogonality()).id;
         c.orthogonality_at = f.at("orthogonality");
@@ -138,6 +151,29 @@ void read_controls(const Fields &top, Case &c) {
         // compile now, so that a bad formula is reported before any work
         Formula(c.source_p, {"i", "j"}, c.constants, c.source_p_at);
         Formula(c.source_q, {"i", "j"}, c.constants, c.source_q_at);
+    }
+    if (f.has("weight")) {
+        c.weight = f.text("weight");
+        c.weight_at = f.at("weight");
+        Formula(c.weight, {"i", "j"}, c.constants, c.weight_at);
+    }
+    if (f.has("parameter_grid")) {  // seed 002: a tensor grid of clustering maps
+        Fields g(f.table("parameter_grid"), f.at("parameter_grid"), {"i", "j"});
+        g.finish();
+        for (const char *dir : {"i", "j"}) {
+            Clustering &k = dir[0] == 'i' ? c.cluster_i : c.cluster_j;
+            k.where = g.at(dir);
+            if (!g.has(dir)) continue;  // uniform in that direction
+            Fields m(g.table(dir), k.where, {"kind", "a", "b", "strength"});
+            m.finish();
+            const std::string kind = m.choice("kind", "", {"uniform", "line", "two_lines", "boundaries"});
+            k.kind = kind == "uniform" ? -1 : kind == "line" ? EG2D_CLUSTER_LINE
+                                            : kind == "two_lines" ? EG2D_CLUSTER_TWO_LINES : EG2D_CLUSTER_BOUNDARIES;
+            k.a = m.number("a", 0.5, c.constants);
+            k.b = m.number("b", 0, c.constants);
+            k.strength = m.number("strength", 0, c.constants);
+        }
+        c.parameter_grid = true;
     }
 #endif
 }
@@ -196,7 +232,9 @@ Case read_case(const std::string &text, const std::string &file, const std::stri
     c.file = file;
     c.dir = dir;
     const Location where{file, "", 1, 1};
-    Fields top(root, where, top_keys);
+    std::vector<std::string> top_level = top_keys;
+    for (const auto &k : parameter_keys("top")) top_level.push_back(k);
+    Fields top(root, where, top_level);
     top.finish();
     c.title = top.text("title", stem_of(file));
 
@@ -234,6 +272,7 @@ Case read_case(const std::string &text, const std::string &file, const std::stri
     c.topology_at = top.at("topology");
     c.system_at = top.at("system");
     c.initial_at = top.at("initial");
+    read_parameters(top, "top", c);
     read_solver(top, c);
     read_sides(top, c);
     read_controls(top, c);

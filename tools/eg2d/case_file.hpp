@@ -33,6 +33,12 @@ struct WallSpacing {  // eg2d_set_wall_spacing
     Location where;
 };
 
+struct Clustering {  // seed 002's clustering map in one direction (eg2d_clustering_map)
+    int kind = -1;      // EG2D_CLUSTER_*; -1: uniform
+    double a = 0.5, b = 0, strength = 0;
+    Location where;
+};
+
 struct OutputFile {
     int format;         // EG2D_FORMAT_* (or the tool's own SVG until the library has one)
     std::string name;   // file name, e.g. "swan.svg"
@@ -60,6 +66,10 @@ struct Case {
     std::vector<PointSource> point_sources;
     std::string source_p, source_q;  // formulas in i, j, ni, nj ("" = none)
     Location source_p_at, source_q_at;
+    std::string weight;  // formula in i, j ("" = none): eg2d_set_weight
+    Location weight_at;
+    bool parameter_grid = false;  // seed 002: eg2d_set_parameter_grid from two clustering maps
+    Clustering cluster_i, cluster_j;
     std::vector<OutputFile> outputs;
     int svg_quality = -1;  // EG2D_QUALITY_* the picture is coloured by; -1: none
     Location svg_quality_at;

@@ -20,13 +20,51 @@ const std::vector<Feature> &solvers() {
     return t;
 }
 
+// A parameter whose id is not in this header is listed as not available.
+#define EG2D_PARAM(name, macro, section) {name, macro, true, "", section}
+#define EG2D_NO_PARAM(name, section) {name, -1, false, "", section}
+
 const std::vector<Feature> &parameters() {
     static const std::vector<Feature> t = {
-        EG2D_FEATURE("relaxation", EG2D_PARAM_RELAXATION),
-        EG2D_FEATURE("tolerance", EG2D_PARAM_TOLERANCE),
-        EG2D_FEATURE("max_iterations", EG2D_PARAM_MAX_ITERATIONS),
-        EG2D_FEATURE("divergence_factor", EG2D_PARAM_DIVERGENCE_FACTOR),
-        EG2D_FEATURE("fold_check", EG2D_PARAM_FOLD_CHECK),
+        EG2D_PARAM("relaxation", EG2D_PARAM_RELAXATION, "solver"),
+        EG2D_PARAM("tolerance", EG2D_PARAM_TOLERANCE, "solver"),
+        EG2D_PARAM("max_iterations", EG2D_PARAM_MAX_ITERATIONS, "solver"),
+        EG2D_PARAM("divergence_factor", EG2D_PARAM_DIVERGENCE_FACTOR, "solver"),
+        EG2D_PARAM("fold_check", EG2D_PARAM_FOLD_CHECK, "solver"),
+#ifdef EG2D_PARAM_AF_DTAU_MIN
+        EG2D_PARAM("af_dtau_min", EG2D_PARAM_AF_DTAU_MIN, "solver"),
+        EG2D_PARAM("af_dtau_max", EG2D_PARAM_AF_DTAU_MAX, "solver"),
+        EG2D_PARAM("af_steps", EG2D_PARAM_AF_STEPS, "solver"),
+        EG2D_PARAM("af_a", EG2D_PARAM_AF_A, "solver"),
+        EG2D_PARAM("af_b", EG2D_PARAM_AF_B, "solver"),
+        EG2D_PARAM("af_relaxation", EG2D_PARAM_AF_RELAXATION, "solver"),
+#else
+        EG2D_NO_PARAM("af_dtau_min", "solver"), EG2D_NO_PARAM("af_dtau_max", "solver"),
+        EG2D_NO_PARAM("af_steps", "solver"), EG2D_NO_PARAM("af_a", "solver"), EG2D_NO_PARAM("af_b", "solver"),
+        EG2D_NO_PARAM("af_relaxation", "solver"),
+#endif
+#ifdef EG2D_PARAM_MG_CYCLE
+        EG2D_PARAM("mg_cycle", EG2D_PARAM_MG_CYCLE, "solver"),
+        EG2D_PARAM("mg_pre_smooth", EG2D_PARAM_MG_PRE_SMOOTH, "solver"),
+        EG2D_PARAM("mg_post_smooth", EG2D_PARAM_MG_POST_SMOOTH, "solver"),
+        EG2D_PARAM("mg_fmg", EG2D_PARAM_MG_FMG, "solver"),
+        EG2D_PARAM("mg_coarsest", EG2D_PARAM_MG_COARSEST, "solver"),
+#else
+        EG2D_NO_PARAM("mg_cycle", "solver"), EG2D_NO_PARAM("mg_pre_smooth", "solver"),
+        EG2D_NO_PARAM("mg_post_smooth", "solver"), EG2D_NO_PARAM("mg_fmg", "solver"),
+        EG2D_NO_PARAM("mg_coarsest", "solver"),
+#endif
+#ifdef EG2D_PARAM_WALL_DECAY
+        EG2D_PARAM("wall_decay", EG2D_PARAM_WALL_DECAY, "controls"),
+        EG2D_PARAM("wall_relaxation", EG2D_PARAM_WALL_RELAXATION, "controls"),
+#else
+        EG2D_NO_PARAM("wall_decay", "controls"), EG2D_NO_PARAM("wall_relaxation", "controls"),
+#endif
+#ifdef EG2D_PARAM_HERMITE_SPACING
+        EG2D_PARAM("hermite_spacing", EG2D_PARAM_HERMITE_SPACING, "top"),
+#else
+        EG2D_NO_PARAM("hermite_spacing", "top"),
+#endif
     };
     return t;
 }
@@ -48,8 +86,10 @@ const std::vector<Feature> &controls() {
     static const std::vector<Feature> t = {
 #ifdef EG2D_XI
         {"line_source", 0, true}, {"point_source", 0, true}, {"source_arrays", 0, true},
+        {"parameter_grid", 0, true}, {"weight", 0, true},
 #else
         {"line_source", 0, false}, {"point_source", 0, false}, {"source_arrays", 0, false},
+        {"parameter_grid", 0, false}, {"weight", 0, false},
 #endif
 #ifdef EG2D_ORTHO_WALL
         {"wall_spacing", 0, true},
@@ -102,7 +142,11 @@ const std::vector<Feature> &topologies() {
 }
 
 const std::vector<Feature> &initializers() {
-    static const std::vector<Feature> t = {EG2D_FEATURE("tfi", EG2D_INIT_TFI)};
+#ifdef EG2D_INIT_HERMITE
+    static const std::vector<Feature> t = {EG2D_FEATURE("tfi", EG2D_INIT_TFI), EG2D_FEATURE("hermite", EG2D_INIT_HERMITE)};
+#else
+    static const std::vector<Feature> t = {EG2D_FEATURE("tfi", EG2D_INIT_TFI), EG2D_MISSING("hermite")};
+#endif
     return t;
 }
 

@@ -13,10 +13,11 @@ struct Feature {
     int id;            // the library's constant
     bool available;    // compiled into this build of the tool's library
     const char *extension = "";  // output formats: file name extension
+    const char *section = "solver";  // parameters: the table of the case file that holds them
 };
 
 const std::vector<Feature> &solvers();        // [solver] method
-const std::vector<Feature> &parameters();     // [solver] keys that are EG2D_PARAM_* settings
+const std::vector<Feature> &parameters();     // keys that are EG2D_PARAM_* settings, by section
 const std::vector<Feature> &orthogonality();  // [controls] orthogonality
 const std::vector<Feature> &controls();       // the other [controls] keys
 const std::vector<Feature> &formats();        // [output] formats

@@ -62,7 +62,7 @@ void make_directory(const std::string &dir) {
 }
 
 void apply_controls(eg2d_grid *g, const Case &c) {
-#ifdef EG2D_ORTHO_WALL
+#ifdef EG2D_XI
     if (c.orthogonality >= 0) check(g, eg2d_set_orthogonality(g, c.orthogonality), c.orthogonality_at);
     for (const auto &w : c.wall_spacings) check(g, eg2d_set_wall_spacing(g, w.side, w.height), w.where);
     for (const auto &s : c.line_sources)
@@ -80,6 +80,28 @@ void apply_controls(eg2d_grid *g, const Case &c) {
                 q[k] = fq({double(i), double(j)});
             }
         check(g, eg2d_set_source_arrays(g, p.data(), q.data()), c.source_p_at);
+    }
+    if (!c.weight.empty()) {
+        const Formula fw(c.weight, {"i", "j"}, c.constants, c.weight_at);
+        std::vector<double> w(static_cast<std::size_t>(c.ni) * c.nj);
+        for (int j = 0; j < c.nj; ++j)
+            for (int i = 0; i < c.ni; ++i) w[static_cast<std::size_t>(i) + static_cast<std::size_t>(c.ni) * j] = fw({double(i), double(j)});
+        check(g, eg2d_set_weight(g, w.data()), c.weight_at);
+    }
+    if (c.parameter_grid) {  // seed 002: the tensor grid of two clustering maps
+        auto map = [&](const Clustering &k, int n) {
+            std::vector<double> u(static_cast<std::size_t>(n));
+            if (k.kind < 0) {
+                for (int q = 0; q < n; ++q) u[static_cast<std::size_t>(q)] = static_cast<double>(q) / (n - 1);
+            } else {
+                check(nullptr, eg2d_clustering_map(k.kind, k.a, k.b, k.strength, n, u.data()), k.where);
+            }
+            return u;
+        };
+        const std::vector<double> u = map(c.cluster_i, c.ni), v = map(c.cluster_j, c.nj);
+        std::vector<double> s(static_cast<std::size_t>(c.ni) * c.nj), t(s.size());
+        check(nullptr, eg2d_tensor_parameter_grid(c.ni, c.nj, u.data(), v.data(), s.data(), t.data()), c.cluster_i.where);
+        check(g, eg2d_set_parameter_grid(g, s.data(), t.data()), c.cluster_i.where);
     }
 #else
     (void)g;
