@@ -56,7 +56,9 @@ void read_parameters(const Fields &f, const char *section, Case &c) {
         if (std::strcmp(p.section, section) || !f.has(p.name)) continue;
         if (!p.available)
             throw Failure(EXIT_UNSUPPORTED, f.at(p.name).str() + ": is not available in this build of eg2d");
-        const double v = f.node(p.name)->is_boolean() ? (f.boolean(p.name, true) ? 1 : 0) : f.number(p.name, c.constants);
+        // on/off settings are written true/false (1/0 are accepted too)
+        const bool flag = !std::strcmp(p.name, "fold_check") || !std::strcmp(p.name, "mg_fmg");
+        const double v = flag && f.node(p.name)->is_boolean() ? (f.boolean(p.name, true) ? 1 : 0) : f.number(p.name, c.constants);
         c.parameters.push_back({p.id, v, f.at(p.name)});
     }
 }
