@@ -49,4 +49,11 @@ EOF_C
   (unset EG2D_PLUGIN_DIR; "$work/cgns" "$work/grid.cgns")
   test -s "$work/grid.cgns"
 fi
+
+# The eg2d command is installed with the library and runs from the prefix.
+if [ -x "$prefix/bin/eg2d" ]; then
+  echo "== installed eg2d demo"
+  "$prefix/bin/eg2d" demo -o "$work/demo" --quiet --size 17x17
+  test -s "$work/demo/swan.svg" && test -s "$work/demo/swan.xyz"
+fi
 echo "install consumers: 3 passed, 0 failed"
