@@ -279,6 +279,29 @@ class CommandLine(unittest.TestCase):
             self.assertFalse(os.path.exists(os.path.join(d, "out")))
 
 
+    def test_folded_grid_exit_7(self):
+        # Laplace (Amsden-Hirt) folds the antenna at its reflex corners; Winslow does not
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "case.toml")
+            with open(os.path.join(EXAMPLES, "antenna.toml")) as f:
+                text = f.read().replace('system = "winslow"', 'system = "laplace"')
+            with open(path, "w") as f:
+                f.write(text)
+            code, out, err = run("run", path, "-o", os.path.join(d, "out"), "--quiet")
+            self.assertEqual(code, 7, out + err)
+            self.assertRegex(err, r"^eg2d: .*: eg2d_solve: the converged grid has \d+ folded cells; .*\(no files written\)\n$")
+            self.assertRegex(out, r"quality: [1-9]\d* folded cells")
+            self.assertFalse(os.path.exists(os.path.join(d, "out")))
+
+    def test_unwritable_output_exit_8(self):
+        with tempfile.TemporaryDirectory() as d:
+            blocker = os.path.join(d, "file")
+            open(blocker, "w").close()
+            code, out, err = run("demo", "-o", os.path.join(blocker, "out"), "--quiet", "--size", "9x9")
+            self.assertEqual(code, 8, out + err)
+            self.assertEqual(err, f"eg2d: {blocker}/out: cannot create the output directory: Not a directory\n")
+
+
 class Demo(unittest.TestCase):
     def test_default_demo_writes_a_picture(self):
         with tempfile.TemporaryDirectory() as d:
@@ -324,6 +347,30 @@ class Demo(unittest.TestCase):
 
 
 class Progress(unittest.TestCase):
+    def test_terminal_progress_rewrites_one_line(self):
+        """On a terminal the progress line is rewritten in place (carriage returns, no new lines)."""
+        import pty
+        master, slave = pty.openpty()
+        with tempfile.TemporaryDirectory() as d:
+            p = subprocess.Popen([TOOL, "demo", "-o", d, "--size", "9x9"], stdout=slave, stderr=subprocess.PIPE)
+            os.close(slave)
+            chunks = []
+            while True:
+                try:
+                    chunk = os.read(master, 4096)
+                except OSError:  # the terminal closed: the program ended
+                    break
+                if not chunk:
+                    break
+                chunks.append(chunk)
+            p.wait(timeout=60)
+            os.close(master)
+        text = b"".join(chunks).decode()
+        self.assertEqual(p.returncode, 0)
+        self.assertRegex(text, r"\r  iteration +1  residual \d\.\d{3}e[-+]\d\d  rate -/iteration ")
+        self.assertNotRegex(text, r"\n  iteration")
+        self.assertIn("converged in", text)
+
     def test_plain_progress_lines_and_ctrl_c(self):
         """Not a terminal: plain lines. SIGINT after the first line stops the run, writes nothing, exit 130."""
         with tempfile.TemporaryDirectory() as d:
