@@ -24,7 +24,7 @@ const char *help_text =
     "usage: eg2d run CASE.toml [-o DIR] [--size NIxNJ] [--quiet]\n"
     "       eg2d demo [NAME] [-o DIR] [--size NIxNJ] [--quiet]\n"
     "       eg2d demo --list\n"
-    "       eg2d --help | --version\n"
+    "       eg2d --help | --version      (--version lists what this build offers)\n"
     "\n"
     "Generates a boundary-fitted quadrilateral grid by elliptic PDEs (libeg2d).\n"
     "  run      reads the case file (TOML; see docs/case-files.md), solves, prints a\n"

@@ -171,15 +171,14 @@ int run_case(const Case &c, const RunOptions &o) {
                 eg2d_solver_name(c.solver), tolerance);
     std::fflush(stdout);
 
-    int status;
+    // Ctrl-C is caught from here to the last file written: during the run the
+    // monitor stops it; while writing, the next file is not begun.
+    Progress progress(o.live, o.quiet);
     const auto start = std::chrono::steady_clock::now();
-    {
-        Progress progress(o.live, o.quiet);
-        eg2d_set_monitor(g, &Progress::monitor, &progress);
-        status = eg2d_solve(g);
-        eg2d_set_monitor(g, nullptr, nullptr);
-        progress.finish();
-    }
+    eg2d_set_monitor(g, &Progress::monitor, &progress);
+    const int status = eg2d_solve(g);
+    eg2d_set_monitor(g, nullptr, nullptr);
+    progress.finish();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     int iterations = 0;
     double residual = 0;
