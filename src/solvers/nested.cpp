@@ -15,11 +15,13 @@
 // the interior: of a warm start only the nodes of the coarsest level are used.
 // (Right after interpolation the max-norm residual is larger than a smooth
 // start's, from the kinks of linear interpolation, though the error is
-// smaller; so the residual cannot judge which start is better.)
+// smaller; so the residual cannot judge which start is better.) A start
+// with more folded cells than the grid had is dropped.
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include "quality/quality.hpp"
 #include "solvers/solver.hpp"
 
 namespace eg2d {
@@ -94,6 +96,8 @@ private:
         const int top = coarsest_stride(conn);
         if (top == 1) return;
         const double extent = p.grid.extent();
+        const std::vector<double> start_x = p.grid.x, start_y = p.grid.y;
+        const long folded_before = fold_summary(p.grid).folded;
         const int ni = conn.ni();
         const double target = std::max(p.settings.tolerance, kCoarseTolerance);
         for (int s = top; s > 1; s /= 2) {
@@ -121,6 +125,13 @@ private:
                 }
             interpolate(conn, fine.x, s);
             interpolate(conn, fine.y, s);
+        }
+        // A coarse grid can misrepresent strong control terms (an attraction
+        // that decays within a few fine lines) and fold; such a start is
+        // worse than none.
+        if (fold_summary(p.grid).folded > folded_before) {
+            p.grid.x = start_x;
+            p.grid.y = start_y;
         }
     }
 
