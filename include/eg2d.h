@@ -169,6 +169,19 @@ EG2D_API int eg2d_set_system(eg2d_grid *grid, int system);
 #define EG2D_SOLVER_AF        2  /* approximate factorisation, false transients */
 #define EG2D_SOLVER_NESTED    3  /* coarse-to-fine, seed 000 */
 #define EG2D_SOLVER_MULTIGRID 4  /* FAS multigrid */
+/* What one iteration is, per solver:
+ *   PSOR    one lexicographic point SOR sweep (omega: EG2D_PARAM_RELAXATION).
+ *   AF      one pseudo-time step: a xi and an eta line sweep (see the AF
+ *           parameters below; EG2D_PARAM_RELAXATION does not apply).
+ *   NESTED  one point SOR sweep of the full grid; the first iteration after a
+ *           new start (initialisation, new coordinates, system, controls or
+ *           solver) first converges the equations on every 2^k-th line (k as
+ *           large as ni-1 and nj-1 allow), interpolates linearly to every
+ *           2^(k-1)-th line, and so on down to the full grid (seed 000). This
+ *           start replaces the interior (of a warm start only the coarsest
+ *           nodes are kept) unless it would fold cells. Any ni, nj work; with
+ *           odd ni-1 or nj-1 NESTED is PSOR. EG2D_PARAM_RELAXATION applies on
+ *           every level (automatic: the optimal factor of each level's size). */
 /* Selects a solver; EG2D_ERR_UNSUPPORTED for an id this library lacks. */
 EG2D_API int eg2d_set_solver(eg2d_grid *grid, int solver);
 EG2D_API int eg2d_get_solver(const eg2d_grid *grid, int *solver);

@@ -172,15 +172,8 @@ private:
         if (!periodic) {
             std::copy(row_up_.begin(), row_up_.end(), row_c_.begin());
             solve_tridiagonal(n, row_lo_.data(), row_di_.data(), row_c_.data(), rhs);
-        } else if (n >= 3) {
+        } else {  // an O-grid has ni >= 4: at least three distinct columns
             solve_cyclic_tridiagonal(n, row_lo_.data(), row_di_.data(), row_up_.data(), rhs, work_);
-        } else {  // two distinct columns: each is both neighbours of the other
-            const double a00 = row_di_[0], a01 = row_lo_[0] + row_up_[0];
-            const double a10 = row_lo_[1] + row_up_[1], a11 = row_di_[1];
-            const double det = a00 * a11 - a01 * a10;
-            const double u0 = (rhs[0] * a11 - a01 * rhs[1]) / det, u1 = (a00 * rhs[1] - a10 * rhs[0]) / det;
-            rhs[0] = u0;
-            rhs[1] = u1;
         }
     }
 

@@ -100,6 +100,56 @@ static void test_every_solver_reaches_the_same_grid(void **state) {
             }
 }
 
+/* The smallest grids every solver must take: Laplace reproduces a bilinear
+ * map exactly (NUMERICS.md) at 3x3, 4x3 and 5x4, and the O-grid annulus with
+ * 3 and 4 distinct columns (Laplace) converges to PSOR's grid. */
+static void test_every_solver_on_the_smallest_grids(void **state) {
+    const int sizes[][2] = {{3, 3}, {4, 3}, {5, 4}};
+    int id, k;
+    (void)state;
+    for (id = 0; id < 100; ++id) {
+        if (!eg2d_solver_name(id)) continue;
+        for (k = 0; k < 3; ++k) {
+            const int ni = sizes[k][0], nj = sizes[k][1];
+            eg2d_grid *g;
+            double x0[20], y0[20], x[20], y[20];
+            assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+            assert_int_equal(domain_set(g, "quad"), EG2D_OK);
+            assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK); /* exact for a bilinear map */
+            assert_int_equal(eg2d_get_coordinates(g, x0, y0), EG2D_OK);
+            memcpy(x, x0, sizeof x0);
+            memcpy(y, y0, sizeof y0);
+            x[ni + 1] += 0.1; /* disturb interior node (1, 1) */
+            y[ni + 1] -= 0.05;
+            assert_int_equal(eg2d_set_coordinates(g, x, y), EG2D_OK);
+            assert_int_equal(eg2d_set_system(g, EG2D_SYSTEM_LAPLACE), EG2D_OK);
+            assert_int_equal(eg2d_set_solver(g, id), EG2D_OK);
+            assert_int_equal(eg2d_set_tolerance(g, 1e-14), EG2D_OK);
+            if (eg2d_solve(g) != EG2D_OK) fail_msg("%s %dx%d: %s", eg2d_solver_name(id), ni, nj, eg2d_last_error(g));
+            assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+            assert_true(fmax(max_diff(x, x0, (size_t)(ni * nj)), max_diff(y, y0, (size_t)(ni * nj))) < 1e-12);
+            eg2d_destroy(g);
+        }
+        for (k = 4; k <= 5; ++k) { /* annulus k x 3 (an O-grid has ni >= 4): k-1 distinct columns, folded */
+            double xr[15], yr[15], x[15], y[15];
+            int s;
+            for (s = 0; s < 2; ++s) {
+                eg2d_grid *g;
+                assert_int_equal(eg2d_create(k, 3, &g), EG2D_OK);
+                assert_int_equal(domain_set_annulus(g, 1.0, 3.0), EG2D_OK);
+                assert_int_equal(eg2d_set_solver(g, s ? id : EG2D_SOLVER_PSOR), EG2D_OK);
+                assert_int_equal(eg2d_set_tolerance(g, 1e-13), EG2D_OK);
+                assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_FOLD_CHECK, 0), EG2D_OK);
+                assert_int_equal(eg2d_set_system(g, EG2D_SYSTEM_LAPLACE), EG2D_OK); /* linear: one solution */
+                if (eg2d_solve(g) != EG2D_OK) fail_msg("%s annulus %dx3: %s", eg2d_solver_name(id), k, eg2d_last_error(g));
+                assert_int_equal(eg2d_get_coordinates(g, s ? x : xr, s ? y : yr), EG2D_OK);
+                eg2d_destroy(g);
+            }
+            assert_true(fmax(max_diff(x, xr, (size_t)(3 * k)), max_diff(y, yr, (size_t)(3 * k))) < 1e-10);
+        }
+    }
+}
+
 /*--------------------------------------------------------------------------
  * Divergence: provoked for every solver; EG2D_ERR_DIVERGED, a message that
  * names the solver and the iteration, the grid as before the failing
@@ -402,6 +452,7 @@ static void test_nested_first_iteration_is_a_coarse_to_fine_start(void **state) 
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_every_solver_reaches_the_same_grid),
+        cmocka_unit_test(test_every_solver_on_the_smallest_grids),
         cmocka_unit_test(test_every_solver_divergence_restores_the_grid),
         cmocka_unit_test(test_af_parameters_are_checked),
         cmocka_unit_test(test_af_time_rules_converge_to_the_same_grid),
