@@ -226,7 +226,7 @@ EG2D_API int eg2d_parameter_bounds(int param, double *lower, double *upper, doub
  * with repeated end points (dtau_1 = dtau_2, dtau_(M-1) = dtau_M), and the
  * cycle repeats. Every default works untouched; the automatic values are
  * dtau_max = 4 (n-1)^2 / pi^2 with n = max(ni, nj) (the step that resolves
- * the smoothest mode) and the smallest M whose steps grow by at most 4x. */
+ * the smoothest mode) and the smallest M whose steps grow by at most 2x. */
 #define EG2D_PARAM_AF_DTAU_MIN      100  /* (0, 1e12], default 0.5                       */
 #define EG2D_PARAM_AF_DTAU_MAX      101  /* (0, 1e12], >= dtau_min; 0 = automatic (default) */
 #define EG2D_PARAM_AF_STEPS         102  /* M in [4, 1000]; 0 = automatic (default)       */
