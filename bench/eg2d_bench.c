@@ -310,6 +310,14 @@ int main(int argc, char **argv) {
         for (id = 0; id < 100 && n_solvers < MAX_ITEMS; ++id)
             if (eg2d_solver_name(id)) solver_names[n_solvers++] = eg2d_solver_name(id);
     }
+    for (vi = 0; vi < n_solvers; ++vi) { /* every name must be known before any run */
+        int id, known = 0;
+        for (id = 0; id < 100; ++id) known |= eg2d_solver_name(id) && !strcmp(eg2d_solver_name(id), solver_names[vi]);
+        if (!known) {
+            fprintf(stderr, "no solver %s in this library\n", solver_names[vi]);
+            return 2;
+        }
+    }
     if (json_path && !(json = fopen(json_path, "w"))) {
         perror(json_path);
         return 1;
