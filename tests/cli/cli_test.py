@@ -134,6 +134,13 @@ class ErrorMessages(unittest.TestCase):
         text = 'size = [9, 9]\n' + self.GOOD_SIDES.replace('x = "1"', 'x = "1.25"')
         self.check(text, 4, "CASE:6:1: key 'sides.right': eg2d_set_side: corner JMIN/IMAX: (1, 0) vs (1.25, 0)")
 
+    def test_solver_parameter_out_of_range_from_the_library(self):
+        if not features()["solvers"]["af"]:
+            self.skipTest("this build has no AF solver")
+        self.check('size = [9, 9]\n[solver]\nmethod = "af"\naf_steps = 2\n' + self.GOOD_SIDES, 4,
+                   "CASE:4:12: key 'solver.af_steps': eg2d_set_parameter: af_steps = 2: must be in [4, 1000] "
+                   "(or 0 for automatic)")
+
     def test_toml_syntax(self):
         self.check('size = [9, 9\n', 3, "CASE:1:14: TOML syntax error: Error while parsing array: encountered end-of-file")
 
