@@ -63,8 +63,8 @@ void Generator::initialize(int method) {
         fail(Failure::State, format("the boundary is not complete: side %s not set", missing_sides(grid_).c_str()));
     Grid next(grid_);
     m->fill(next);
-    check_finite("initial x", next.x.data(), next.size());
-    check_finite("initial y", next.y.data(), next.size());
+    check_coordinates("initial x", next.x.data(), next.size());
+    check_coordinates("initial y", next.y.data(), next.size());
     next.mark_initialized();
     grid_ = std::move(next);
     changed_start();

@@ -45,10 +45,14 @@ const char *side_name(Side s) {
     return "?";
 }
 
-void check_finite(const char *what, const double *v, std::size_t n) {
-    for (std::size_t k = 0; k < n; ++k)
+void check_coordinates(const char *what, const double *v, std::size_t n) {
+    for (std::size_t k = 0; k < n; ++k) {
         if (!std::isfinite(v[k]))
             fail(Failure::Argument, format("%s[%zu] = %g: coordinates must be finite", what, k, v[k]));
+        if (std::fabs(v[k]) > kMaxCoordinate)
+            fail(Failure::Argument, format("%s[%zu] = %g: coordinates must be within +-%g (the metric terms "
+                                           "grow as their fourth power)", what, k, v[k], kMaxCoordinate));
+    }
 }
 
 Grid::Grid(int ni, int nj) : ni_(ni), nj_(nj), connectivity_(ni, nj, Topology::Single) {
@@ -159,9 +163,9 @@ void Grid::set_side(Side s, const double *px, const double *py) {
         fail(Failure::Argument, format("side %s: an %s has only the sides JMIN (inner) and JMAX (outer); "
                                        "IMIN/IMAX is its periodic cut", side_name(s), topology_name(topology())));
     const int n = side_length(s);
-    check_finite(s == Side::JMin ? "JMIN x" : s == Side::IMax ? "IMAX x" : s == Side::JMax ? "JMAX x" : "IMIN x",
+    check_coordinates(s == Side::JMin ? "JMIN x" : s == Side::IMax ? "IMAX x" : s == Side::JMax ? "JMAX x" : "IMIN x",
                  px, static_cast<std::size_t>(n));
-    check_finite(s == Side::JMin ? "JMIN y" : s == Side::IMax ? "IMAX y" : s == Side::JMax ? "JMAX y" : "IMIN y",
+    check_coordinates(s == Side::JMin ? "JMIN y" : s == Side::IMax ? "IMAX y" : s == Side::JMax ? "JMAX y" : "IMIN y",
                  py, static_cast<std::size_t>(n));
     if (connectivity_.periodic_i()) check_closed(s, px, py, n);
     else check_corners(s, px, py);
@@ -201,8 +205,8 @@ void Grid::set_boundary(const double *px, const double *py) {
 }
 
 void Grid::set_coordinates(const double *px, const double *py) {
-    check_finite("x", px, size());
-    check_finite("y", py, size());
+    check_coordinates("x", px, size());
+    check_coordinates("y", py, size());
     Grid trial(*this);
     trial.sides_set_ = 0;
     if (connectivity_.periodic_i()) {

@@ -58,7 +58,12 @@ private:
     bool initialized_ = false;
 };
 
-// Checks every value is finite; names the array and the first bad index.
-void check_finite(const char *what, const double *v, std::size_t n);
+// Largest coordinate magnitude accepted: J^2 grows as the fourth power of the
+// coordinates, so much larger values would overflow the metric terms.
+constexpr double kMaxCoordinate = 1e30;
+
+// Checks every value is finite and within +-kMaxCoordinate; names the array
+// and the first bad index.
+void check_coordinates(const char *what, const double *v, std::size_t n);
 
 }  // namespace eg2d
