@@ -33,6 +33,25 @@ inline void require_finite(double v, const char *name) {
     if (!std::isfinite(v)) fail(Failure::Argument, format("%s = %g: must be finite", name, v));
 }
 
+// The status and message of the exception being handled (call inside catch).
+inline int current_failure(std::string &message) noexcept {
+    try {
+        throw;
+    } catch (const Error &e) {
+        message = e.what();
+        return status_of(e.failure());
+    } catch (const std::bad_alloc &) {
+        message = "out of memory";
+        return EG2D_ERR_MEMORY;
+    } catch (const std::exception &e) {
+        message = std::string("internal error: ") + e.what();
+        return EG2D_ERR_ARGUMENT;
+    } catch (...) {
+        message = "internal error: unknown exception";
+        return EG2D_ERR_ARGUMENT;
+    }
+}
+
 // Runs body(); records the message of a failure on the grid (or, for a NULL
 // grid, on the thread) as "function: message" and returns its code.
 template <class Body>
@@ -43,18 +62,8 @@ int guard(const eg2d_grid *grid, const char *function, Body &&body) noexcept {
         if (!grid) fail(Failure::Argument, "grid is NULL");
         body();
         return EG2D_OK;
-    } catch (const Error &e) {
-        status = status_of(e.failure());
-        message = e.what();
-    } catch (const std::bad_alloc &) {
-        status = EG2D_ERR_MEMORY;
-        message = "out of memory";
-    } catch (const std::exception &e) {
-        status = EG2D_ERR_ARGUMENT;
-        message = std::string("internal error: ") + e.what();
     } catch (...) {
-        status = EG2D_ERR_ARGUMENT;
-        message = "internal error: unknown exception";
+        status = current_failure(message);
     }
     try {
         const std::string text = std::string(function) + ": " + message;
@@ -62,6 +71,24 @@ int guard(const eg2d_grid *grid, const char *function, Body &&body) noexcept {
         else set_thread_error(text);
     } catch (...) {
         // No memory for the message: the status code still says what happened.
+    }
+    return status;
+}
+
+// The same for calls without a grid (curves): the message goes to the thread.
+template <class Body>
+int guard_thread(const char *function, Body &&body) noexcept {
+    std::string message;
+    int status = EG2D_OK;
+    try {
+        body();
+        return EG2D_OK;
+    } catch (...) {
+        status = current_failure(message);
+    }
+    try {
+        set_thread_error(std::string(function) + ": " + message);
+    } catch (...) {
     }
     return status;
 }

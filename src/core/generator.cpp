@@ -33,7 +33,6 @@ Generator::Generator(int ni, int nj)
     : grid_(ni, nj), solver_info_(find_solver(EG2D_SOLVER_PSOR)), solver_(solver_info_->make()) {}
 
 void Generator::set_topology(Topology t) {
-    if (t == Topology::C) fail(Failure::Unsupported, "the C-grid topology is not built into this library yet");
     Grid next(grid_);
     next.set_topology(t);
     grid_ = std::move(next);
@@ -62,7 +61,7 @@ void Generator::initialize(int method) {
     if (!grid_.boundary_complete())
         fail(Failure::State, format("the boundary is not complete: side %s not set", missing_sides(grid_).c_str()));
     Grid next(grid_);
-    m->fill(next);
+    m->fill(next, settings);
     check_finite("initial x", next.x.data(), next.size());
     check_finite("initial y", next.y.data(), next.size());
     next.mark_initialized();

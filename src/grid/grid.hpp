@@ -51,6 +51,8 @@ public:
 private:
     void check_corners(Side s, const double *px, const double *py) const;
     void check_closed(Side s, const double *px, const double *py, int n) const;
+    // C-grid: the trailing-edge index of a JMIN side (throws Boundary).
+    int detect_wake(const double *px, const double *py) const;
 
     int ni_, nj_;
     Connectivity connectivity_;
