@@ -294,9 +294,12 @@ EG2D_API int eg2d_curve_evaluate(const eg2d_curve *curve, double s, double *x, d
  *               (seed 001 eq 2.13); clusters at s = 0; first spacing
  *               1 + tanh(delta (1/(n-1) - 1)/2)/tanh(delta/2), last 1 - s(1 - 1/(n-1)).
  *  TANH_TWO     p1 = b in (0, 350], p2 = c in [0, 1]: s = (tanh(b (u-c)) - A)/(B - A),
- *               A = tanh(-b c), B = tanh(b (1-c)): clusters around u = c.
+ *               A = tanh(-b c), B = tanh(b (1-c)) (seed 001 end of 2.5). The slope is
+ *               largest at u = c, so points thin out there and gather toward the
+ *               ends: c = 1 is TANH_ONE with delta = 2b (clusters at s = 0, the seed's
+ *               attraction point 1 - c), c = 0 clusters at s = 1, c = 1/2 at both.
  *  VINOKUR      p1, p2 > 0: the first and last spacings, in the curve's length
- *               units (eg2d_distribution: fractions of 1), met to 1e-12 relative:
+ *               units (eg2d_distribution: fractions of 1), met to 1e-11 relative:
  *               Vinokur's two-sided tanh/tan function (J. Comput. Phys. 50, 1983)
  *               with its end slopes corrected iteratively. p1 + p2 < length, n >= 3. */
 #define EG2D_DIST_UNIFORM     0

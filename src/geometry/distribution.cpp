@@ -5,6 +5,7 @@
 // pp. 307-308).
 #include "geometry/distribution.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -35,39 +36,78 @@ double solve_ratio(double B) {
 // Vinokur's function for end slopes S0 = ds/du(0), S1 = ds/du(1):
 // A = sqrt(S1/S0), B = 1/sqrt(S0 S1); v(u) = 1/2 (1 + tanh(dy (u - 1/2))/tanh(dy/2))
 // with sinh(dy)/dy = B (tan and sin when B < 1); s = v/(A + (1 - A) v).
-double vinokur(double u, double S0, double S1) {
+// Written as v = sinh(dy u)/(2 cosh(dy (u - 1/2)) sinh(dy/2)) (and 1 - v with
+// 1 - u), which has no cancellation at the ends, and returning s and 1 - s
+// so that both end spacings are accurate to round-off.
+struct Pair { double s, rest; };
+Pair vinokur(double u, double S0, double S1) {
     const double A = std::sqrt(S1 / S0), B = 1.0 / std::sqrt(S0 * S1);
-    double v;
+    double v, w;  // v and 1 - v
     if (std::fabs(B - 1.0) < 1e-12) {
         v = u;
+        w = 1.0 - u;
     } else {
         const double dy = solve_ratio(B);
-        v = B > 1.0 ? 0.5 * (1 + std::tanh(dy * (u - 0.5)) / std::tanh(0.5 * dy))
-                    : 0.5 * (1 + std::tan(dy * (u - 0.5)) / std::tan(0.5 * dy));
+        if (B > 1.0) {
+            const double d = 2 * std::cosh(dy * (u - 0.5)) * std::sinh(0.5 * dy);
+            v = std::sinh(dy * u) / d;
+            w = std::sinh(dy * (1 - u)) / d;
+        } else {
+            const double d = 2 * std::cos(dy * (u - 0.5)) * std::sin(0.5 * dy);
+            v = std::sin(dy * u) / d;
+            w = std::sin(dy * (1 - u)) / d;
+        }
     }
-    return v / (A + (1 - A) * v);
+    const double den = A + (1 - A) * v;
+    return Pair{v / den, A * w / den};
 }
 
 void fill_vinokur(int n, double ds0, double ds1, double *s) {
-    // The function's end slopes give the spacings only to O(1/n^2): correct the
-    // slopes until the first and last spacings are the requested ones.
+    // The function's end slopes give the spacings only to O(1/n^2) (and far
+    // worse for strong stretching): solve for the slopes that give the
+    // requested spacings, by Newton's method on the logarithms with a
+    // difference Jacobian.
     const int N = n - 1;
-    double S0 = ds0 * N, S1 = ds1 * N;
-    auto fill = [&] {
-        for (int k = 0; k < n; ++k) s[k] = vinokur(static_cast<double>(k) / N, S0, S1);
-        s[0] = 0.0;
-        s[N] = 1.0;
+    auto residual = [&](double a, double b, double &r0, double &r1) {
+        const double S0 = std::exp(a), S1 = std::exp(b);
+        r0 = std::log(vinokur(1.0 / N, S0, S1).s / ds0);
+        r1 = std::log(vinokur(1.0 - 1.0 / N, S0, S1).rest / ds1);
     };
-    for (int it = 0; it < 200; ++it) {
-        fill();
-        const double e0 = (s[1] - s[0]) / ds0, e1 = (s[N] - s[N - 1]) / ds1;
-        if (std::fabs(e0 - 1) < 1e-13 && std::fabs(e1 - 1) < 1e-13) return;
-        S0 /= e0;
-        S1 /= e1;
+    double a = std::log(ds0 * N), b = std::log(ds1 * N), r0, r1;
+    residual(a, b, r0, r1);
+    for (int it = 0; it < 100 && (std::fabs(r0) > 1e-13 || std::fabs(r1) > 1e-13); ++it) {
+        const double h = 1e-7;
+        double a0, a1, b0, b1;
+        residual(a + h, b, a0, a1);
+        residual(a, b + h, b0, b1);
+        const double j00 = (a0 - r0) / h, j10 = (a1 - r1) / h, j01 = (b0 - r0) / h, j11 = (b1 - r1) / h;
+        const double det = j00 * j11 - j01 * j10;
+        if (!(std::fabs(det) > 0) || !std::isfinite(det)) break;
+        double da = -(j11 * r0 - j01 * r1) / det, db = -(-j10 * r0 + j00 * r1) / det;
+        // Damp: never change a slope by more than a factor e in one step.
+        const double big = std::max(std::fabs(da), std::fabs(db));
+        if (big > 1.0) { da /= big; db /= big; }
+        // Backtrack while the step makes the residual worse.
+        const double before = std::max(std::fabs(r0), std::fabs(r1));
+        double t = 1.0, n0 = 0, n1 = 0;
+        for (int k = 0; k < 30; ++k, t *= 0.5) {
+            residual(a + t * da, b + t * db, n0, n1);
+            if (std::isfinite(n0) && std::isfinite(n1) && std::max(std::fabs(n0), std::fabs(n1)) < before) break;
+        }
+        a += t * da;
+        b += t * db;
+        r0 = n0;
+        r1 = n1;
     }
-    fail(Failure::Argument,
-         format("Vinokur spacings %.6g and %.6g (as fractions of the length) cannot both be met with %d points",
-                ds0, ds1, n));
+    if (!(std::fabs(r0) <= 1e-11 && std::fabs(r1) <= 1e-11))
+        fail(Failure::Argument,
+             format("Vinokur spacings %.6g and %.6g (as fractions of the length) cannot both be met with %d points",
+                    ds0, ds1, n));
+    // Each half from its own end, so both end spacings keep their accuracy.
+    for (int k = 0; k <= N; ++k) {
+        const Pair p = vinokur(static_cast<double>(k) / N, std::exp(a), std::exp(b));
+        s[k] = 2 * k <= N ? p.s : 1.0 - p.rest;
+    }
 }
 
 }  // namespace

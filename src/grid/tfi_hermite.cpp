@@ -45,6 +45,17 @@ std::vector<Vec> normal_derivatives(const Grid &g, int j, double alpha) {
     // from JMIN to JMAX, so it points away from JMIN at both rows.
     if (orientation < 0)
         for (Vec &v : d) v = Vec{-v.x, -v.y};
+    if (!periodic) {
+        // The corner columns are the sides IMIN, IMAX: take their own eta
+        // slope there, so that the xi-projector's part of the Boolean sum,
+        // P_xi - P_xi P_eta, vanishes to O(Delta^2) near JMIN and JMAX and the
+        // orthogonality of P_eta survives in the sum.
+        const int jn = j == 0 ? 1 : nj - 2;
+        for (int i : {0, ni - 1}) {
+            const double sx = (g.x[at(i, jn)] - g.x[at(i, j)]) * (nj - 1), sy = (g.y[at(i, jn)] - g.y[at(i, j)]) * (nj - 1);
+            d[static_cast<std::size_t>(i)] = j == 0 ? Vec{sx, sy} : Vec{-sx, -sy};
+        }
+    }
     return d;
 }
 
