@@ -318,13 +318,24 @@ EG2D_API int eg2d_curve_points(const eg2d_curve *curve, int n, int distribution,
  * Direction (seed 001 figure 1.13): a side whose curve runs against the grid
  * fails with EG2D_ERR_BOUNDARY and a message that says so, unless flags ask:
  *  EG2D_CURVE_REVERSE  use the curve from its end to its start (s -> 1 - s);
- *  EG2D_CURVE_ORIENT   reverse it when, and only when, it runs against the grid.
+ *  EG2D_CURVE_ORIENT   reverse it when, and only when, it runs against the grid;
+ *  EG2D_CURVE_SLIDING  the side slides (single-block grids only, else
+ *                      EG2D_ERR_UNSUPPORTED): after every iteration of every
+ *                      solver, each node of the side except the corners moves
+ *                      along the curve to the foot of the perpendicular from its
+ *                      neighbour on the first interior line (Overture's
+ *                      slip-orthogonal condition), keeping its order (a node
+ *                      moves at most halfway to its neighbours' positions), so
+ *                      grid lines meet the side at right angles. Setting the
+ *                      side again (eg2d_set_side, eg2d_set_boundary,
+ *                      eg2d_set_coordinates, a topology) ends the sliding.
  * Running against the grid means: its ends match the corners of an adjacent
  * side already set the wrong way round; or, with no adjacent side set, it
  * turns the other way than the opposite side (O- and C-grids: the signed area
  * of the closed side; single block: the direction from first to last point). */
 #define EG2D_CURVE_REVERSE 1
 #define EG2D_CURVE_ORIENT  2
+#define EG2D_CURVE_SLIDING 4
 EG2D_API int eg2d_set_side_curve(eg2d_grid *grid, int side, const eg2d_curve *curve, int distribution,
                                  double p1, double p2, int flags);
 

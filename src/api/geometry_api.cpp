@@ -143,8 +143,9 @@ EG2D_API int eg2d_set_side_curve(eg2d_grid *grid, int side, const eg2d_curve *cu
         require(side >= EG2D_SIDE_JMIN && side <= EG2D_SIDE_IMIN,
                 format("side = %d: not one of EG2D_SIDE_JMIN (0), IMAX (1), JMAX (2), IMIN (3)", side));
         require_curve(curve);
-        require((flags & ~(EG2D_CURVE_REVERSE | EG2D_CURVE_ORIENT)) == 0,
-                format("flags = %d: only EG2D_CURVE_REVERSE (1) and EG2D_CURVE_ORIENT (2)", flags));
+        require((flags & ~(EG2D_CURVE_REVERSE | EG2D_CURVE_ORIENT | EG2D_CURVE_SLIDING)) == 0,
+                format("flags = %d: only EG2D_CURVE_REVERSE (1), EG2D_CURVE_ORIENT (2), EG2D_CURVE_SLIDING (4)",
+                       flags));
         set_side_curve(grid->gen, static_cast<Side>(side), curve->arc, distribution, p1, p2, flags);
     });
 }

@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "geometry/distribution.hpp"
+#include "geometry/sliding.hpp"
 
 namespace eg2d {
 
@@ -121,6 +122,16 @@ void set_side_curve(Generator &gen, Side side, const ArcLength &curve, int distr
                  format("side %s runs against the grid (seed 001 fig 1.13): %s; pass EG2D_CURVE_ORIENT to reverse "
                         "it when needed, or EG2D_CURVE_REVERSE", side_name(side), why.c_str()));
         reverse();
+    }
+    if (flags & kCurveSliding) {
+        // Build the motion before changing anything (strong guarantee). Its
+        // parameters are found from the points, so the direction does not matter.
+        Grid trial(g);
+        trial.set_side(side, x.data(), y.data());
+        std::shared_ptr<const BoundaryMotion> motion = make_sliding(trial, side, curve);
+        gen.set_side(side, x.data(), y.data());
+        gen.set_motion(std::move(motion));
+        return;
     }
     gen.set_side(side, x.data(), y.data());
 }

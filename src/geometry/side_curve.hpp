@@ -11,7 +11,7 @@ namespace eg2d {
 // n points at the normalized arc lengths of a distribution (distribution.hpp).
 void curve_points(const ArcLength &curve, int n, int distribution, double p1, double p2, double *x, double *y);
 
-enum SideCurveFlags { kCurveReverse = 1, kCurveOrient = 2 };  // EG2D_CURVE_*
+enum SideCurveFlags { kCurveReverse = 1, kCurveOrient = 2, kCurveSliding = 4 };  // EG2D_CURVE_*
 
 // Sets the side from the curve. Throws Boundary when the curve runs against
 // the grid and flags do not allow reversing it; strong guarantee.

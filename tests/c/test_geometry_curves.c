@@ -315,7 +315,7 @@ static void test_opposite_sides_direction(void **state) {
     assert_non_null(strstr(eg2d_last_error(g), "corner it shares with side IMIN"));
     assert_int_equal(eg2d_set_side_curve(g, EG2D_SIDE_JMAX, top, EG2D_DIST_UNIFORM, 0, 0, EG2D_CURVE_ORIENT), EG2D_OK);
     assert_int_equal(eg2d_set_side_curve(g, EG2D_SIDE_IMAX, left, EG2D_DIST_UNIFORM, 0, 0, 0), EG2D_ERR_BOUNDARY);
-    assert_int_equal(eg2d_set_side_curve(g, EG2D_SIDE_JMAX, top, EG2D_DIST_UNIFORM, 0, 0, 4), EG2D_ERR_ARGUMENT);
+    assert_int_equal(eg2d_set_side_curve(g, EG2D_SIDE_JMAX, top, EG2D_DIST_UNIFORM, 0, 0, 8), EG2D_ERR_ARGUMENT);
     {
         const double r[4] = {1, 0, 1, 1};
         eg2d_curve *right;

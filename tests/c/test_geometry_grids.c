@@ -356,6 +356,66 @@ static void test_hermite_orthogonal_single_block(void **state) {
     free(y);
 }
 
+static void valley_top(void *user, double t, double *x, double *y) {
+    (void)user;
+    *x = t;
+    *y = 0.75 + 0.25 * sin(PI * (0.5 + 2 * t));
+}
+
+/* Seed 003's valley with its curved top sliding: grid lines meet it at right
+ * angles, its nodes stay on the curve and in order, the corners stay. */
+static void test_sliding_side(void **state) {
+    const int ni = 33, nj = 33;
+    double *x = alloc(ni * nj), *y = alloc(ni * nj), cos_slide = 0, cos_fixed = 0;
+    eg2d_grid *g;
+    eg2d_curve *top;
+    int pass, i;
+    (void)state;
+    assert_int_equal(eg2d_curve_function(valley_top, NULL, &top), EG2D_OK);
+    for (pass = 0; pass < 2; ++pass) {
+        double worst = 0;
+        assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+        assert_int_equal(domain_set(g, "valley"), EG2D_OK);
+        assert_int_equal(eg2d_set_side_curve(g, EG2D_SIDE_JMAX, top, EG2D_DIST_UNIFORM, 0, 0,
+                                             pass == 0 ? EG2D_CURVE_SLIDING : 0),
+                         EG2D_OK);
+        assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
+        assert_int_equal(eg2d_solve(g), EG2D_OK);
+        assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+        for (i = 1; i < ni - 1; ++i) {
+            const int k = i + ni * (nj - 1);
+            /* the curve's own tangent at the node */
+            const double tx = 1, ty = 0.5 * PI * cos(PI * (0.5 + 2 * x[k]));
+            const double ex = x[k] - x[k - ni], ey = y[k] - y[k - ni];
+            worst = fmax(worst, fabs(tx * ex + ty * ey) / (hypot(tx, ty) * hypot(ex, ey)));
+            assert_true(fabs(y[k] - (0.75 + 0.25 * sin(PI * (0.5 + 2 * x[k])))) < 1e-9); /* on the curve */
+            assert_true(x[k] > x[k - 1]);                                               /* in order */
+        }
+        assert_true(x[ni * (nj - 1)] == 0 && x[ni * nj - 1] == 1); /* corners fixed */
+        if (pass == 0) cos_slide = worst; else cos_fixed = worst;
+        eg2d_destroy(g);
+    }
+    print_message("valley top: largest |cos| of the angle between grid line and curve: sliding %.2e, fixed %.4f\n",
+                  cos_slide, cos_fixed);
+    assert_true(cos_slide < 1e-6 && cos_fixed > 0.5);
+    /* Sliding is single-block only. */
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    assert_int_equal(eg2d_set_topology(g, EG2D_TOPO_O), EG2D_OK);
+    {
+        eg2d_curve *c;
+        struct circle cc = {0.0, 1.0, 1.0};
+        assert_int_equal(eg2d_curve_function(circle_fn, &cc, &c), EG2D_OK);
+        assert_int_equal(eg2d_set_side_curve(g, EG2D_SIDE_JMIN, c, EG2D_DIST_UNIFORM, 0, 0, EG2D_CURVE_SLIDING),
+                         EG2D_ERR_UNSUPPORTED);
+        assert_non_null(strstr(eg2d_last_error(g), "only single-block grids have sliding sides"));
+        eg2d_curve_destroy(c);
+    }
+    eg2d_destroy(g);
+    eg2d_curve_destroy(top);
+    free(x);
+    free(y);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_annulus_every_solver),
@@ -366,6 +426,7 @@ int main(void) {
         cmocka_unit_test(test_rose_in_circle),
         cmocka_unit_test(test_hermite_annulus),
         cmocka_unit_test(test_hermite_orthogonal_single_block),
+        cmocka_unit_test(test_sliding_side),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
