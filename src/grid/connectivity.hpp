@@ -45,6 +45,14 @@ public:
     const std::vector<Node> &extra_unknowns() const { return extra_; }
     // Number of distinct columns in i (ni-1 on a periodic grid).
     int i_period() const { return ni_ - 1; }
+    // The connectivity of the grid coarsened by si in i and sj in j (every
+    // si-th column, every sj-th row), for multigrid: a C-grid keeps its cut
+    // when the trailing edge falls on a coarse column (wake % si == 0), else
+    // the coarse cut is fixed (wake 0).
+    Connectivity coarsened(int si, int sj) const {
+        const int wake = (topology_ == Topology::C && wake_ % si == 0) ? wake_ / si : 0;
+        return Connectivity((ni_ - 1) / si + 1, (nj_ - 1) / sj + 1, topology_, wake);
+    }
     // C-grid: the trailing-edge index on JMIN (0 for the other topologies).
     int wake() const { return wake_; }
     // C-grid: is (i, 0) a wake node solved for (0 < i < wake)?
