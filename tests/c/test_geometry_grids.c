@@ -82,17 +82,11 @@ static void check_unfolded(eg2d_grid *g) {
 static void test_naca0012_o_grid(void **state) {
     const int ni = 129, nj = 33;
     eg2d_grid *g;
-    eg2d_curve *foil, *far;
-    struct circle c = {0.5, 10.0, -1.0};
     int iters;
     double res;
     (void)state;
-    assert_int_equal(eg2d_curve_naca4("0012", EG2D_NACA_CLOSED_TE, &foil), EG2D_OK);
-    assert_int_equal(eg2d_curve_function(circle_fn, &c, &far), EG2D_OK);
     assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
-    assert_int_equal(eg2d_set_topology(g, EG2D_TOPO_O), EG2D_OK);
-    assert_int_equal(eg2d_set_side_curve(g, EG2D_SIDE_JMIN, foil, EG2D_DIST_UNIFORM, 0, 0, 0), EG2D_OK);
-    assert_int_equal(eg2d_set_side_curve(g, EG2D_SIDE_JMAX, far, EG2D_DIST_UNIFORM, 0, 0, 0), EG2D_OK);
+    assert_int_equal(domain_set_airfoil_o(g, "0012", 10.0), EG2D_OK);
     assert_int_equal(eg2d_set_tolerance(g, 1e-9), EG2D_OK);
     assert_int_equal(eg2d_solve(g), EG2D_OK);
     assert_int_equal(eg2d_get_iterations(g, &iters), EG2D_OK);
@@ -101,8 +95,6 @@ static void test_naca0012_o_grid(void **state) {
     assert_true(res <= 1e-9);
     check_unfolded(g);
     eg2d_destroy(g);
-    eg2d_curve_destroy(foil);
-    eg2d_curve_destroy(far);
 }
 
 /* A C-grid around a NACA section: JMIN = lower wake (outflow -> TE), the
