@@ -100,7 +100,7 @@ static void test_naca0012_o_grid(void **state) {
 /* A C-grid around a NACA section: JMIN = lower wake (outflow -> TE), the
  * airfoil, the upper wake; JMAX = the C-shaped far field; IMIN, IMAX the
  * outflow lines. Returns the grid, solved. */
-static eg2d_grid *c_grid(const char *digits, int nw, int na, int nj, double *x0, double *y0) {
+static eg2d_grid *c_grid(const char *digits, int nw, int na, int nj, int init, double *x0, double *y0) {
     const double W = 5.0, R = 5.0;
     /* JMIN: nw lower-wake points, the na airfoil points (TE to TE), nw upper-wake points. */
     const int ni = 2 * nw + na;
@@ -161,6 +161,12 @@ static eg2d_grid *c_grid(const char *digits, int nw, int na, int nj, double *x0,
     for (j = 0; j < nj; ++j) vy[j] = R * sj[j];
     assert_int_equal(eg2d_set_side(g, EG2D_SIDE_IMAX, vx, vy), EG2D_OK);
     assert_int_equal(eg2d_set_tolerance(g, 1e-9), EG2D_OK);
+    if (init >= 0) {
+        double folded;
+        assert_int_equal(eg2d_initialize(g, init), EG2D_OK);
+        assert_int_equal(eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &folded), EG2D_OK);
+        print_message("C-grid NACA%s, initial grid %d: %g folded cells\n", digits, init, folded);
+    }
     status = eg2d_solve(g);
     if (status) print_message("%s\n", eg2d_last_error(g));
     assert_int_equal(status, EG2D_OK);
@@ -174,7 +180,7 @@ static void test_c_grid_wake_cut(void **state) {
     eg2d_grid *g;
     int i, iters, topo;
     (void)state;
-    g = c_grid("2412", nw, na, nj, &x0, &y0);
+    g = c_grid("2412", nw, na, nj, -1, &x0, &y0);
     assert_int_equal(eg2d_get_topology(g, &topo), EG2D_OK);
     assert_int_equal(topo, EG2D_TOPO_C);
     assert_int_equal(eg2d_get_iterations(g, &iters), EG2D_OK);
@@ -229,10 +235,15 @@ static void test_c_grid_naca0012(void **state) {
     eg2d_grid *g;
     int iters;
     (void)state;
-    g = c_grid("0012", 24, 81, 33, &x0, &y0);
+    g = c_grid("0012", 24, 81, 33, EG2D_INIT_TFI, &x0, &y0);
     check_unfolded(g);
     assert_int_equal(eg2d_get_iterations(g, &iters), EG2D_OK);
-    print_message("C-grid NACA0012 129x33: psor %d iterations\n", iters);
+    print_message("C-grid NACA0012 129x33: psor %d iterations from linear TFI\n", iters);
+    eg2d_destroy(g);
+    g = c_grid("0012", 24, 81, 33, EG2D_INIT_HERMITE, &x0, &y0);
+    check_unfolded(g);
+    assert_int_equal(eg2d_get_iterations(g, &iters), EG2D_OK);
+    print_message("C-grid NACA0012 129x33: psor %d iterations from Hermite TFI\n", iters);
     eg2d_destroy(g);
 }
 
