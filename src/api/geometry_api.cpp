@@ -39,7 +39,7 @@ private:
 
 int make_curve(const char *function, eg2d_curve **curve, const std::function<std::shared_ptr<const Curve>()> &build) {
     if (curve) *curve = nullptr;
-    return guard_thread(function, [&] {
+    return guard_without_grid(function, [&] {
         require_ptr(curve, "curve");
         *curve = new eg2d_curve(build());
     });
@@ -93,7 +93,7 @@ EG2D_API int eg2d_curve_read_airfoil(const char *path, eg2d_curve **curve) {
 EG2D_API void eg2d_curve_destroy(eg2d_curve *curve) { delete curve; }
 
 EG2D_API int eg2d_curve_length(const eg2d_curve *curve, double *length) {
-    return guard_thread("eg2d_curve_length", [&] {
+    return guard_without_grid("eg2d_curve_length", [&] {
         require_curve(curve);
         require_ptr(length, "length");
         *length = curve->arc.length();
@@ -101,7 +101,7 @@ EG2D_API int eg2d_curve_length(const eg2d_curve *curve, double *length) {
 }
 
 EG2D_API int eg2d_curve_evaluate(const eg2d_curve *curve, double s, double *x, double *y) {
-    return guard_thread("eg2d_curve_evaluate", [&] {
+    return guard_without_grid("eg2d_curve_evaluate", [&] {
         require_curve(curve);
         require_ptr(x, "x");
         require_ptr(y, "y");
@@ -114,7 +114,7 @@ EG2D_API int eg2d_curve_evaluate(const eg2d_curve *curve, double s, double *x, d
 }
 
 EG2D_API int eg2d_distribution(int distribution, int n, double p1, double p2, double *s) {
-    return guard_thread("eg2d_distribution", [&] {
+    return guard_without_grid("eg2d_distribution", [&] {
         require_ptr(s, "s");
         require(n >= 2, format("n = %d: need at least 2 points", n));
         std::vector<double> out(static_cast<std::size_t>(n));
@@ -125,7 +125,7 @@ EG2D_API int eg2d_distribution(int distribution, int n, double p1, double p2, do
 
 EG2D_API int eg2d_curve_points(const eg2d_curve *curve, int n, int distribution, double p1, double p2, double *x,
                                double *y) {
-    return guard_thread("eg2d_curve_points", [&] {
+    return guard_without_grid("eg2d_curve_points", [&] {
         require_curve(curve);
         require_ptr(x, "x");
         require_ptr(y, "y");
@@ -151,7 +151,7 @@ EG2D_API int eg2d_set_side_curve(eg2d_grid *grid, int side, const eg2d_curve *cu
 }
 
 EG2D_API int eg2d_first_cell_height(double yplus, double reynolds, double chord, double *height) {
-    return guard_thread("eg2d_first_cell_height", [&] {
+    return guard_without_grid("eg2d_first_cell_height", [&] {
         require_ptr(height, "height");
         *height = first_cell_height(yplus, reynolds, chord);
     });

@@ -33,10 +33,12 @@ inline void require_finite(double v, const char *name) {
     if (!std::isfinite(v)) fail(Failure::Argument, format("%s = %g: must be finite", name, v));
 }
 
-// The status and message of the exception being handled (call inside catch).
-inline int current_failure(std::string &message) noexcept {
+// Runs body() and turns an exception into a status and a message.
+template <class Body>
+int capture(std::string &message, Body &&body) noexcept {
     try {
-        throw;
+        body();
+        return EG2D_OK;
     } catch (const Error &e) {
         message = e.what();
         return status_of(e.failure());
@@ -45,11 +47,10 @@ inline int current_failure(std::string &message) noexcept {
         return EG2D_ERR_MEMORY;
     } catch (const std::exception &e) {
         message = std::string("internal error: ") + e.what();
-        return EG2D_ERR_ARGUMENT;
     } catch (...) {
         message = "internal error: unknown exception";
-        return EG2D_ERR_ARGUMENT;
     }
+    return EG2D_ERR_ARGUMENT;
 }
 
 // Runs body(); records the message of a failure on the grid (or, for a NULL
@@ -57,14 +58,11 @@ inline int current_failure(std::string &message) noexcept {
 template <class Body>
 int guard(const eg2d_grid *grid, const char *function, Body &&body) noexcept {
     std::string message;
-    int status = EG2D_OK;
-    try {
+    const int status = capture(message, [&] {
         if (!grid) fail(Failure::Argument, "grid is NULL");
         body();
-        return EG2D_OK;
-    } catch (...) {
-        status = current_failure(message);
-    }
+    });
+    if (status == EG2D_OK) return status;
     try {
         const std::string text = std::string(function) + ": " + message;
         if (grid) grid->last_error = text;
@@ -75,17 +73,13 @@ int guard(const eg2d_grid *grid, const char *function, Body &&body) noexcept {
     return status;
 }
 
-// The same for calls without a grid (curves): the message goes to the thread.
+// The same for a call that has no grid (file readers): the message goes to
+// the thread, for eg2d_last_error(NULL).
 template <class Body>
-int guard_thread(const char *function, Body &&body) noexcept {
+int guard_without_grid(const char *function, Body &&body) noexcept {
     std::string message;
-    int status = EG2D_OK;
-    try {
-        body();
-        return EG2D_OK;
-    } catch (...) {
-        status = current_failure(message);
-    }
+    const int status = capture(message, body);
+    if (status == EG2D_OK) return status;
     try {
         set_thread_error(std::string(function) + ": " + message);
     } catch (...) {

@@ -12,6 +12,7 @@ struct Settings {
     double divergence_factor = 1e4;   // residual > factor * best of the run = divergence
     double fold_check = 1;            // 1: solve fails with Folded on a folded converged grid
     double hermite_spacing = 1.0;     // EG2D_INIT_HERMITE's alpha (seed 001 eq 2.6)
+    double svg_quality = -1;          // EG2D_QUALITY_* colouring SVG cells, -1 none
 };
 
 }  // namespace eg2d
