@@ -14,17 +14,11 @@ namespace {
 
 // The points of side s as the grid holds them.
 void side_points(const Grid &g, Side s, std::vector<double> &x, std::vector<double> &y) {
-    const int n = g.side_length(s), ni = g.ni(), nj = g.nj();
+    const int n = g.side_length(s);
     x.resize(static_cast<std::size_t>(n));
     y.resize(static_cast<std::size_t>(n));
     for (int p = 0; p < n; ++p) {
-        std::size_t k = 0;
-        switch (s) {
-        case Side::JMin: k = static_cast<std::size_t>(p); break;
-        case Side::IMax: k = static_cast<std::size_t>(ni - 1) + static_cast<std::size_t>(ni) * p; break;
-        case Side::JMax: k = static_cast<std::size_t>(p) + static_cast<std::size_t>(ni) * (nj - 1); break;
-        case Side::IMin: k = static_cast<std::size_t>(ni) * p; break;
-        }
+        const std::size_t k = side_node(g, s, p);
         x[static_cast<std::size_t>(p)] = g.x[k];
         y[static_cast<std::size_t>(p)] = g.y[k];
     }

@@ -49,19 +49,7 @@ public:
     }
 
 private:
-    // Array index of the p-th node of the side (depth 0) or of its neighbour
-    // on the first interior line (depth 1).
-    std::size_t node(const Grid &g, int p, int depth) const {
-        const int ni = g.ni(), nj = g.nj();
-        int i = 0, j = 0;
-        switch (side_) {
-        case Side::JMin: i = p; j = depth; break;
-        case Side::JMax: i = p; j = nj - 1 - depth; break;
-        case Side::IMin: i = depth; j = p; break;
-        case Side::IMax: i = ni - 1 - depth; j = p; break;
-        }
-        return static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * static_cast<std::size_t>(j);
-    }
+    std::size_t node(const Grid &g, int p, int depth) const { return side_node(g, side_, p, depth); }
     void eval(double s, double &x, double &y) const {
         const double u = s * (kTable - 1);
         int k = static_cast<int>(std::floor(u)) - 1;

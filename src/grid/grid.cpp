@@ -35,6 +35,18 @@ std::vector<double> allocate(std::size_t n) {
 }
 }  // namespace
 
+std::size_t side_node(const Grid &g, Side s, int p, int depth) {
+    const int ni = g.ni(), nj = g.nj();
+    int i = 0, j = 0;
+    switch (s) {
+    case Side::JMin: i = p; j = depth; break;
+    case Side::JMax: i = p; j = nj - 1 - depth; break;
+    case Side::IMin: i = depth; j = p; break;
+    case Side::IMax: i = ni - 1 - depth; j = p; break;
+    }
+    return static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * static_cast<std::size_t>(j);
+}
+
 const char *side_name(Side s) {
     switch (s) {
     case Side::JMin: return "JMIN";

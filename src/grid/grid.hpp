@@ -60,6 +60,10 @@ private:
     bool initialized_ = false;
 };
 
+// Array index of the p-th node of side s (increasing index along the side),
+// or of the node `depth` lines into the domain from it.
+std::size_t side_node(const Grid &g, Side s, int p, int depth = 0);
+
 // Checks every value is finite; names the array and the first bad index.
 void check_finite(const char *what, const double *v, std::size_t n);
 
