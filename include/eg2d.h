@@ -145,7 +145,8 @@ EG2D_API int eg2d_get_topology(const eg2d_grid *grid, int *topology);
 /* Sets one side from its points in increasing index. Corners shared with a
  * side already set must agree to 1e-8 of the boundary's size, or the call
  * fails with EG2D_ERR_BOUNDARY and sets nothing. On an O-grid only JMIN and
- * JMAX exist and each must be a closed curve. A side set after the grid was
+ * JMAX exist and each must be a closed curve. On a C-grid JMIN must hold the
+ * wake cut (see EG2D_TOPO_C). A side set after the grid was
  * initialised moves only the boundary: the interior is kept as a warm start. */
 EG2D_API int eg2d_set_side(eg2d_grid *grid, int side, const double *x, const double *y);
 

@@ -309,6 +309,8 @@ static void test_opposite_sides_direction(void **state) {
     assert_int_equal(eg2d_set_side_curve(g, EG2D_SIDE_JMAX, top, EG2D_DIST_UNIFORM, 0, 0, 0), EG2D_ERR_BOUNDARY);
     assert_non_null(strstr(eg2d_last_error(g), "runs against the grid"));
     assert_non_null(strstr(eg2d_last_error(g), "side JMIN"));
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_ERR_STATE); /* the failed call set nothing */
+    assert_non_null(strstr(eg2d_last_error(g), "IMAX, JMAX, IMIN"));
     /* With an adjacent side set: detected from the corner. */
     assert_int_equal(eg2d_set_side_curve(g, EG2D_SIDE_IMIN, left, EG2D_DIST_UNIFORM, 0, 0, 0), EG2D_OK);
     assert_int_equal(eg2d_set_side_curve(g, EG2D_SIDE_JMAX, top, EG2D_DIST_UNIFORM, 0, 0, 0), EG2D_ERR_BOUNDARY);
