@@ -185,6 +185,19 @@ EG2D_API int eg2d_set_system(eg2d_grid *grid, int system);
 #define EG2D_SOLVER_AF        2  /* approximate factorisation, false transients */
 #define EG2D_SOLVER_NESTED    3  /* coarse-to-fine, seed 000 */
 #define EG2D_SOLVER_MULTIGRID 4  /* FAS multigrid */
+/* What one iteration is, per solver:
+ *   PSOR    one lexicographic point SOR sweep (omega: EG2D_PARAM_RELAXATION).
+ *   AF      one pseudo-time step: a xi and an eta line sweep (see the AF
+ *           parameters below; EG2D_PARAM_RELAXATION does not apply).
+ *   NESTED  one point SOR sweep of the full grid; the first iteration after a
+ *           new start (initialisation, new coordinates, system, controls or
+ *           solver) first converges the equations on every 2^k-th line (k as
+ *           large as ni-1 and nj-1 allow), interpolates linearly to every
+ *           2^(k-1)-th line, and so on down to the full grid (seed 000). This
+ *           start replaces the interior (of a warm start only the coarsest
+ *           nodes are kept) unless it would fold cells. Any ni, nj work; with
+ *           odd ni-1 or nj-1 NESTED is PSOR. EG2D_PARAM_RELAXATION applies on
+ *           every level (automatic: the optimal factor of each level's size). */
 /* Selects a solver; EG2D_ERR_UNSUPPORTED for an id this library lacks. */
 EG2D_API int eg2d_set_solver(eg2d_grid *grid, int solver);
 EG2D_API int eg2d_get_solver(const eg2d_grid *grid, int *solver);
@@ -220,6 +233,41 @@ EG2D_API int eg2d_set_parameter(eg2d_grid *grid, int param, double value);
 EG2D_API int eg2d_get_parameter(const eg2d_grid *grid, int param, double *value);
 /* Bounds and default of a parameter, without a grid. */
 EG2D_API int eg2d_parameter_bounds(int param, double *lower, double *upper, double *default_value);
+
+/* Solver parameters (100-199). */
+
+/* Approximate factorisation, EG2D_SOLVER_AF (seed 004 eqs 5-13): false
+ * transients r_tau = L(r), the Warming-Beam time rule with parameters a, b,
+ * and the implicit operator factored into a xi and an eta line operator (the
+ * mixed derivative is left explicit); the xi lines of an O-grid are cyclic,
+ * so the branch cut moves with the interior. One iteration = one time step =
+ * one xi and one eta line sweep. The pseudo-time step of node (i, j) is
+ * dtau / (2(alpha+gamma)) (Laplace: dtau/4), so dtau is dimensionless: at
+ * dtau = 1 and omega = 1 the explicit part is one Jacobi step. The steps run
+ * through a cycle of M steps spaced geometrically from dtau_min to dtau_max
+ * with repeated end points (dtau_1 = dtau_2, dtau_(M-1) = dtau_M), and the
+ * cycle repeats. Every default works untouched; the automatic values are
+ * dtau_max = 4 (n-1)^2 / pi^2 with n = max(ni, nj) (the step that resolves
+ * the smoothest mode) and the smallest M whose steps grow by at most 2x. */
+#define EG2D_PARAM_AF_DTAU_MIN      100  /* (0, 1e12], default 0.5                       */
+#define EG2D_PARAM_AF_DTAU_MAX      101  /* (0, 1e12], >= dtau_min; 0 = automatic (default) */
+#define EG2D_PARAM_AF_STEPS         102  /* M in [4, 1000]; 0 = automatic (default)       */
+#define EG2D_PARAM_AF_A             103  /* Warming-Beam a in (-1, 10], default 0         */
+#define EG2D_PARAM_AF_B             104  /* Warming-Beam b in (0, 10], default 1          */
+#define EG2D_PARAM_AF_RELAXATION    105  /* omega of seed 004 eq 7 in (0, 4); 0 = automatic
+                                            (default): omega = 2b, so omega/b = 2, the
+                                            Peaceman-Rachford choice. The generic
+                                            relaxation does not apply to AF. */
+
+/* The AF cycle: steps in [dtau_min, dtau_max] over M = steps per cycle.
+ * dtau_max = 0 and steps = 0 are automatic. Fails with EG2D_ERR_ARGUMENT
+ * (and changes nothing) for a value out of its range or dtau_min > dtau_max.
+ * Setting EG2D_PARAM_AF_DTAU_MIN/MAX one by one is checked the same way. */
+EG2D_API int eg2d_set_af_cycle(eg2d_grid *grid, double dtau_min, double dtau_max, int steps);
+/* The Warming-Beam time rule (seed 004 Table 1): Euler implicit a = 0, b = 1
+ * (default); three-point backward a = 1/2, b = 1; trapezoidal a = 0, b = 1/2.
+ * The explicit rules (b = 0) are unstable here (seed 004) and rejected. */
+EG2D_API int eg2d_set_af_time_rule(eg2d_grid *grid, double a, double b);
 
 /*=====================================================================
  * Running
