@@ -51,12 +51,18 @@ public:
 private:
     void check_corners(Side s, const double *px, const double *py) const;
     void check_closed(Side s, const double *px, const double *py, int n) const;
+    // C-grid: the trailing-edge index of a JMIN side (throws Boundary).
+    int detect_wake(const double *px, const double *py) const;
 
     int ni_, nj_;
     Connectivity connectivity_;
     unsigned sides_set_ = 0;
     bool initialized_ = false;
 };
+
+// Array index of the p-th node of side s (increasing index along the side),
+// or of the node `depth` lines into the domain from it.
+std::size_t side_node(const Grid &g, Side s, int p, int depth = 0);
 
 // Largest coordinate magnitude accepted: J^2 grows as the fourth power of the
 // coordinates, so much larger values would overflow the metric terms.
