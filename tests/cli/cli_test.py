@@ -141,6 +141,20 @@ class ErrorMessages(unittest.TestCase):
                    "CASE:4:12: key 'solver.af_steps': eg2d_set_parameter: af_steps = 2: must be in [4, 1000] "
                    "(or 0 for automatic)")
 
+    def test_distribution_errors(self):
+        if not features()["geometry"]["curves"]:
+            self.skipTest("this build has no curves")
+        left = '[sides.left]\npoints = [[0, 0], [0, 0.2], [0, 1]]\ndistribution = '
+        base = 'size = [5, 5]\n' + self.GOOD_SIDES.replace('[sides.left]\nx = "0"\ny = "s"\n', "")
+        self.check(base + left + '{ kind = "tanh3" }\n', 3,
+                   "CASE:14:25: key 'sides.left.distribution.kind': \"tanh3\" is not one of: uniform, exponential, "
+                   "tanh, tanh2, vinokur")
+        self.check(base + left + '{ kind = "vinokur", first = 0.9, last = 0.5 }\n', 4,
+                   "CASE:14:16: key 'sides.left.distribution': eg2d_curve_points: Vinokur spacings 0.9 + 0.5 leave "
+                   "no room on length 1 with 5 points")
+        self.check(base + left + '{ kind = "tanh", beta = 2 }\n', 3,
+                   "CASE:14:33: key 'sides.left.distribution.beta': unknown key (expected one of: kind, delta)")
+
     def test_toml_syntax(self):
         self.check('size = [9, 9\n', 3, "CASE:1:14: TOML syntax error: Error while parsing array: encountered end-of-file")
 
@@ -247,6 +261,26 @@ class Sides(unittest.TestCase):
             strip = lambda s: re.sub(r", [0-9.]+ s$", "", s.split("\n", 1)[1], flags=re.M).replace("formulas", "points")
             self.assertEqual(strip(a[1]), strip(b[1]))
             self.assertRegex(a[1], r"converged in \d+ iterations")
+
+
+    def test_curve_with_a_distribution(self):
+        """points + curve + distribution: nodes by arc length along the polyline (read back from Plot3D)."""
+        if not features()["geometry"]["curves"]:
+            self.skipTest("this build has no curves")
+        text = self.FORMULAS.replace('[sides.left]\nx = "0"\ny = "s"',
+                                     '[sides.left]\npoints = [[0, 0], [0, 0.2], [0, 1]]\ncurve = "polyline"\n'
+                                     'distribution = "uniform"') + '[output]\nformats = ["plot3d"]\n'
+        with tempfile.TemporaryDirectory() as d:
+            with open(os.path.join(d, "c.toml"), "w") as f:
+                f.write(text)
+            code, out, err = run("run", os.path.join(d, "c.toml"), "-o", d, "--quiet")
+            self.assertEqual(code, 0, out + err)
+            with open(os.path.join(d, "c.xyz"), "rb") as f:
+                data = f.read()
+            self.assertEqual(struct.unpack("<iiii", data[:16]), (8, 5, 5, 8))
+            xy = struct.unpack("<50d", data[20:20 + 400])
+            left_y = [xy[25 + 5 * j] for j in range(5)]
+            self.assertEqual(left_y, [0.0, 0.25, 0.5, 0.75, 1.0])
 
 
 class CommandLine(unittest.TestCase):

@@ -10,10 +10,6 @@
 
 namespace eg2dtool {
 
-namespace {
-const char *unavailable = ": is not available in this build of eg2d (it has no curves)";
-}
-
 bool needs_curve(const SidePiece &p) {
     return p.distribution.given || !p.curve.empty() || !p.naca.empty() || !p.airfoil.empty();
 }
@@ -132,6 +128,10 @@ void curve_nodes(const SidePiece &p, int n, const Constants &constants, std::vec
 }
 
 #else  // the library has no curves
+
+namespace {
+const char *unavailable = ": is not available in this build of eg2d (it has no curves)";
+}
 
 bool curves_available() { return false; }
 

@@ -183,13 +183,17 @@ void side_nodes(const SideSpec &spec, int n, bool closed, const Constants &const
     double total = 0;
     for (std::size_t k = 0; k < m; ++k) {
         const SidePiece &p = spec.pieces[k];
-        if (p.share > 0) {
+        if (m == 1) {
+            weight[k] = 1;
+        } else if (p.share > 0) {
             weight[k] = p.share;
         } else if (!p.px.empty() && !needs_curve(p)) {
             weight[k] = polyline_length(p.px, p.py);
-        } else {
+        } else {  // the length of the piece's curve, sampled evenly (whatever its own distribution)
+            SidePiece even = p;
+            if (needs_curve(even)) even.distribution = Distribution{true, 0, 0, 0, p.where};  // kind 0: EG2D_DIST_UNIFORM
             std::vector<double> sx, sy;
-            piece_nodes(p, 257, n, m == 1, constants, sx, sy);
+            piece_nodes(even, 257, n, false, constants, sx, sy);
             weight[k] = polyline_length(sx, sy);
         }
         total += weight[k];
