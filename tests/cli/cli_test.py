@@ -101,7 +101,7 @@ class ErrorMessages(unittest.TestCase):
     def test_unknown_key_in_a_side(self):
         self.check('size = [9, 9]\n' + self.GOOD_SIDES + 'z = "1"\n', 3,
                    "CASE:15:1: key 'sides.left.z': unknown key (expected one of: x, y, points, file, naca, "
-                   "airfoil, curve, closed_te, distribution, reverse, share)")
+                   "airfoil, curve, closed_te, distribution, reverse, share, sliding)")
 
     def test_wrong_type(self):
         self.check('size = [9, 9]\n[solver]\ntolerance = true\n' + self.GOOD_SIDES, 3,
@@ -281,6 +281,28 @@ class Sides(unittest.TestCase):
             xy = struct.unpack("<50d", data[20:20 + 400])
             left_y = [xy[25 + 5 * j] for j in range(5)]
             self.assertEqual(left_y, [0.0, 0.25, 0.5, 0.75, 1.0])
+
+
+    def test_sliding_side(self):
+        """sliding = true: the top's nodes slide along it until the grid lines meet it at 90 degrees."""
+        if not features()["geometry"]["curves"]:
+            self.skipTest("this build has no curves")
+        ortho = r"top (\d+\.\d+)/(\d+\.\d+)"
+        with tempfile.TemporaryDirectory() as d:
+            with open(os.path.join(EXAMPLES, "swan.toml")) as f:
+                text = f.read()
+            with open(os.path.join(d, "fixed.toml"), "w") as f:
+                f.write(text)
+            with open(os.path.join(d, "sliding.toml"), "w") as f:
+                f.write(text.replace('y = "1 - 2*s + 2*s^2"', 'y = "1 - 2*s + 2*s^2"\nsliding = true'))
+            fixed = run("run", os.path.join(d, "fixed.toml"), "-o", d, "--size", "33x33", "--quiet")
+            sliding = run("run", os.path.join(d, "sliding.toml"), "-o", d, "--size", "33x33", "--quiet")
+            self.assertEqual(sliding[0], 0, sliding)
+            fmax, fmean = map(float, re.search(ortho, fixed[1]).groups())
+            smax, smean = map(float, re.search(ortho, sliding[1]).groups())
+            self.assertGreater(fmean, 20)   # 26.75 deg with fixed nodes
+            self.assertLess(smean, 1)       # 0.23 deg sliding
+            self.assertLess(smax, 5)        # 4.43 deg (next to the corners, which stay fixed)
 
 
 class CommandLine(unittest.TestCase):

@@ -11,7 +11,7 @@
 namespace eg2dtool {
 
 bool needs_curve(const SidePiece &p) {
-    return p.distribution.given || !p.curve.empty() || !p.naca.empty() || !p.airfoil.empty();
+    return p.distribution.given || !p.curve.empty() || !p.naca.empty() || !p.airfoil.empty() || p.sliding;
 }
 
 #ifdef EG2D_DIST_VINOKUR
@@ -92,19 +92,29 @@ Distribution parse_distribution(const toml::node &node, const Location &where, c
     return d;
 }
 
-void curve_nodes(const SidePiece &p, int n, const Constants &constants, std::vector<double> &x,
-                 std::vector<double> &y) {
-    eg2d_curve *raw = nullptr;
+namespace {
+
+// The library curve of a piece, with what its callback needs kept alive beside it.
+struct PieceCurve {
     std::unique_ptr<Formula> fx, fy;
     FormulaCurve user{nullptr, nullptr, nullptr};
-    Location at = p.where;
+    CurvePtr curve;
+    Location at;
+};
+
+std::unique_ptr<PieceCurve> make_curve(const SidePiece &p, const Constants &constants) {
+    auto c = std::make_unique<PieceCurve>();
+    eg2d_curve *raw = nullptr;
+    c->at = p.where;
     if (!p.x.empty()) {
-        fx = std::make_unique<Formula>(p.x, std::vector<std::string>{"s"}, constants, p.x_at);
-        fy = std::make_unique<Formula>(p.y, std::vector<std::string>{"s"}, constants, p.y_at);
-        user.fx = fx.get();
-        user.fy = fy.get();
-        const int status = eg2d_curve_function(&formula_point, &user, &raw);
-        if (user.failure) throw *user.failure;
+        c->fx = std::make_unique<Formula>(p.x, std::vector<std::string>{"s"}, constants, p.x_at);
+        c->fy = std::make_unique<Formula>(p.y, std::vector<std::string>{"s"}, constants, p.y_at);
+        c->user.fx = c->fx.get();
+        c->user.fy = c->fy.get();
+        const int status = eg2d_curve_function(&formula_point, &c->user, &raw);
+        c->curve.reset(raw);  // owned before anything can throw
+        raw = nullptr;
+        if (c->user.failure) throw *c->user.failure;
         check(status, p.x_at);
     } else if (!p.naca.empty()) {
         check(eg2d_curve_naca4(p.naca.c_str(), p.closed_te ? EG2D_NACA_CLOSED_TE : 0, &raw), p.where);
@@ -112,19 +122,42 @@ void curve_nodes(const SidePiece &p, int n, const Constants &constants, std::vec
         check(eg2d_curve_read_airfoil(p.airfoil.c_str(), &raw), p.points_at);
     } else {
         const int count = static_cast<int>(p.px.size());
-        at = p.points_at;
+        c->at = p.points_at;
         check(p.curve == "spline" ? eg2d_curve_spline(count, p.px.data(), p.py.data(), &raw)
                                   : eg2d_curve_polyline(count, p.px.data(), p.py.data(), &raw),
               p.points_at);
     }
-    CurvePtr curve(raw);
-    const Distribution uniform;
-    const Distribution &d = p.distribution.given ? p.distribution : uniform;
+    if (raw) c->curve.reset(raw);
+    return c;
+}
+
+const Distribution &distribution_of(const SidePiece &p) {
+    static const Distribution uniform;  // kind 0: EG2D_DIST_UNIFORM
+    return p.distribution.given ? p.distribution : uniform;
+}
+
+}  // namespace
+
+void curve_nodes(const SidePiece &p, int n, const Constants &constants, std::vector<double> &x,
+                 std::vector<double> &y) {
+    const auto c = make_curve(p, constants);
+    const Distribution &d = distribution_of(p);
     x.assign(static_cast<std::size_t>(n), 0);
     y.assign(x.size(), 0);
-    const int status = eg2d_curve_points(curve.get(), n, d.kind, d.p1, d.p2, x.data(), y.data());
-    if (user.failure) throw *user.failure;
-    check(status, p.distribution.given ? d.where : at);
+    const int status = eg2d_curve_points(c->curve.get(), n, d.kind, d.p1, d.p2, x.data(), y.data());
+    if (c->user.failure) throw *c->user.failure;
+    check(status, p.distribution.given ? d.where : c->at);
+}
+
+SlidingSide::SlidingSide(eg2d_grid *grid, const SideSpec &spec, const Constants &constants) {
+    const SidePiece &p = spec.pieces.front();
+    auto c = make_curve(p, constants);
+    const Distribution &d = distribution_of(p);
+    const int flags = EG2D_CURVE_SLIDING | (p.reverse ? EG2D_CURVE_REVERSE : 0);
+    const int status = eg2d_set_side_curve(grid, spec.side, c->curve.get(), d.kind, d.p1, d.p2, flags);
+    if (c->user.failure) throw *c->user.failure;
+    if (status != EG2D_OK) throw Failure(exit_code_for_status(status), spec.where.str() + ": " + eg2d_last_error(grid));
+    keep_ = std::shared_ptr<void>(c.release(), [](void *q) { delete static_cast<PieceCurve *>(q); });
 }
 
 #else  // the library has no curves
@@ -141,6 +174,10 @@ Distribution parse_distribution(const toml::node &, const Location &where, const
 
 void curve_nodes(const SidePiece &p, int, const Constants &, std::vector<double> &, std::vector<double> &) {
     throw Failure(EXIT_UNSUPPORTED, p.where.str() + unavailable);
+}
+
+SlidingSide::SlidingSide(eg2d_grid *, const SideSpec &spec, const Constants &) {
+    throw Failure(EXIT_UNSUPPORTED, spec.where.str() + unavailable);
 }
 
 #endif

@@ -12,6 +12,7 @@
 
 #include "failure.hpp"
 #include "features.hpp"
+#include "piece_curve.hpp"
 #include "progress.hpp"
 
 namespace eg2dtool {
@@ -155,7 +156,12 @@ int run_case(const Case &c, const RunOptions &o) {
     check(g, eg2d_set_system(g, c.system), c.system_at);
     check(g, eg2d_set_solver(g, c.solver), c.solver_at);
     for (const auto &p : c.parameters) check(g, eg2d_set_parameter(g, p.id, p.value), p.where);
+    std::vector<SlidingSide> sliding;  // alive for the whole run
     for (const auto &s : c.sides) {
+        if (s.pieces.front().sliding) {
+            sliding.emplace_back(g, s, c.constants);
+            continue;
+        }
         const bool along_i = s.side == EG2D_SIDE_JMIN || s.side == EG2D_SIDE_JMAX;
         std::vector<double> x, y;
         side_nodes(s, along_i ? c.ni : c.nj, c.topology == EG2D_TOPO_O, c.constants, x, y);

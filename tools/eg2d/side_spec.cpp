@@ -15,7 +15,7 @@ namespace eg2dtool {
 namespace {
 
 const std::vector<std::string> piece_keys = {"x",        "y",     "points",       "file",    "naca",  "airfoil",
-                                             "curve",    "closed_te", "distribution", "reverse", "share"};
+                                             "curve",    "closed_te", "distribution", "reverse", "share",   "sliding"};
 
 std::string point(double x, double y) {
     std::ostringstream s;
@@ -43,7 +43,7 @@ SidePiece parse_piece(const toml::table &table, const Location &where, const std
     Fields f(table, where, piece_keys);
     f.finish();
     if (!curves_available())
-        for (const char *k : {"naca", "airfoil", "curve", "closed_te", "distribution"})
+        for (const char *k : {"naca", "airfoil", "curve", "closed_te", "distribution", "sliding"})
             if (f.has(k)) throw Failure(EXIT_UNSUPPORTED, f.at(k).str() + ": is not available in this build of eg2d");
     SidePiece p;
     p.where = where;
@@ -83,6 +83,7 @@ SidePiece parse_piece(const toml::table &table, const Location &where, const std
     }
     if (f.has("distribution")) p.distribution = parse_distribution(*f.node("distribution"), f.at("distribution"), constants);
     p.reverse = f.boolean("reverse", false);
+    p.sliding = f.boolean("sliding", false);
     if (f.has("share")) {
         p.share = f.number("share", constants);
         if (!(p.share > 0 && p.share < 1)) throw Failure(EXIT_CASE, f.at("share").str() + ": must be in (0, 1)");
@@ -163,6 +164,9 @@ SideSpec parse_side(const toml::node &node, int side, const std::string &name, c
     } else {
         throw Failure(EXIT_CASE, where.str() + ": expected a table (or an array of tables), found " + type_name(node));
     }
+    for (const auto &p : spec.pieces)
+        if (p.sliding && spec.pieces.size() > 1)
+            throw Failure(EXIT_CASE, p.where.str() + ": sliding needs a side of one piece (the nodes slide along one curve)");
     int shares = 0;
     double total = 0;
     for (const auto &p : spec.pieces)

@@ -36,6 +36,7 @@ struct SidePiece {
     std::string airfoil;               // path of a Selig/Lednicer airfoil file
     Distribution distribution;
     bool reverse = false;              // run the piece from its end to its start
+    bool sliding = false;              // nodes slide along the curve (a side of one piece)
     double share = -1;                 // fraction of the side's intervals; < 0: by length
 };
 
