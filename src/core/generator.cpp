@@ -114,9 +114,16 @@ ResidualInfo Generator::residual() const {
 }
 
 Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
+    // The control terms are coefficients of the quasi-linear (Winslow/TTM)
+    // equation; Laplace has no place for them, and silently dropping the
+    // user's controls would hand back a grid they did not ask for.
+    if (system_ == System::Laplace && !controls_.empty())
+        fail(Failure::State, "control terms are set but the system is Laplace: controls need "
+                             "EG2D_SYSTEM_WINSLOW (or clear the controls)");
     ensure_ready();
     const ControlFields &fields = controls_.update(grid_, true);
     Problem problem{grid_, system_, fields, settings};
+    problem.dynamic_controls = controls_.has_dynamic();
     const double extent = grid_.extent();
     double r = eg2d::residual(system_, problem.level(), extent).value;
     double best = r;
@@ -124,7 +131,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
         if (stop_at_tolerance && r <= settings.tolerance) return RunEnd::Converged;
         saved_x_ = grid_.x;
         saved_y_ = grid_.y;
-        if (it > 0 && controls_.has_dynamic()) controls_.update(grid_, false);
+        if (controls_.has_dynamic()) controls_.advance(grid_, settings);
         solver_->iterate(problem);
         const ResidualInfo ri = eg2d::residual(system_, problem.level(), extent);
         if (!std::isfinite(ri.value) ||
