@@ -9,13 +9,14 @@ extern "C" {
 /* Distance between nodes (i0, j0) and (i1, j1) of an ni-wide grid. */
 double measure_distance(const double *x, const double *y, int ni, int i0, int j0, int i1, int j1);
 
-/* At the wall side JMIN (j = 0) of an ni x nj grid, over wall nodes i in
- * [i_begin, i_end): the largest deviation (degrees) from 90 of the angle
- * between the wall's central tangent r(i+1,0) - r(i-1,0) (periodic = 1 wraps
- * round an O-grid) and the first grid segment r(i,1) - r(i,0), and the
- * smallest and largest first-cell height |r(i,1) - r(i,0)|. */
-void measure_wall_jmin(const double *x, const double *y, int ni, int periodic, int i_begin, int i_end,
-                       double *max_angle_deviation, double *min_height, double *max_height);
+/* At the wall `side` (EG2D_SIDE_*) of an ni x nj grid, over the wall nodes
+ * k in [k_begin, k_end) (k = i on JMIN/JMAX, j on IMIN/IMAX): the largest
+ * deviation (degrees) from 90 of the angle between the wall's central
+ * tangent r(k+1) - r(k-1) (periodic = 1 wraps round an O-grid) and the first
+ * grid segment from the wall node to its inward neighbour, and the smallest
+ * and largest length of that segment (the first-cell height). */
+void measure_wall(const double *x, const double *y, int ni, int nj, int side, int periodic, int k_begin, int k_end,
+                  double *max_angle_deviation, double *min_height, double *max_height);
 
 #ifdef __cplusplus
 }
