@@ -21,6 +21,7 @@ const ParameterInfo kParameters[] = {
     {EG2D_PARAM_WALL_DECAY, "wall_decay", 0.01, 10.0, false, false, false, false, &Settings::wall_decay},
     {EG2D_PARAM_WALL_RELAXATION, "wall_relaxation", 0.0, 1.0, true, false, false, false,
      &Settings::wall_relaxation},
+    {EG2D_PARAM_SVG_QUALITY, "svg_quality", -1.0, 99.0, false, false, true, false, &Settings::svg_quality},
 };
 }  // namespace
 

@@ -14,6 +14,7 @@ struct Settings {
     // Wall orthogonality (src/controls/wall.cpp).
     double wall_decay = 0.3;          // a: the wall control decays as exp(-a (m-1)) at depth m
     double wall_relaxation = 0.3;     // under-relaxation of its updates, (0, 1]
+    double svg_quality = -1;          // EG2D_QUALITY_* colouring SVG cells, -1 none
 };
 
 }  // namespace eg2d
