@@ -425,6 +425,8 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   sits on the wall normal at the requested height (normal = perpendicular
  *   to the wall's central difference r(k+1) - r(k-1)). On a single block the
  *   end nodes next to a corner shared with another wall side are left free.
+ *   While it is active, point SOR's automatic relaxation is 1 (Gauss-Seidel):
+ *   over-relaxing its strong terms diverges at sharp trailing edges.
  * NONE removes either. */
 #define EG2D_ORTHO_NONE              0
 #define EG2D_ORTHO_MIDDLECOFF_THOMAS 1

@@ -20,12 +20,8 @@ public:
     void iterate(Problem &p) override {
         const Level L = p.level();
         const Connectivity &conn = *L.conn;
-        // Automatic: seed 003's optimum for Laplace; Gauss-Seidel while a wall
-        // control is being updated (over-relaxing its non-diagonally-dominant
-        // rows next to sharp convex corners diverges: NACA0012 trailing edge).
-        const double omega = p.settings.relaxation > 0.0 ? p.settings.relaxation
-                             : p.dynamic_controls     ? 1.0
-                                                      : optimal_sor_omega(conn.ni(), conn.nj());
+        const double omega =
+            p.settings.relaxation > 0.0 ? p.settings.relaxation : optimal_sor_omega(conn.ni(), conn.nj());
         auto relax = [&](int i, int j) {
             const Stencil s = conn.stencil(i, j);
             const NodeEquation eq = node_equation(p.system, L, s);

@@ -17,9 +17,6 @@ struct Problem {
     System system;
     const ControlFields &controls;  // the fine grid's control fields
     const Settings &settings;
-    // A control updated between iterations (wall orthogonality) is active:
-    // its strong, changing first-order terms make over-relaxation unsafe.
-    bool dynamic_controls = false;
 
     // The fine grid as an operator Level.
     Level level() const {

@@ -31,7 +31,7 @@ static void check_o_wall(const char *what, int ni, int nj, int (*make)(eg2d_grid
     int id;
     for (id = 0; id < 100; ++id) {
         eg2d_grid *g;
-        double dev, hmin, hmax, dev0, h0min, h0max, folded;
+        double dev, hmin, hmax, dev0, h0min, h0max, folded, q;
         int it;
         if (!eg2d_solver_name(id)) continue;
         /* Without the control, for the record. */
@@ -61,6 +61,9 @@ static void check_o_wall(const char *what, int ni, int nj, int (*make)(eg2d_grid
                       100 * fmax(fabs(hmin / h - 1), fabs(hmax / h - 1)), dev0, h0min, h0max);
         assert_true(folded == 0.0);
         assert_true(dev < 1.0);
+        /* The library's own orthogonality metric (src/quality, written apart from the control) agrees. */
+        assert_int_equal(eg2d_get_quality(g, EG2D_QUALITY_ORTHO_MAX_JMIN, &q), EG2D_OK);
+        assert_true(q < 1.0);
         assert_true(fabs(hmin / h - 1.0) < 0.05 && fabs(hmax / h - 1.0) < 0.05);
         eg2d_destroy(g);
     }
