@@ -197,7 +197,7 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
 /* Controls (200-299), see "Grid control" below. */
 #define EG2D_PARAM_WALL_DECAY       200  /* [0.01, 10], default 0.3: decay rate a (per cell) of the
                                             wall control, which acts as exp(-a (m-1)) at depth m */
-#define EG2D_PARAM_WALL_RELAXATION  201  /* (0, 1], default 0.3: under-relaxation of the wall
+#define EG2D_PARAM_WALL_RELAXATION  201  /* (0, 1], default 0.1: under-relaxation of the wall
                                             control's updates between iterations */
 #define EG2D_PARAM_SVG_QUALITY      300  /* output 300-399. EG2D_FORMAT_SVG colours cells by this
                                             EG2D_QUALITY_* metric (one with per-cell values);
@@ -425,8 +425,8 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   sits on the wall normal at the requested height (normal = perpendicular
  *   to the wall's central difference r(k+1) - r(k-1)). On a single block the
  *   end nodes next to a corner shared with another wall side are left free.
- *   While it is active, point SOR's automatic relaxation is 1 (Gauss-Seidel):
- *   over-relaxing its strong terms diverges at sharp trailing edges.
+ *   While it is active, the automatic relaxation (EG2D_PARAM_RELAXATION 0)
+ *   is 1: over-relaxing its strong terms diverges at sharp trailing edges.
  * NONE removes either. */
 #define EG2D_ORTHO_NONE              0
 #define EG2D_ORTHO_MIDDLECOFF_THOMAS 1

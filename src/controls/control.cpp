@@ -16,6 +16,7 @@ ControlSet &ControlSet::operator=(const ControlSet &other) {
 }
 
 void ControlSet::put(std::unique_ptr<Control> c) {
+    if (c->kind() == ControlKind::Other) return add(std::move(c));
     for (auto &old : controls_)
         if (old->kind() == c->kind()) {
             old = std::move(c);

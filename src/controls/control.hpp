@@ -12,14 +12,14 @@
 namespace eg2d {
 
 // Which API call owns a control: a grid has at most one control of each kind
-// (line and point sources share one).
-enum class ControlKind { Sources, Arrays, Orthogonality, ParameterGrid, Weight };
+// (line and point sources share one); Other is any number of unnamed terms.
+enum class ControlKind { Other, Sources, Arrays, Orthogonality, ParameterGrid, Weight };
 
 class Control {
 public:
     virtual ~Control() = default;
     virtual std::unique_ptr<Control> clone() const = 0;
-    virtual ControlKind kind() const = 0;
+    virtual ControlKind kind() const { return ControlKind::Other; }
     // Adds this term to `fields` for the grid as it is now. Never changes the
     // control's state: the residual and the run see the same fields.
     virtual void add_to(const Grid &grid, ControlFields &fields) const = 0;
@@ -41,7 +41,8 @@ public:
     ControlSet(ControlSet &&) = default;
     ControlSet &operator=(ControlSet &&) = default;
 
-    // Replaces the control of the same kind, if any.
+    // Adds a term; put() replaces the control of the same kind, if any.
+    void add(std::unique_ptr<Control> c) { controls_.push_back(std::move(c)); stale_ = true; }
     void put(std::unique_ptr<Control> c);
     void remove(ControlKind k);
     Control *find(ControlKind k);

@@ -122,14 +122,13 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
                              "EG2D_SYSTEM_WINSLOW (or clear the controls)");
     ensure_ready();
     const ControlFields &fields = controls_.update(grid_, true);
-    // Point SOR's automatic factor is seed 003's optimum for Laplace. While a
-    // wall control is updated between sweeps its strong first-order terms
-    // (rows that are not diagonally dominant next to a sharp convex corner,
-    // the NACA0012 trailing edge) make over-relaxation diverge: automatic
-    // means Gauss-Seidel then.
+    // The automatic relaxation factor is an over-relaxation (seed 003's
+    // optimum for Laplace). While a wall control is updated between sweeps
+    // its strong first-order terms (rows that are not diagonally dominant
+    // next to a sharp convex corner, the NACA0012 trailing edge) make
+    // over-relaxation diverge: automatic means 1 then.
     Settings run_settings = settings;
-    if (controls_.has_dynamic() && solver_info_->id == EG2D_SOLVER_PSOR && run_settings.relaxation == 0.0)
-        run_settings.relaxation = 1.0;
+    if (controls_.has_dynamic() && run_settings.relaxation == 0.0) run_settings.relaxation = 1.0;
     Problem problem{grid_, system_, fields, run_settings};
     const double extent = grid_.extent();
     double r = eg2d::residual(system_, problem.level(), extent).value;

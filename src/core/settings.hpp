@@ -13,7 +13,7 @@ struct Settings {
     double fold_check = 1;            // 1: solve fails with Folded on a folded converged grid
     // Wall orthogonality (src/controls/wall.cpp).
     double wall_decay = 0.3;          // a: the wall control decays as exp(-a (m-1)) at depth m
-    double wall_relaxation = 0.3;     // under-relaxation of its updates, (0, 1]
+    double wall_relaxation = 0.1;     // under-relaxation of its updates, (0, 1]
     double svg_quality = -1;          // EG2D_QUALITY_* colouring SVG cells, -1 none
 };
 

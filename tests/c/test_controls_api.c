@@ -170,7 +170,7 @@ static void test_parameter_bounds(void **state) {
     assert_int_equal(eg2d_parameter_bounds(EG2D_PARAM_WALL_DECAY, &lo, &hi, &def), EG2D_OK);
     assert_true(lo == 0.01 && hi == 10.0 && def == 0.3);
     assert_int_equal(eg2d_parameter_bounds(EG2D_PARAM_WALL_RELAXATION, &lo, &hi, &def), EG2D_OK);
-    assert_true(lo == 0.0 && hi == 1.0 && def == 0.3);
+    assert_true(lo == 0.0 && hi == 1.0 && def == 0.1);
 }
 
 int main(void) {
