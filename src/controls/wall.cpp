@@ -36,6 +36,7 @@ namespace {
 constexpr double kPsiLimit = 3.0;
 constexpr double kPhiLimit = 1.0;
 constexpr double kWidenLimit = 4.0;
+constexpr double kMinGain = 1e-3;   // the smallest gain an oscillating node is damped to
 constexpr double kStepLimit = 0.02;  // largest change of a coefficient per update: a ramp from the start grid
 constexpr double kDecayCutoff = 1e-4;  // depths where exp(-a (m-1)) is below this get nothing
 
@@ -94,11 +95,17 @@ public:
             if (!active(g, side)) {
                 phi_[side].clear();
                 psi_[side].clear();
+                gain_[side].clear();
+                lastp_[side].clear();
+                lastq_[side].clear();
                 continue;
             }
             const int n = wall_length(g, side);
             phi_[side].resize(static_cast<std::size_t>(n), 0.0);
             psi_[side].resize(static_cast<std::size_t>(n), 0.0);
+            gain_[side].resize(static_cast<std::size_t>(n), 1.0);
+            lastp_[side].resize(static_cast<std::size_t>(n), 0.0);
+            lastq_[side].resize(static_cast<std::size_t>(n), 0.0);
             // The other walls' current contributions count as "others" too.
             ControlFields rest = others;
             for (int o = 0; o < 4; ++o)
@@ -107,9 +114,18 @@ public:
             for (int k = 0; k < n; ++k) {
                 double phi, psi;
                 if (target(g, side, k, sign, rest, phi, psi)) {
-                    double &p = phi_[side][k], &q = psi_[side][k];
-                    p += std::clamp(omega * (phi - p), -kStepLimit, kStepLimit);
-                    q += std::clamp(omega * (psi - q), -kStepLimit, kStepLimit);
+                    double &p = phi_[side][k], &q = psi_[side][k], &gain = gain_[side][k];
+                    // A node whose update flips direction is overshooting (a
+                    // solver that converges much per iteration answers a change
+                    // at once): halve its gain; let it recover slowly otherwise.
+                    const double dp = phi - p, dq = psi - q;
+                    double &lp = lastp_[side][k], &lq = lastq_[side][k];
+                    const bool turned = dp * lp < 0.0 || dq * lq < 0.0;
+                    gain = turned ? std::max(0.5 * gain, kMinGain) : std::min(1.1 * gain, 1.0);
+                    lp = dp;
+                    lq = dq;
+                    p += std::clamp(gain * omega * dp, -kStepLimit, kStepLimit);
+                    q += std::clamp(gain * omega * dq, -kStepLimit, kStepLimit);
                 }
             }
         }
@@ -234,6 +250,8 @@ private:
     // The state: tangential (phi) and normal (psi) coefficients at depth 1,
     // per along-wall index, and the decay they were made with.
     std::array<std::vector<double>, 4> phi_, psi_;
+    // Per node: the gain on the relaxation and the last update's direction.
+    std::array<std::vector<double>, 4> gain_, lastp_, lastq_;
     double decay_ = 0.0;
 };
 }  // namespace

@@ -34,14 +34,18 @@ static void check_o_wall(const char *what, int ni, int nj, int (*make)(eg2d_grid
         double dev, hmin, hmax, dev0, h0min, h0max, folded, q;
         int it;
         if (!eg2d_solver_name(id)) continue;
-        /* Without the control, for the record. */
+        /* Without the control, for the record only (a solver's own trouble here is not this test's). */
         assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
         assert_int_equal(make(g), EG2D_OK);
         assert_int_equal(eg2d_set_solver(g, id), EG2D_OK);
         assert_int_equal(eg2d_set_tolerance(g, 1e-9), EG2D_OK);
-        if (eg2d_solve(g) != EG2D_OK) fail_msg("%s", eg2d_last_error(g));
-        assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
-        measure_wall(x, y, ni, nj, EG2D_SIDE_JMIN, 1, 0, ni - 1, &dev0, &h0min, &h0max);
+        dev0 = h0min = h0max = NAN;
+        if (eg2d_solve(g) == EG2D_OK) {
+            assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+            measure_wall(x, y, ni, nj, EG2D_SIDE_JMIN, 1, 0, ni - 1, &dev0, &h0min, &h0max);
+        } else {
+            print_message("(%s without control: %s)\n", eg2d_solver_name(id), eg2d_last_error(g));
+        }
         eg2d_destroy(g);
 
         assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
