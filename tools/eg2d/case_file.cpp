@@ -108,16 +108,26 @@ void read_controls(const Fields &top, Case &c) {
 #ifdef EG2D_XI
     if (f.has("wall_spacing")) {
         const auto &valid = side_names(c.topology);
-        std::vector<std::string> keys;
-        for (const auto &s : valid) keys.push_back(s.first);
-        Fields w(f.table("wall_spacing"), f.at("wall_spacing"), keys);
+        std::vector<std::string> side_keys;
+        for (const auto &s : valid) side_keys.push_back(s.first);
+        Fields w(f.table("wall_spacing"), f.at("wall_spacing"), side_keys);
         w.finish();
-        for (const auto &s : valid)
-            if (w.has(s.first)) {
-                const double h = w.number(s.first, c.constants);
-                if (h < 0) throw Failure(EXIT_CASE, w.at(s.first).str() + ": must be >= 0 (0 = orthogonality only)");
-                c.wall_spacings.push_back({s.second, h, w.at(s.first)});
+        for (const auto &s : valid) {
+            if (!w.has(s.first)) continue;
+            double h;
+            if (w.node(s.first)->is_table()) {  // from a target y+ (eg2d_first_cell_height)
+                Fields y(w.table(s.first), w.at(s.first), {"yplus", "reynolds", "chord"});
+                y.finish();
+                const int status = eg2d_first_cell_height(y.number("yplus", c.constants), y.number("reynolds", c.constants),
+                                                          y.number("chord", 1, c.constants), &h);
+                if (status != EG2D_OK)
+                    throw Failure(EXIT_GEOMETRY, w.at(s.first).str() + ": " + eg2d_last_error(nullptr));
+            } else {
+                h = w.number(s.first, c.constants);
             }
+            if (h < 0) throw Failure(EXIT_CASE, w.at(s.first).str() + ": must be >= 0 (0 = orthogonality only)");
+            c.wall_spacings.push_back({s.second, h, w.at(s.first)});
+        }
     }
     auto each_table = [&](const char *key, auto &&fn) {
         if (!f.has(key)) return;
