@@ -308,6 +308,55 @@ class Sides(unittest.TestCase):
             self.assertLess(smax, 5)        # 4.43 deg (next to the corners, which stay fixed)
 
 
+class Controls(unittest.TestCase):
+    """The [controls] keys reach the library: each changes the grid, and bad values are reported at their key."""
+
+    def summary(self, text, d, name):
+        path = os.path.join(d, name + ".toml")
+        with open(path, "w") as f:
+            f.write(text)
+        code, out, err = run("run", path, "-o", d, "--quiet", "--size", "17x17")
+        self.assertEqual(code, 0, out + err)
+        return re.search(r"cell area (\S+) to (\S+),", out).groups()
+
+    def test_each_control_changes_the_grid(self):
+        if not features()["controls"].get("source_arrays"):
+            self.skipTest("this build has no controls")
+        with open(os.path.join(EXAMPLES, "channel-1.toml")) as f:
+            with_sources = f.read()
+        arrays = with_sources[with_sources.index("[controls.source_arrays]"):with_sources.index("[sides.bottom]")]
+        with open(os.path.join(EXAMPLES, "dome.toml")) as f:
+            plain = f.read()
+        a = plain.index("[sides.bottom]")
+        plain = plain[:a] + '[constants]\nn = "ni - 1"\nm = "nj - 1"\n' + plain[a:]
+        a = plain.index("[sides.bottom]")
+        with tempfile.TemporaryDirectory() as d:
+            base = self.summary(plain, d, "plain")
+            for name, extra in [
+                    ("arrays", arrays),
+                    ("line", '[[controls.line_source]]\ndirection = "eta"\nline = 0\namplitude = 10\ndecay = 0.3\n'),
+                    ("point", '[[controls.point_source]]\nxi = 8\neta = 8\namplitude = 10\ndecay = 0.3\n'),
+                    ("weight", '[controls]\nweight = "1 + 4*exp(-((i - 8)^2 + (j - 8)^2)/8)"\n'),
+                    ("grid", '[controls.parameter_grid]\ni = { kind = "line", a = 0.5 }\n'),
+                    ("wall", '[controls]\northogonality = "wall"\nwall_spacing = { bottom = 0.01 }\n')]:
+                self.assertNotEqual(self.summary(plain[:a] + extra + plain[a:], d, name), base, name)
+
+    def test_bad_control_values(self):
+        if not features()["controls"].get("source_arrays"):
+            self.skipTest("this build has no controls")
+        t = ErrorMessages()
+        t.check('size = [9, 9]\n[controls.source_arrays]\nP = "i +"\n' + ErrorMessages.GOOD_SIDES, 3,
+                "CASE:3:5: key 'controls.source_arrays.P': bad formula \"i +\": Unexpected end of expression at position 4")
+        t.check('size = [9, 9]\n[[controls.line_source]]\ndirection = "zeta"\nline = 0\namplitude = 1\ndecay = 1\n'
+                + ErrorMessages.GOOD_SIDES, 3,
+                "CASE:3:13: key 'controls.line_source[0].direction': \"zeta\" is not one of: xi, eta")
+        t.check('size = [9, 9]\n[controls]\nwall_spacing = { top = -1 }\n' + ErrorMessages.GOOD_SIDES, 3,
+                "CASE:3:24: key 'controls.wall_spacing.top': must be >= 0 (0 = orthogonality only)")
+        t.check('size = [9, 9]\n[[controls.line_source]]\ndirection = "xi"\nline = 20\namplitude = 1\ndecay = 1\n'
+                + ErrorMessages.GOOD_SIDES, 4, "CASE:2:1: key 'controls.line_source[0]': eg2d_add_line_source: line = 20: "
+                "must be in [0, 8] (xi index units)")
+
+
 class CommandLine(unittest.TestCase):
     def test_help_documents_exit_codes_and_an_example(self):
         code, out, _ = run("--help")
