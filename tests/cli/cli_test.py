@@ -408,6 +408,19 @@ class CommandLine(unittest.TestCase):
             self.assertRegex(out, r"quality: [1-9]\d* folded cells")
             self.assertFalse(os.path.exists(os.path.join(d, "out")))
 
+    def test_diverged_exit_6(self):
+        # point SOR over-relaxed far beyond Winslow's stability
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "case.toml")
+            with open(os.path.join(EXAMPLES, "swan.toml")) as f:
+                text = f.read().replace('method = "psor"', 'method = "psor"\nrelaxation = 1.99')
+            with open(path, "w") as f:
+                f.write(text)
+            code, out, err = run("run", path, "-o", os.path.join(d, "out"), "--quiet", "--size", "17x17")
+            self.assertEqual(code, 6, out + err)
+            self.assertRegex(err, r"^eg2d: .*: eg2d_solve: psor diverged at iteration \d+: .*\(no files written\)\n$")
+            self.assertFalse(os.path.exists(os.path.join(d, "out")))
+
     def test_unwritable_output_exit_8(self):
         with tempfile.TemporaryDirectory() as d:
             blocker = os.path.join(d, "file")
