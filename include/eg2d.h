@@ -243,9 +243,13 @@ EG2D_API int eg2d_parameter_bounds(int param, double *lower, double *upper, doub
  * and the implicit operator factored into a xi and an eta line operator (the
  * mixed derivative is left explicit); the xi lines of an O-grid are cyclic,
  * so the branch cut moves with the interior. One iteration = one time step =
- * one xi and one eta line sweep. The pseudo-time step of node (i, j) is
- * dtau / (2(alpha+gamma)) (Laplace: dtau/4), so dtau is dimensionless: at
- * dtau = 1 and omega = 1 the explicit part is one Jacobi step. The steps run
+ * one xi and one eta line sweep. The pseudo-time step is one number for
+ * the whole grid, dtau / D, with D the geometric mean over the unknown nodes
+ * of 2(alpha+gamma) (Laplace: D = 4), so dtau is dimensionless: at dtau = 1
+ * and omega = 1 the explicit part is one Jacobi step at a node of average
+ * cells. (A step per node, dtau / (2(alpha+gamma)), diverges on airfoil
+ * O-grids: the small wall cells then move as far in index space as the far
+ * field while their lagged coefficients are far off.) The steps run
  * through a cycle of M steps spaced geometrically from dtau_min to dtau_max
  * with repeated end points (dtau_1 = dtau_2, dtau_(M-1) = dtau_M), and the
  * cycle repeats. Every default works untouched; the automatic values are

@@ -10,9 +10,18 @@
 //   [1 - dt (gamma d_etaeta + C_eta d_eta)] dr  = dr*,        r^(n+1) = r^n + dr
 //
 // with a~ = a/(1+a) (eq 8) and the coefficients frozen at r^n (lagged, as in
-// the seed). The step dt is taken node by node as tau / (2(alpha+gamma))
-// (Laplace: tau/4), so tau is dimensionless and the same cycle fits every
-// grid scale; tau runs through the cycle of af_cycle() (seed 004: geometric
+// the seed). The step dt is one number for the whole grid, as in eq 10:
+// tau / D with D the geometric mean over the unknowns of 2(alpha+gamma)
+// (Laplace: 4), so tau is dimensionless and the same cycle fits every grid
+// scale. (A step per node, tau / (2(alpha+gamma)), folds the NACA0012 O-grid
+// from a TFI start: the small wall cells, where Winslow's grid moves farthest
+// from the TFI grid relative to its spacing, then take as large a step in
+// index space as the far field, the lagged coefficients there are far off,
+// and the first cycle's large steps push row 1 through the wall at the
+// leading and trailing edges. The same steps on the coefficients frozen at the
+// start converge: the failure is the lagging, not the factorisation. With one
+// dt each node moves at the rate of the true transient, slowly where its cells
+// are small.) tau runs through the cycle of af_cycle() (seed 004: geometric
 // with repeated end points). The xi factor is cyclic on an O-grid (solved by
 // Sherman-Morrison), so the branch cut moves implicitly with the interior
 // (seed 004 figure 2). One iteration = one step = the two line sweeps.
@@ -30,8 +39,9 @@ constexpr double kPi = 3.14159265358979323846;
 // Automatic cycle: the largest step resolves the smoothest mode of the longest
 // grid line (its eigenvalue is about (pi/n)^2 in units of the diagonal); the
 // steps grow by at most this ratio. Measured on the seed 003 domains, the
-// annulus and an 87x31 O-grid (bench --seed004): ratio 2 beats 3 and 4 on the
-// skewed dome (141 vs 237 vs 357 iterations at 65^2) and ties elsewhere; the
+// annulus and an 87x31 O-grid (bench --seed004), with a step per node: ratio
+// 2 beats 3 and 4 on the skewed dome (141 vs 237 vs 357 iterations at 65^2)
+// and ties elsewhere; the
 // steps ascend through the cycle because large steps first diverge from a TFI
 // start on the dome (Winslow's lagged coefficients).
 constexpr double kStepRatio = 2.0;
@@ -64,6 +74,7 @@ class ApproximateFactorisation final : public Solver {
 public:
     void reset() override {
         step_ = 0;
+        scale_ = 0.0;
         prev_x_.clear();
         prev_y_.clear();
     }
@@ -88,13 +99,16 @@ public:
         // The xi factor, line by line (eq 11); the eta coefficients are kept for eq 12.
         const int ib = conn.i_begin(), ie = conn.i_end(), n = ie - ib;
         row_lo_.resize(n); row_di_.resize(n); row_up_.resize(n); row_c_.resize(n);
+        if (!(scale_ > 0.0)) scale_ = diagonal_scale(p.system, L);
+        const double dt = tau / scale_;
+        double log_sum = 0.0;  // for the next step's scale: one pass over the nodes, not two
         for (int j = conn.j_begin(); j < conn.j_end(); ++j) {
             for (int i = ib; i < ie; ++i) {
                 const Stencil s = conn.stencil(i, j);
                 Metrics m;
                 const NodeEquation eq = node_equation(p.system, L, s, &m);
                 const double alpha = m.alpha, gamma = m.gamma, cxi = m.cxi, ceta = m.ceta;
-                const double dt = tau / eq.diag;
+                log_sum += std::log(eq.diag);
                 const int r = i - ib;
                 row_lo_[r] = -dt * (alpha - 0.5 * cxi);
                 row_di_[r] = 1.0 + 2.0 * dt * alpha;
@@ -158,7 +172,10 @@ public:
             const NodeEquation eq = node_equation(p.system, L, s);
             L.x[s.c] += eq.rx / eq.diag;
             L.y[s.c] += eq.ry / eq.diag;
+            conn.sync_node(L.x, nd.i, nd.j);  // the upper wake's copy, which row 1 there reads
+            conn.sync_node(L.y, nd.i, nd.j);
         }
+        scale_ = std::exp(log_sum / (static_cast<double>(n) * (conn.j_end() - conn.j_begin())));
         if (a_tilde != 0.0) {
             prev_x_.swap(dx_);
             prev_y_.swap(dy_);
@@ -177,7 +194,21 @@ private:
         }
     }
 
+    // D of the step dt = tau / D: the geometric mean over the unknowns of
+    // 2(alpha+gamma) (the scale of L's diagonal, insensitive to the few
+    // largest cells), from the previous step's coefficients (0: not known).
+    static double diagonal_scale(System system, const Level &L) {
+        const Connectivity &conn = *L.conn;
+        double log_sum = 0.0;
+        for (int j = conn.j_begin(); j < conn.j_end(); ++j)
+            for (int i = conn.i_begin(); i < conn.i_end(); ++i)
+                log_sum += std::log(node_equation(system, L, conn.stencil(i, j)).diag);
+        const double count = static_cast<double>(conn.i_end() - conn.i_begin()) * (conn.j_end() - conn.j_begin());
+        return std::exp(log_sum / count);
+    }
+
     long step_ = 0;
+    double scale_ = 0.0;
     std::vector<double> prev_x_, prev_y_;      // r^n - r^(n-1), for a != 0
     std::vector<double> dx_, dy_, lo_, di_, up_;  // corrections and the eta factor
     std::vector<double> row_lo_, row_di_, row_up_, row_c_, work_;
