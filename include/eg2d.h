@@ -242,7 +242,8 @@ EG2D_API int eg2d_parameter_bounds(int param, double *lower, double *upper, doub
  * transients r_tau = L(r), the Warming-Beam time rule with parameters a, b,
  * and the implicit operator factored into a xi and an eta line operator (the
  * mixed derivative is left explicit); the xi lines of an O-grid are cyclic,
- * so the branch cut moves with the interior. One iteration = one time step =
+ * so the branch cut moves with the interior, and a C-grid's wake cut is a xi
+ * line whose nodes the eta lines run through. One iteration = one time step =
  * one xi and one eta line sweep. The pseudo-time step is one number for
  * the whole grid, dtau / D, with D the geometric mean over the unknown nodes
  * of 2(alpha+gamma) (Laplace: D = 4), so dtau is dimensionless: at dtau = 1

@@ -24,7 +24,11 @@
 // are small.) tau runs through the cycle of af_cycle() (seed 004: geometric
 // with repeated end points). The xi factor is cyclic on an O-grid (solved by
 // Sherman-Morrison), so the branch cut moves implicitly with the interior
-// (seed 004 figure 2). One iteration = one step = the two line sweeps.
+// (seed 004 figure 2); a C-grid's wake cut is likewise implicit: the cut is a
+// xi line of its own and each eta line runs through it from the lower half
+// into the upper (relaxed point by point instead, the cut took 195, 362 and
+// 1561 steps on the NACA0012 C-grid at 65, 129, 257 points around; solved
+// with the lines, 91, 172 and 421). One iteration = one step = the two line sweeps.
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -102,39 +106,52 @@ public:
         if (!(scale_ > 0.0)) scale_ = diagonal_scale(p.system, L);
         const double dt = tau / scale_;
         double log_sum = 0.0;  // for the next step's scale: one pass over the nodes, not two
-        for (int j = conn.j_begin(); j < conn.j_end(); ++j) {
-            for (int i = ib; i < ie; ++i) {
-                const Stencil s = conn.stencil(i, j);
-                Metrics m;
-                const NodeEquation eq = node_equation(p.system, L, s, &m);
-                const double alpha = m.alpha, gamma = m.gamma, cxi = m.cxi, ceta = m.ceta;
-                log_sum += std::log(eq.diag);
-                const int r = i - ib;
-                row_lo_[r] = -dt * (alpha - 0.5 * cxi);
-                row_di_[r] = 1.0 + 2.0 * dt * alpha;
-                row_up_[r] = -dt * (alpha + 0.5 * cxi);
-                lo_[s.c] = -dt * (gamma - 0.5 * ceta);
-                di_[s.c] = 1.0 + 2.0 * dt * gamma;
-                up_[s.c] = -dt * (gamma + 0.5 * ceta);
-                dx_[s.c] = dt * gain * eq.rx;
-                dy_[s.c] = dt * gain * eq.ry;
-                if (three_level) {
-                    dx_[s.c] += a_tilde * prev_x_[s.c];
-                    dy_[s.c] += a_tilde * prev_y_[s.c];
-                }
+        // Node (i, j) as entry r of its xi line; its eta coefficients and right-hand side in place.
+        auto assemble = [&](int i, int j, int r) {
+            const Stencil s = conn.stencil(i, j);
+            Metrics m;
+            const NodeEquation eq = node_equation(p.system, L, s, &m);
+            const double alpha = m.alpha, gamma = m.gamma, cxi = m.cxi, ceta = m.ceta;
+            row_lo_[r] = -dt * (alpha - 0.5 * cxi);
+            row_di_[r] = 1.0 + 2.0 * dt * alpha;
+            row_up_[r] = -dt * (alpha + 0.5 * cxi);
+            lo_[s.c] = -dt * (gamma - 0.5 * ceta);
+            di_[s.c] = 1.0 + 2.0 * dt * gamma;
+            up_[s.c] = -dt * (gamma + 0.5 * ceta);
+            dx_[s.c] = dt * gain * eq.rx;
+            dy_[s.c] = dt * gain * eq.ry;
+            if (three_level) {
+                dx_[s.c] += a_tilde * prev_x_[s.c];
+                dy_[s.c] += a_tilde * prev_y_[s.c];
             }
+            return eq.diag;
+        };
+        for (int j = conn.j_begin(); j < conn.j_end(); ++j) {
+            for (int i = ib; i < ie; ++i) log_sum += std::log(assemble(i, j, i - ib));
             double *rx = dx_.data() + static_cast<std::size_t>(ni) * j + ib;
             double *ry = dy_.data() + static_cast<std::size_t>(ni) * j + ib;
             solve_row(conn.periodic_i(), n, rx);
             solve_row(conn.periodic_i(), n, ry);
         }
+        // A C-grid's wake cut is a xi line too, between the outflow and the
+        // trailing edge (both fixed): its nodes are solved with the interior,
+        // as seed 004 does with the O-grid's branch cut, not relaxed after it.
+        const int wake = conn.wake();  // 0 unless a C-grid
+        if (wake > 1) {
+            for (int i = 1; i < wake; ++i) assemble(i, 0, i - 1);
+            solve_row(false, wake - 1, dx_.data() + 1);
+            solve_row(false, wake - 1, dy_.data() + 1);
+        }
 
         // The eta factor (eq 12): all columns at once, row after row, so
-        // memory is walked in storage order (Thomas algorithm in place).
+        // memory is walked in storage order (Thomas algorithm in place). The
+        // C-grid's wake columns i and ni-1-i are one eta line through the cut
+        // (solve_wake_line); the others run from row 1 to row nj-2.
         const int jb = conn.j_begin(), je = conn.j_end();
+        const int i0 = wake > 1 ? wake : ib, i1 = wake > 1 ? ni - wake : ie;
         for (int j = jb; j < je; ++j) {
             const std::size_t row = static_cast<std::size_t>(ni) * j;
-            for (int i = ib; i < ie; ++i) {
+            for (int i = i0; i < i1; ++i) {
                 const std::size_t k = row + i;
                 double m = di_[k];
                 if (j > jb) {
@@ -150,12 +167,13 @@ public:
         }
         for (int j = je - 2; j >= jb; --j) {
             const std::size_t row = static_cast<std::size_t>(ni) * j;
-            for (int i = ib; i < ie; ++i) {
+            for (int i = i0; i < i1; ++i) {
                 const std::size_t k = row + i;
                 dx_[k] -= up_[k] * dx_[k + ni];
                 dy_[k] -= up_[k] * dy_[k + ni];
             }
         }
+        for (int i = 1; i < wake; ++i) solve_wake_line(conn, i);
 
         // eq 13, and the cut column follows column 0.
         for (int j = jb; j < je; ++j)
@@ -166,13 +184,12 @@ public:
                 conn.sync_node(L.x, i, j);
                 conn.sync_node(L.y, i, j);
             }
-        // Unknowns off the rectangle (a C-grid's cut) take a point step.
+        // The wake cut's nodes, and their copies on the upper wake.
         for (const Connectivity::Node &nd : conn.extra_unknowns()) {
-            const Stencil s = conn.stencil(nd.i, nd.j);
-            const NodeEquation eq = node_equation(p.system, L, s);
-            L.x[s.c] += eq.rx / eq.diag;
-            L.y[s.c] += eq.ry / eq.diag;
-            conn.sync_node(L.x, nd.i, nd.j);  // the upper wake's copy, which row 1 there reads
+            const std::size_t k = static_cast<std::size_t>(ni) * nd.j + nd.i;
+            L.x[k] += dx_[k];
+            L.y[k] += dy_[k];
+            conn.sync_node(L.x, nd.i, nd.j);
             conn.sync_node(L.y, nd.i, nd.j);
         }
         scale_ = std::exp(log_sum / (static_cast<double>(n) * (conn.j_end() - conn.j_begin())));
@@ -184,6 +201,39 @@ public:
     }
 
 private:
+    // The eta factor on the C-grid's line through wake node (i, 0): up
+    // column m = ni-1-i from row nj-2 to row 1 (the upper half, where eta
+    // points the other way: north is the previous node, south the next),
+    // the cut node (its south neighbour is (m, 1)), and column i from row 1
+    // to row nj-2.
+    void solve_wake_line(const Connectivity &conn, int i) {
+        const std::size_t ni = static_cast<std::size_t>(conn.ni());
+        const int nj = conn.nj(), half = nj - 2, len = 2 * half + 1;
+        const std::size_t m = ni - 1 - static_cast<std::size_t>(i);
+        line_k_.resize(len);
+        line_a_.resize(len); line_b_.resize(len); line_c_.resize(len);
+        line_x_.resize(len); line_y_.resize(len);
+        for (int t = 0; t < len; ++t) {
+            const bool upper = t < half;
+            const std::size_t k = upper ? m + ni * static_cast<std::size_t>(half - t)
+                                        : static_cast<std::size_t>(i) + ni * static_cast<std::size_t>(t - half);
+            line_k_[t] = k;
+            line_a_[t] = upper ? up_[k] : lo_[k];
+            line_b_[t] = di_[k];
+            line_c_[t] = upper ? lo_[k] : up_[k];
+            line_x_[t] = dx_[k];
+            line_y_[t] = dy_[k];
+        }
+        line_s_.assign(line_c_.begin(), line_c_.end());
+        solve_tridiagonal(len, line_a_.data(), line_b_.data(), line_s_.data(), line_x_.data());
+        line_s_.assign(line_c_.begin(), line_c_.end());
+        solve_tridiagonal(len, line_a_.data(), line_b_.data(), line_s_.data(), line_y_.data());
+        for (int t = 0; t < len; ++t) {
+            dx_[line_k_[t]] = line_x_[t];
+            dy_[line_k_[t]] = line_y_[t];
+        }
+    }
+
     // Solves the xi factor of one row for one right-hand side (in place).
     void solve_row(bool periodic, int n, double *rhs) {
         if (!periodic) {
@@ -212,6 +262,8 @@ private:
     std::vector<double> prev_x_, prev_y_;      // r^n - r^(n-1), for a != 0
     std::vector<double> dx_, dy_, lo_, di_, up_;  // corrections and the eta factor
     std::vector<double> row_lo_, row_di_, row_up_, row_c_, work_;
+    std::vector<double> line_a_, line_b_, line_c_, line_s_, line_x_, line_y_;  // a C-grid's wake line
+    std::vector<std::size_t> line_k_;
 };
 
 }  // namespace
