@@ -444,6 +444,55 @@ static void test_af_branch_cut_moves_with_the_interior(void **state) {
     free(x0); free(y0); free(x1); free(y1);
 }
 
+/* AF's pseudo-time step is dtau over the geometric mean of 2(alpha+gamma):
+ * dimensionless, so the swan scaled by 2^-10 and 2^10 (exact in binary)
+ * takes the same steps and reaches the same grid, scaled. */
+static void test_af_step_is_scale_free(void **state) {
+    const int n = 33;
+    const size_t count = (size_t)n * n;
+    const double scales[] = {1.0, 1.0 / 1024, 1024.0};
+    double *x0 = alloc(count), *y0 = alloc(count), *x = alloc(count), *y = alloc(count), *ref_x = alloc(count),
+           *ref_y = alloc(count);
+    int k, it_ref = 0;
+    size_t m;
+    (void)state;
+    for (k = 0; k < 3; ++k) {
+        eg2d_grid *g = make_case("swan", n, EG2D_SYSTEM_WINSLOW);
+        int it;
+        assert_int_equal(eg2d_get_coordinates(g, x0, y0), EG2D_OK);
+        for (m = 0; m < count; ++m) {
+            x0[m] *= scales[k];
+            y0[m] *= scales[k];
+        }
+        assert_int_equal(eg2d_set_coordinates(g, x0, y0), EG2D_OK);
+        assert_int_equal(eg2d_set_solver(g, EG2D_SOLVER_AF), EG2D_OK);
+        assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
+        assert_int_equal(eg2d_solve(g), EG2D_OK);
+        assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
+        assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+        for (m = 0; m < count; ++m) {
+            x[m] /= scales[k];
+            y[m] /= scales[k];
+        }
+        if (k == 0) {
+            it_ref = it;
+            memcpy(ref_x, x, sizeof(double) * count);
+            memcpy(ref_y, y, sizeof(double) * count);
+        }
+        print_message("swan %dx%d scaled by %g: AF %d iterations, max |r/s - r| %.1e\n", n, n, scales[k], it,
+                      fmax(max_diff(x, ref_x, count), max_diff(y, ref_y, count)));
+        assert_int_equal(it, it_ref);
+        assert_true(fmax(max_diff(x, ref_x, count), max_diff(y, ref_y, count)) < 1e-12);
+        eg2d_destroy(g);
+    }
+    free(x0);
+    free(y0);
+    free(x);
+    free(y);
+    free(ref_x);
+    free(ref_y);
+}
+
 /* Issue 3's AF target: on an O-grid, at most 1/5 of the iterations of PSOR
  * at its best omega (seed 004: 31 vs 189). The annulus at 129 x 65 to 1e-10;
  * PSOR's omega is scanned in steps of 0.01 around the optimum. */
@@ -518,6 +567,7 @@ int main(void) {
         cmocka_unit_test(test_af_parameters_are_checked),
         cmocka_unit_test(test_af_time_rules_converge_to_the_same_grid),
         cmocka_unit_test(test_af_branch_cut_moves_with_the_interior),
+        cmocka_unit_test(test_af_step_is_scale_free),
         cmocka_unit_test(test_af_beats_best_psor_on_an_o_grid),
         cmocka_unit_test(test_nested_first_iteration_is_a_coarse_to_fine_start),
     };
