@@ -46,9 +46,8 @@ constexpr double kPi = 3.14159265358979323846;
 // steps grow by at most this ratio. Measured on the seed 003 domains, the
 // annulus and an 87x31 O-grid (bench --seed004), with a step per node: ratio
 // 2 beats 3 and 4 on the skewed dome (141 vs 237 vs 357 iterations at 65^2)
-// and ties elsewhere; the
-// steps ascend through the cycle because large steps first diverge from a TFI
-// start on the dome (Winslow's lagged coefficients).
+// and ties elsewhere; the steps ascend through the cycle because large steps
+// first diverge from a TFI start on the dome (Winslow's lagged coefficients).
 constexpr double kStepRatio = 2.0;
 
 // The automatic largest step is divided by kTopShrink whenever the residual
