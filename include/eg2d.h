@@ -194,6 +194,23 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
                                             the best of the run (and above 1e-2) is divergence */
 #define EG2D_PARAM_FOLD_CHECK         4  /* 1 (default): eg2d_solve returns EG2D_ERR_FOLDED when
                                             the converged grid has folded cells; 0: it does not */
+/* Multigrid (EG2D_SOLVER_MULTIGRID): FAS cycles with alternating line
+ * Gauss-Seidel smoothing. One iteration is one cycle; with PARAM_MG_FMG the
+ * first iteration after (re)initialising the grid is a full-multigrid start:
+ * solve on the coarsest grid, interpolate, one cycle per finer level.
+ * A direction is halved while it has an odd node count (ni-1 even; on an
+ * O-grid also ni-1 >= 8) above PARAM_MG_COARSEST; Winslow coarsens one
+ * direction alone when the other cannot, Laplace only both together. Sizes
+ * like 2^k+1 get the most levels; any size works (fewer levels). */
+#define EG2D_PARAM_MG_CYCLE         110  /* 1 = V cycle (default), 2 = W cycle             */
+#define EG2D_PARAM_MG_PRE_SMOOTH    111  /* [0, 20], default 1: alternating sweeps (xi-lines,
+                                              then eta-lines) before the coarse correction */
+#define EG2D_PARAM_MG_POST_SMOOTH   112  /* [0, 20], default 1: and after it (pre + post >= 1,
+                                              else eg2d_iterate/solve fail with EG2D_ERR_STATE) */
+#define EG2D_PARAM_MG_FMG           113  /* 1 (default): full-multigrid start; 0: V/W cycles from
+                                              the grid as it is */
+#define EG2D_PARAM_MG_COARSEST      114  /* [3, 1e9], default 5: a direction with this many nodes
+                                              or fewer is not coarsened further */
 EG2D_API int eg2d_set_parameter(eg2d_grid *grid, int param, double value);
 EG2D_API int eg2d_get_parameter(const eg2d_grid *grid, int param, double *value);
 /* Bounds and default of a parameter, without a grid. */

@@ -6,10 +6,14 @@
 namespace eg2d {
 
 std::unique_ptr<Solver> make_psor();
+std::unique_ptr<Solver> make_lsor();
+std::unique_ptr<Solver> make_multigrid();
 
 namespace {
 const SolverInfo kSolvers[] = {
     {EG2D_SOLVER_PSOR, "psor", make_psor},
+    {EG2D_SOLVER_LSOR, "lsor", make_lsor},
+    {EG2D_SOLVER_MULTIGRID, "multigrid", make_multigrid},
 };
 }
 

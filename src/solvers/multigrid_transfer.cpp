@@ -1,0 +1,85 @@
+// Grid transfers of the FAS multigrid: injection (coordinates, controls),
+// full weighting (residuals), bilinear interpolation (corrections). A
+// direction with factor 1 (semicoarsening) is copied as it is.
+#include <cstddef>
+
+#include "solvers/multigrid_hierarchy.hpp"
+
+namespace eg2d {
+
+void inject(const Connectivity &fine_conn, const double *src, const MgLevel &coarse, double *dst) {
+    const std::ptrdiff_t nif = fine_conn.ni(), nic = coarse.conn.ni(), njc = coarse.conn.nj();
+    const std::ptrdiff_t si = coarse.si, sj = coarse.sj;
+    for (std::ptrdiff_t J = 0; J < njc; ++J) {
+        const double *row = src + nif * sj * J;
+        double *out = dst + nic * J;
+        if (si == 2)
+            for (std::ptrdiff_t I = 0; I < nic; ++I) out[I] = row[2 * I];
+        else
+            for (std::ptrdiff_t I = 0; I < nic; ++I) out[I] = row[I];
+    }
+}
+
+void restrict_residual(const MgLevel &fine, const MgLevel &coarse, double scale, double *out_x, double *out_y) {
+    const Connectivity &fc = fine.conn, &cc = coarse.conn;
+    const std::ptrdiff_t nif = fc.ni(), nic = cc.ni();
+    const int si = coarse.si, sj = coarse.sj;
+    const bool periodic = fc.periodic_i();
+    const std::ptrdiff_t period = fc.i_period();
+    // 1D weights (1/4, 1/2, 1/4) per coarsened direction, (0, 1, 0) otherwise.
+    const double wi[3] = {si == 2 ? 0.25 : 0.0, si == 2 ? 0.5 : 1.0, si == 2 ? 0.25 : 0.0};
+    const double wj[3] = {sj == 2 ? 0.25 : 0.0, sj == 2 ? 0.5 : 1.0, sj == 2 ? 0.25 : 0.0};
+    for (int J = cc.j_begin(); J < cc.j_end(); ++J) {
+        const std::ptrdiff_t jf = static_cast<std::ptrdiff_t>(sj) * J;
+        for (int I = cc.i_begin(); I < cc.i_end(); ++I) {
+            const std::ptrdiff_t ifc = static_cast<std::ptrdiff_t>(si) * I;
+            std::ptrdiff_t col[3] = {ifc - 1, ifc, ifc + 1};
+            if (periodic) {
+                if (col[0] < 0) col[0] += period;
+                if (col[2] >= period) col[2] -= period;
+            }
+            double sx = 0.0, sy = 0.0;
+            for (int b = 0; b < 3; ++b) {
+                if (wj[b] == 0.0) continue;
+                const std::ptrdiff_t row = nif * (jf + b - 1);
+                for (int a = 0; a < 3; ++a) {
+                    if (wi[a] == 0.0) continue;
+                    const double w = wi[a] * wj[b];
+                    sx += w * fine.rx[row + col[a]];
+                    sy += w * fine.ry[row + col[a]];
+                }
+            }
+            out_x[I + nic * J] = scale * sx;
+            out_y[I + nic * J] = scale * sy;
+        }
+    }
+}
+
+void prolong_correction(const MgLevel &coarse, const Level &fine) {
+    const Connectivity &fc = *fine.conn, &cc = coarse.conn;
+    const std::ptrdiff_t nif = fc.ni(), nic = cc.ni();
+    const int si = coarse.si, sj = coarse.sj;
+    const double *xc = coarse.x.data(), *yc = coarse.y.data(), *x0 = coarse.x0.data(), *y0 = coarse.y0.data();
+    for (int j = fc.j_begin(); j < fc.j_end(); ++j) {
+        // Coarse rows J0 (weight wj0) and J1 = J0 + 1 (weight 1 - wj0) around row j.
+        const std::ptrdiff_t J0 = j / sj;
+        const double wj0 = (j % sj == 0) ? 1.0 : 0.5;
+        const std::ptrdiff_t r0 = nic * J0, r1 = wj0 < 1.0 ? r0 + nic : r0;
+        double *x = fine.x + nif * j, *y = fine.y + nif * j;
+        for (int i = fc.i_begin(); i < fc.i_end(); ++i) {
+            const std::ptrdiff_t I0 = i / si;
+            const double wi0 = (i % si == 0) ? 1.0 : 0.5;
+            const std::ptrdiff_t I1 = wi0 < 1.0 ? I0 + 1 : I0;
+            const double w00 = wi0 * wj0, w10 = (1.0 - wi0) * wj0, w01 = wi0 * (1.0 - wj0),
+                         w11 = (1.0 - wi0) * (1.0 - wj0);
+            x[i] += w00 * (xc[r0 + I0] - x0[r0 + I0]) + w10 * (xc[r0 + I1] - x0[r0 + I1]) +
+                    w01 * (xc[r1 + I0] - x0[r1 + I0]) + w11 * (xc[r1 + I1] - x0[r1 + I1]);
+            y[i] += w00 * (yc[r0 + I0] - y0[r0 + I0]) + w10 * (yc[r0 + I1] - y0[r0 + I1]) +
+                    w01 * (yc[r1 + I0] - y0[r1 + I0]) + w11 * (yc[r1 + I1] - y0[r1 + I1]);
+        }
+        fc.sync_node(fine.x, 0, j);
+        fc.sync_node(fine.y, 0, j);
+    }
+}
+
+}  // namespace eg2d
