@@ -108,7 +108,7 @@ EG2D_API void eg2d_version(int *major, int *minor, int *patch);
  *===================================================================*/
 /* A grid of ni x nj nodes, ni, nj >= 3 (and ni*nj must fit the address
  * space). *grid is set to NULL on failure. Defaults: single-block topology,
- * Winslow system, point SOR, tolerance 1e-8, automatic relaxation. */
+ * Winslow system, multigrid solver, tolerance 1e-8, automatic relaxation. */
 EG2D_API int eg2d_create(int ni, int nj, eg2d_grid **grid);
 
 /* Frees everything; NULL is a no-op. */
@@ -165,10 +165,11 @@ EG2D_API int eg2d_set_coordinates(eg2d_grid *grid, const double *x, const double
 EG2D_API int eg2d_set_system(eg2d_grid *grid, int system);
 
 #define EG2D_SOLVER_PSOR      0  /* point SOR (Gauss-Seidel at omega = 1) */
-#define EG2D_SOLVER_LSOR      1  /* line SOR, alternating directions */
+#define EG2D_SOLVER_LSOR      1  /* line SOR, alternating directions; the periodic
+                                    direction of an O-grid is solved as a cyclic system */
 #define EG2D_SOLVER_AF        2  /* approximate factorisation, false transients */
 #define EG2D_SOLVER_NESTED    3  /* coarse-to-fine, seed 000 */
-#define EG2D_SOLVER_MULTIGRID 4  /* FAS multigrid */
+#define EG2D_SOLVER_MULTIGRID 4  /* FAS multigrid (the default); see EG2D_PARAM_MG_* */
 /* Selects a solver; EG2D_ERR_UNSUPPORTED for an id this library lacks. */
 EG2D_API int eg2d_set_solver(eg2d_grid *grid, int solver);
 EG2D_API int eg2d_get_solver(const eg2d_grid *grid, int *solver);
@@ -176,7 +177,11 @@ EG2D_API int eg2d_get_solver(const eg2d_grid *grid, int *solver);
 EG2D_API const char *eg2d_solver_name(int solver);
 
 /* Relaxation factor omega in (0, 2); 0 = automatic (for point SOR the
- * optimal factor of seed 003, computed for the grid's size). */
+ * optimal factor of seed 003, computed for the grid's size; for line SOR the
+ * optimal line-SOR factor of the Laplace model problem per direction,
+ * reached from omega = 1 over the first max(ni, nj) sweeps after a new start,
+ * because over-relaxing whole lines straight from TFI can fold the grid).
+ * Multigrid does not use it. */
 EG2D_API int eg2d_set_relaxation(eg2d_grid *grid, double omega);
 /* Stop when residual <= tolerance (default 1e-8), tolerance in (0, 1). */
 EG2D_API int eg2d_set_tolerance(eg2d_grid *grid, double tolerance);

@@ -30,7 +30,7 @@ std::string missing_sides(const Grid &g) {
 }  // namespace
 
 Generator::Generator(int ni, int nj)
-    : grid_(ni, nj), solver_info_(find_solver(EG2D_SOLVER_PSOR)), solver_(solver_info_->make()) {}
+    : grid_(ni, nj), solver_info_(find_solver(EG2D_SOLVER_MULTIGRID)), solver_(solver_info_->make()) {}
 
 void Generator::set_topology(Topology t) {
     if (t == Topology::C) fail(Failure::Unsupported, "the C-grid topology is not built into this library yet");
