@@ -13,6 +13,7 @@
 #include <cmocka.h>
 
 #include "domains.h"
+#include "solve_compare.h"
 #include "eg2d.h"
 
 #define PI 3.14159265358979323846
@@ -23,30 +24,11 @@ static double *alloc(int n) {
     return p;
 }
 
-/* Solves `domain` ("annulus": 3 <= r <= 9 as an O-grid) with `solver` to
- * `tol` from TFI and returns the coordinates and the iteration count. */
+/* solve_domain, checked: the iteration count. */
 static int solve(const char *domain, int ni, int nj, int solver, int system, double tol, double *x, double *y) {
-    eg2d_grid *g;
-    int it;
-    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
-    if (!strcmp(domain, "annulus")) assert_int_equal(domain_set_annulus(g, 3.0, 9.0), EG2D_OK);
-    else assert_int_equal(domain_set(g, domain), EG2D_OK);
-    assert_int_equal(eg2d_set_solver(g, solver), EG2D_OK);
-    assert_int_equal(eg2d_set_system(g, system), EG2D_OK);
-    assert_int_equal(eg2d_set_tolerance(g, tol), EG2D_OK);
-    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_FOLD_CHECK, 0), EG2D_OK);
-    assert_int_equal(eg2d_solve(g), EG2D_OK);
-    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
-    assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
-    eg2d_destroy(g);
+    const int it = solve_domain(domain, ni, nj, solver, system, tol, x, y);
+    if (it < 0) fail_msg("%s %dx%d: %s", domain, ni, nj, eg2d_status_string(-it));
     return it;
-}
-
-static double max_distance(const double *x1, const double *y1, const double *x2, const double *y2, int n) {
-    double d = 0;
-    int k;
-    for (k = 0; k < n; ++k) d = fmax(d, hypot(x1[k] - x2[k], y1[k] - y2[k]));
-    return d;
 }
 
 static void test_same_grid_as_psor(void **state) {
@@ -58,7 +40,7 @@ static void test_same_grid_as_psor(void **state) {
         for (d = 0; domain_names[d]; ++d) {
             const int kp = solve(domain_names[d], n, n, EG2D_SOLVER_PSOR, s, 1e-13, x1, y1);
             const int kl = solve(domain_names[d], n, n, EG2D_SOLVER_LSOR, s, 1e-13, x2, y2);
-            const double dist = max_distance(x1, y1, x2, y2, n * n);
+            const double dist = grid_distance(x1, y1, x2, y2, n * n);
             print_message("%-7s %-14s %dx%d: psor %4d sweeps, lsor %4d, grids differ by %.2e\n",
                           s ? "Winslow" : "Laplace", domain_names[d], n, n, kp, kl, dist);
             assert_true(dist < 1e-10);
@@ -68,18 +50,10 @@ static void test_same_grid_as_psor(void **state) {
 
 /* r = 3 * 3^eta, theta = 2 pi xi; the cut column must be the same points. */
 static double annulus_error(int ni, int nj) {
-    double *x = alloc(ni * nj), *y = alloc(ni * nj), err = 0;
-    int i, j;
+    double *x = alloc(ni * nj), *y = alloc(ni * nj), err;
     solve("annulus", ni, nj, EG2D_SOLVER_LSOR, EG2D_SYSTEM_WINSLOW, 1e-13, x, y);
-    for (j = 0; j < nj; ++j)
-        for (i = 0; i < ni; ++i) {
-            const double r = 3.0 * pow(3.0, (double)j / (nj - 1)), t = 2 * PI * i / (ni - 1);
-            err = fmax(err, hypot(x[i + ni * j] - r * cos(t), y[i + ni * j] - r * sin(t)));
-        }
-    for (j = 0; j < nj; ++j) {
-        assert_true(x[ni * j] == x[ni * j + ni - 1]);
-        assert_true(y[ni * j] == y[ni * j + ni - 1]);
-    }
+    err = annulus_exact_error(ni, nj, x, y);
+    assert_true(cut_columns_equal(ni, nj, x, y));
     free(x);
     free(y);
     return err;
@@ -132,8 +106,8 @@ static void test_cut_moves_with_the_interior(void **state) {
     assert_int_equal(eg2d_solve(g), EG2D_OK);
     assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
     print_message("lsor: cut start off by 0.36, after solve %.2e from point SOR's grid\n",
-                  max_distance(x, y, xs, ys, ni * nj));
-    assert_true(max_distance(x, y, xs, ys, ni * nj) < 1e-10);
+                  grid_distance(x, y, xs, ys, ni * nj));
+    assert_true(grid_distance(x, y, xs, ys, ni * nj) < 1e-10);
     eg2d_destroy(g);
     free(x); free(y); free(xs); free(ys);
 }
@@ -157,7 +131,7 @@ static void test_given_relaxation(void **state) {
     assert_int_equal(eg2d_get_coordinates(g, x2, y2), EG2D_OK);
     print_message("lsor valley 33x33: automatic factor %d sweeps, omega = 1 %d sweeps\n", k_auto, k_one);
     assert_true(k_one > 2 * k_auto);
-    assert_true(max_distance(x1, y1, x2, y2, n * n) < 1e-8);
+    assert_true(grid_distance(x1, y1, x2, y2, n * n) < 1e-8);
     assert_string_equal(eg2d_solver_name(EG2D_SOLVER_LSOR), "lsor");
     eg2d_destroy(g);
     free(x1); free(y1); free(x2); free(y2);

@@ -13,6 +13,7 @@
 #include <cmocka.h>
 
 #include "domains.h"
+#include "solve_compare.h"
 #include "eg2d.h"
 
 #define PI 3.14159265358979323846
@@ -38,26 +39,11 @@ static eg2d_grid *make(const char *domain, int ni, int nj, int solver, int syste
     return g;
 }
 
-/* Solves to `tol` from TFI; returns the iteration count, fills x, y. */
+/* solve_domain, checked: the iteration count. */
 static int solve(const char *domain, int ni, int nj, int solver, int system, double tol, double *x, double *y) {
-    eg2d_grid *g = make(domain, ni, nj, solver, system);
-    int it;
-    double r;
-    assert_int_equal(eg2d_set_tolerance(g, tol), EG2D_OK);
-    assert_int_equal(eg2d_solve(g), EG2D_OK);
-    assert_int_equal(eg2d_get_residual(g, &r), EG2D_OK);
-    assert_true(r <= tol);
-    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
-    assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
-    eg2d_destroy(g);
+    const int it = solve_domain(domain, ni, nj, solver, system, tol, x, y);
+    if (it < 0) fail_msg("%s %dx%d: %s", domain, ni, nj, eg2d_status_string(-it));
     return it;
-}
-
-static double max_distance(const double *x1, const double *y1, const double *x2, const double *y2, int n) {
-    double d = 0;
-    int k;
-    for (k = 0; k < n; ++k) d = fmax(d, hypot(x1[k] - x2[k], y1[k] - y2[k]));
-    return d;
 }
 
 /* Multigrid and point SOR agree on a domain at a size (both to 1e-13). */
@@ -65,7 +51,7 @@ static void check_same_as_psor(const char *domain, int ni, int nj, int system) {
     double *x1 = alloc(ni * nj), *y1 = alloc(ni * nj), *x2 = alloc(ni * nj), *y2 = alloc(ni * nj), dist;
     const int kp = solve(domain, ni, nj, EG2D_SOLVER_PSOR, system, 1e-13, x1, y1);
     const int km = solve(domain, ni, nj, EG2D_SOLVER_MULTIGRID, system, 1e-13, x2, y2);
-    dist = max_distance(x1, y1, x2, y2, ni * nj);
+    dist = grid_distance(x1, y1, x2, y2, ni * nj);
     print_message("%-7s %-14s %3dx%-3d: psor %5d sweeps, multigrid %2d cycles, grids differ by %.2e\n",
                   system ? "Winslow" : "Laplace", domain, ni, nj, kp, km, dist);
     assert_true(dist < 1e-10);
@@ -97,18 +83,10 @@ static void test_awkward_sizes(void **state) {
 
 /* r = 3 * 3^eta, theta = 2 pi xi, at second order; the cut stays one column. */
 static double annulus_error(int ni, int nj) {
-    double *x = alloc(ni * nj), *y = alloc(ni * nj), err = 0;
-    int i, j;
+    double *x = alloc(ni * nj), *y = alloc(ni * nj), err;
     solve("annulus", ni, nj, EG2D_SOLVER_MULTIGRID, EG2D_SYSTEM_WINSLOW, 1e-13, x, y);
-    for (j = 0; j < nj; ++j)
-        for (i = 0; i < ni; ++i) {
-            const double r = 3.0 * pow(3.0, (double)j / (nj - 1)), t = 2 * PI * i / (ni - 1);
-            err = fmax(err, hypot(x[i + ni * j] - r * cos(t), y[i + ni * j] - r * sin(t)));
-        }
-    for (j = 0; j < nj; ++j) {
-        assert_true(x[ni * j] == x[ni * j + ni - 1]);
-        assert_true(y[ni * j] == y[ni * j + ni - 1]);
-    }
+    err = annulus_exact_error(ni, nj, x, y);
+    assert_true(cut_columns_equal(ni, nj, x, y));
     free(x);
     free(y);
     return err;
@@ -189,7 +167,7 @@ static void test_cycle_options(void **state) {
         assert_int_equal(eg2d_get_coordinates(g, o ? x : x0, o ? y : y0), EG2D_OK);
         print_message("multigrid swan 33^2: cycle %g, pre %g, post %g, fmg %g: %d cycles\n", opts[o][0],
                       opts[o][1], opts[o][2], opts[o][3], cycles[o]);
-        if (o) assert_true(max_distance(x0, y0, x, y, n * n) < 1e-9);
+        if (o) assert_true(grid_distance(x0, y0, x, y, n * n) < 1e-9);
         eg2d_destroy(g);
     }
     assert_true(cycles[2] > cycles[0]);
