@@ -23,6 +23,7 @@ const ParameterInfo kParameters[] = {
      &Settings::mg_post_smooth},
     {EG2D_PARAM_MG_FMG, "mg_fmg", 0.0, 1.0, false, false, true, false, &Settings::mg_fmg},
     {EG2D_PARAM_MG_COARSEST, "mg_coarsest", 3.0, 1e9, false, false, true, false, &Settings::mg_coarsest},
+    {EG2D_PARAM_SVG_QUALITY, "svg_quality", -1.0, 99.0, false, false, true, false, &Settings::svg_quality},
 };
 }  // namespace
 

@@ -17,6 +17,7 @@ struct Settings {
     double mg_post_smooth = 1;        // and after it
     double mg_fmg = 1;                // 1: the first cycle is a full-multigrid start
     double mg_coarsest = 5;           // a direction is not coarsened below this many nodes
+    double svg_quality = -1;          // EG2D_QUALITY_* colouring SVG cells, -1 none
 };
 
 }  // namespace eg2d
