@@ -45,6 +45,10 @@ void restrict_controls(const ControlFields *fine, const Connectivity &fine_conn,
 // dst (coarse) = src (fine) at the coarse nodes: coordinates, boundary included.
 void inject(const Connectivity &fine_conn, const double *src, const MgLevel &coarse, double *dst);
 
+// dst (coarse unknowns) = scale * full weighting of src (fine).
+void full_weighting(const Connectivity &fine_conn, const double *src, const MgLevel &coarse, double scale,
+                    double *dst);
+
 // Full weighting of fine.rx, fine.ry at the coarse unknowns, times `scale`,
 // into out_x, out_y (coarse-sized).
 void restrict_residual(const MgLevel &fine, const MgLevel &coarse, double scale, double *out_x, double *out_y);

@@ -20,8 +20,8 @@ void inject(const Connectivity &fine_conn, const double *src, const MgLevel &coa
     }
 }
 
-void restrict_residual(const MgLevel &fine, const MgLevel &coarse, double scale, double *out_x, double *out_y) {
-    const Connectivity &fc = fine.conn, &cc = coarse.conn;
+void full_weighting(const Connectivity &fc, const double *src, const MgLevel &coarse, double scale, double *dst) {
+    const Connectivity &cc = coarse.conn;
     const std::ptrdiff_t nif = fc.ni(), nic = cc.ni();
     const int si = coarse.si, sj = coarse.sj;
     const bool periodic = fc.periodic_i();
@@ -38,21 +38,21 @@ void restrict_residual(const MgLevel &fine, const MgLevel &coarse, double scale,
                 if (col[0] < 0) col[0] += period;
                 if (col[2] >= period) col[2] -= period;
             }
-            double sx = 0.0, sy = 0.0;
+            double sum = 0.0;
             for (int b = 0; b < 3; ++b) {
                 if (wj[b] == 0.0) continue;
                 const std::ptrdiff_t row = nif * (jf + b - 1);
-                for (int a = 0; a < 3; ++a) {
-                    if (wi[a] == 0.0) continue;
-                    const double w = wi[a] * wj[b];
-                    sx += w * fine.rx[row + col[a]];
-                    sy += w * fine.ry[row + col[a]];
-                }
+                for (int a = 0; a < 3; ++a)
+                    if (wi[a] != 0.0) sum += wi[a] * wj[b] * src[row + col[a]];
             }
-            out_x[I + nic * J] = scale * sx;
-            out_y[I + nic * J] = scale * sy;
+            dst[I + nic * J] = scale * sum;
         }
     }
+}
+
+void restrict_residual(const MgLevel &fine, const MgLevel &coarse, double scale, double *out_x, double *out_y) {
+    full_weighting(fine.conn, fine.rx.data(), coarse, scale, out_x);
+    full_weighting(fine.conn, fine.ry.data(), coarse, scale, out_y);
 }
 
 void prolong_correction(const MgLevel &coarse, const Level &fine) {
