@@ -10,11 +10,12 @@
 //   solve L_c(u_c) = f_c  (recursively), then u_f += P (u_c - I u_f), bilinear.
 //
 // Defaults, W(2,1) with FMG (settings.hpp), chosen by measurement on the seed
-// 003 domains and the annulus (bench/mg_timing.c): V(1,1) gives 0.13-0.31
-// per cycle there, growing with the grid; W(2,1) with the over-relaxed
-// smoother 0.01-0.11 at 65^2..1025^2 (the dome: up to 0.18; its error sits in
-// a strip along the strongly curved top, and more smoothing there does not
-// remove it), and the fewest seconds to 1e-10 at 1025^2.
+// 003 domains and the annulus (bench/mg_timing.c): with the over-relaxed
+// zebra/line smoother, W(2,1) gives 0.01-0.11 per cycle at 65^2..1025^2 (the
+// dome: up to 0.18; its error sits in a strip along the strongly curved top,
+// and extra relaxation of the lines there does not remove it). V(2,1) is
+// about 30% faster at 1025^2 for a somewhat worse factor (swan 0.14 vs 0.11,
+// dome 0.22 vs 0.18); V(1,1) and W(1,1) converge more slowly on the dome.
 #include <algorithm>
 #include <cmath>
 
