@@ -23,7 +23,15 @@ const ParameterInfo kParameters[] = {
      &Settings::mg_post_smooth},
     {EG2D_PARAM_MG_FMG, "mg_fmg", 0.0, 1.0, false, false, true, false, &Settings::mg_fmg},
     {EG2D_PARAM_MG_COARSEST, "mg_coarsest", 3.0, 1e9, false, false, true, false, &Settings::mg_coarsest},
+    {EG2D_PARAM_HERMITE_SPACING, "hermite_spacing", 0.0, 10.0, true, false, false, false, &Settings::hermite_spacing},
     {EG2D_PARAM_SVG_QUALITY, "svg_quality", -1.0, 99.0, false, false, true, false, &Settings::svg_quality},
+    // Approximate factorisation (src/solvers/af.cpp).
+    {EG2D_PARAM_AF_DTAU_MIN, "af_dtau_min", 0.0, 1e12, true, false, false, false, &Settings::af_dtau_min},
+    {EG2D_PARAM_AF_DTAU_MAX, "af_dtau_max", 0.0, 1e12, true, false, false, true, &Settings::af_dtau_max},
+    {EG2D_PARAM_AF_STEPS, "af_steps", 4.0, 1000.0, false, false, true, true, &Settings::af_steps},
+    {EG2D_PARAM_AF_A, "af_a", -1.0, 10.0, true, false, false, false, &Settings::af_a},
+    {EG2D_PARAM_AF_B, "af_b", 0.0, 10.0, true, false, false, false, &Settings::af_b},
+    {EG2D_PARAM_AF_RELAXATION, "af_relaxation", 0.0, 4.0, true, true, false, true, &Settings::af_relaxation},
 };
 }  // namespace
 
@@ -44,6 +52,12 @@ void check_parameter(const ParameterInfo &p, double v) {
                                        p.zero_means_auto ? " (or 0 for automatic)" : ""));
     if (p.integer && v != std::floor(v))
         fail(Failure::Argument, format("%s = %g: must be a whole number", p.name, v));
+}
+
+void check_settings(const Settings &s) {
+    if (s.af_dtau_max > 0.0 && s.af_dtau_min > s.af_dtau_max)
+        fail(Failure::Argument, format("af_dtau_min = %g > af_dtau_max = %g: the cycle needs min <= max",
+                                       s.af_dtau_min, s.af_dtau_max));
 }
 
 }  // namespace api

@@ -28,12 +28,8 @@ struct Row {
 // The row at the node of stencil s. `along_xi` picks which second difference
 // (and first-difference control term) is implicit.
 inline Row line_row(System system, const Level &L, const Stencil &s, bool along_xi) {
-    if (system == System::Laplace) {
-        const NodeEquation eq = node_equation(system, L, s, Metrics{});
-        return Row{1.0, -4.0, 1.0, eq.rx, eq.ry};
-    }
-    const Metrics m = node_metrics(L, s);
-    const NodeEquation eq = node_equation(system, L, s, m);
+    Metrics m;
+    const NodeEquation eq = node_equation(system, L, s, &m);  // Laplace: alpha = gamma = 1, C = 0
     const double second = along_xi ? m.alpha : m.gamma;
     const double first = 0.5 * (along_xi ? m.cxi : m.ceta);
     const double diag = -2.0 * (m.alpha + m.gamma);

@@ -86,16 +86,36 @@ private:
         restrict_residual(m, c, operator_scale(system_, c), c.fx.data(), c.fy.data());
         Level plain = c.level;
         plain.fx = plain.fy = nullptr;
+        auto add_plain = [&](int I, int J) {
+            const Stencil s = c.conn.stencil(I, J);
+            const NodeEquation eq = node_equation(system_, plain, s);
+            c.fx[s.c] = eq.rx - c.fx[s.c];
+            c.fy[s.c] = eq.ry - c.fy[s.c];
+        };
         for (int J = c.conn.j_begin(); J < c.conn.j_end(); ++J)
-            for (int I = c.conn.i_begin(); I < c.conn.i_end(); ++I) {
-                const Stencil s = c.conn.stencil(I, J);
-                const NodeEquation eq = node_equation(system_, plain, s);
-                c.fx[s.c] = eq.rx - c.fx[s.c];
-                c.fy[s.c] = eq.ry - c.fy[s.c];
-            }
-        for (int g = 0; g < (l + 2 == levels_.size() ? 1 : gamma_); ++g) cycle(l + 1);
-        prolong_correction(c, m.level);
+            for (int I = c.conn.i_begin(); I < c.conn.i_end(); ++I) add_plain(I, J);
+        for (const Connectivity::Node &n : c.conn.extra_unknowns()) add_plain(n.i, n.j);
+        for (int g = 0; g < gamma_ && l + 1 < levels_.size(); ++g) {
+            cycle(l + 1);
+            if (l + 2 >= levels_.size()) break;  // the coarsest level is solved once
+        }
+        if (keep_coarse(l)) prolong_correction(levels_[l + 1], m.level);
         smooth(system_, m, post_, true);
+    }
+
+    // A coarse level whose grid went non-finite (a coarse grid too crude for
+    // the geometry: an airfoil's trailing edge on a handful of points) is
+    // dropped with all coarser ones, for this correction and every later
+    // cycle; the cycle goes on with the levels that work.
+    bool keep_coarse(std::size_t l) {
+        if (l + 1 >= levels_.size()) return false;
+        const MgLevel &c = levels_[l + 1];
+        for (std::size_t k = 0; k < c.size(); ++k)
+            if (!std::isfinite(c.x[k]) || !std::isfinite(c.y[k])) {
+                levels_.erase(levels_.begin() + static_cast<std::ptrdiff_t>(l) + 1, levels_.end());
+                return false;
+            }
+        return true;
     }
 
     // Solve the plain problem (f = 0) on the coarsest level from the injected
@@ -112,10 +132,13 @@ private:
         }
         coarse_solve(system_, levels_[last], floor_);
         for (std::size_t l = last; l-- > 0;) {
-            MgLevel &m = levels_[l], &c = levels_[l + 1];
-            inject(m.conn, m.level.x, c, c.x0.data());
-            inject(m.conn, m.level.y, c, c.y0.data());
-            prolong_correction(c, m.level);
+            MgLevel &m = levels_[l];
+            if (keep_coarse(l)) {
+                MgLevel &c = levels_[l + 1];
+                inject(m.conn, m.level.x, c, c.x0.data());
+                inject(m.conn, m.level.y, c, c.y0.data());
+                prolong_correction(c, m.level);
+            }
             if (l > 0) {
                 std::fill(m.fx.begin(), m.fx.end(), 0.0);
                 std::fill(m.fy.begin(), m.fy.end(), 0.0);

@@ -9,7 +9,9 @@ namespace {
 // Can this direction (n nodes) be halved and keep a sound coarse grid?
 bool can_coarsen(int n, bool periodic, int coarsest) {
     if (n <= coarsest || (n - 1) % 2 != 0) return false;
-    return periodic ? (n - 1) / 2 >= 4 : (n - 1) / 2 + 1 >= 3;
+    // A periodic direction goes round a body: keep at least 8 cells on it
+    // (with 4, an airfoil is a diamond and the coarse problem breaks down).
+    return periodic ? (n - 1) / 2 >= 8 : (n - 1) / 2 + 1 >= 3;
 }
 
 }  // namespace
@@ -26,7 +28,7 @@ std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, in
         // it coarsens in both or stops; Winslow's equation is invariant.
         if (system == System::Laplace ? !(ci && cj) : !(ci || cj)) break;
         const int si = ci ? 2 : 1, sj = cj ? 2 : 1;
-        levels.emplace_back(Connectivity((c.ni() - 1) / si + 1, (c.nj() - 1) / sj + 1, c.topology()));
+        levels.emplace_back(c.coarsened(si, sj));
         levels.back().si = si;
         levels.back().sj = sj;
     }

@@ -1,7 +1,7 @@
 // The grid levels of the FAS multigrid solver and the transfers between them.
 // Level 0 is the user's grid; each coarser level takes every other line in
 // each direction that can be coarsened (ni-1 even and at least 3 nodes left;
-// on the periodic direction of an O-grid a period of at least 4 cells), or in
+// on the periodic direction of an O-grid a period of at least 8 cells), or in
 // one direction only (semicoarsening, Winslow) when the other cannot.
 #pragma once
 #include <vector>
@@ -22,6 +22,7 @@ struct MgLevel {
     std::vector<double> x0, y0;      // I u: the finer solution injected (FAS)
     std::vector<double> fx, fy;      // FAS right-hand side (level 0 has none)
     std::vector<double> rx, ry;      // R = L(r) - f, for the restriction
+    std::vector<double> best_x, best_y;  // coarsest level: the best iterate of its solve
     ControlFields controls;          // the finer fields injected and rescaled
     Level level;                     // the operator's view of this level
     LineWork work;

@@ -15,10 +15,9 @@ void smooth(System system, MgLevel &m, int sweeps, bool reverse);
 // m.rx, m.ry = R = L(r) - f at the unknowns (0 elsewhere).
 void compute_residual(System system, MgLevel &m);
 
-// The coarsest level: line SOR with the automatic factors (ramped from 1, as
-// for EG2D_SOLVER_LSOR) until the largest
-// |R|/diag fell by 1e-3 or below `floor` (round-off), or a cap of sweeps
-// that grows with the level's size.
+// The coarsest level: smoothing sweeps until the largest |R|/diag fell by
+// 1e-3 or below `floor` (round-off), or a cap of sweeps that grows with the
+// level's size; the best iterate is kept.
 void coarse_solve(System system, MgLevel &m, double floor);
 
 }  // namespace eg2d

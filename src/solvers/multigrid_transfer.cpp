@@ -2,6 +2,7 @@
 // full weighting (residuals), bilinear interpolation (corrections). A
 // direction with factor 1 (semicoarsening) is copied as it is.
 #include <cstddef>
+#include <vector>
 
 #include "solvers/multigrid_hierarchy.hpp"
 
@@ -53,6 +54,20 @@ void full_weighting(const Connectivity &fc, const double *src, const MgLevel &co
 void restrict_residual(const MgLevel &fine, const MgLevel &coarse, double scale, double *out_x, double *out_y) {
     full_weighting(fine.conn, fine.rx.data(), coarse, scale, out_x);
     full_weighting(fine.conn, fine.ry.data(), coarse, scale, out_y);
+    // Coarse nodes off the rectangle (a C-grid's wake cut): the same weights
+    // over the fine node's stencil, whose "south" lies across the cut.
+    const double wi0 = coarse.si == 2 ? 0.25 : 0.0, wi1 = coarse.si == 2 ? 0.5 : 1.0;
+    const double wj0 = coarse.sj == 2 ? 0.25 : 0.0, wj1 = coarse.sj == 2 ? 0.5 : 1.0;
+    for (const Connectivity::Node &p : coarse.conn.extra_unknowns()) {
+        const Stencil f = fine.conn.stencil(coarse.si * p.i, coarse.sj * p.j);
+        auto weigh = [&](const std::vector<double> &r) {
+            return wi1 * wj1 * r[f.c] + wi0 * wj1 * (r[f.e] + r[f.w]) + wi1 * wj0 * (r[f.n] + r[f.s]) +
+                   wi0 * wj0 * (r[f.ne] + r[f.nw] + r[f.se] + r[f.sw]);
+        };
+        const std::ptrdiff_t k = p.i + static_cast<std::ptrdiff_t>(coarse.conn.ni()) * p.j;
+        out_x[k] = scale * weigh(fine.rx);
+        out_y[k] = scale * weigh(fine.ry);
+    }
 }
 
 void prolong_correction(const MgLevel &coarse, const Level &fine) {
@@ -79,6 +94,19 @@ void prolong_correction(const MgLevel &coarse, const Level &fine) {
         }
         fc.sync_node(fine.x, 0, j);
         fc.sync_node(fine.y, 0, j);
+    }
+    // Fine nodes off the rectangle (a C-grid's wake cut, row 0): linear along
+    // the coarse row 0, whose cut nodes carry the coarse correction (zero
+    // where the coarse grid keeps the cut fixed).
+    for (const Connectivity::Node &p : fc.extra_unknowns()) {
+        const std::ptrdiff_t I0 = p.i / si, r0 = nic * (p.j / sj);
+        const double w0 = (p.i % si == 0) ? 1.0 : 0.5;
+        const std::ptrdiff_t I1 = w0 < 1.0 ? I0 + 1 : I0;
+        const std::ptrdiff_t k = p.i + nif * p.j;
+        fine.x[k] += w0 * (xc[r0 + I0] - x0[r0 + I0]) + (1.0 - w0) * (xc[r0 + I1] - x0[r0 + I1]);
+        fine.y[k] += w0 * (yc[r0 + I0] - y0[r0 + I0]) + (1.0 - w0) * (yc[r0 + I1] - y0[r0 + I1]);
+        fc.sync_node(fine.x, p.i, p.j);
+        fc.sync_node(fine.y, p.i, p.j);
     }
 }
 

@@ -42,7 +42,7 @@ static void hierarchy_shapes() {
         {37, 23, Topology::Single, System::Winslow, "37x23 19x12 10x12 "},
         {37, 23, Topology::Single, System::Laplace, "37x23 19x12 "},
         {65, 7, Topology::Single, System::Winslow, "65x7 33x4 17x4 9x4 5x4 "},
-        {33, 17, Topology::O, System::Winslow, "33x17 17x9 9x5 5x5 "},
+        {33, 17, Topology::O, System::Winslow, "33x17 17x9 9x5 "},
         {30, 9, Topology::O, System::Winslow, "30x9 30x5 "},
         {4, 4, Topology::Single, System::Winslow, "4x4 "},
     };
