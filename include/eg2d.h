@@ -212,8 +212,9 @@ EG2D_API const char *eg2d_solver_name(int solver);
  * optimal factor of seed 003, computed for the grid's size; for line SOR the
  * optimal line-SOR factor of the Laplace model problem per direction,
  * reached from omega = 1 over the first max(ni, nj) sweeps after a new start,
- * because over-relaxing whole lines straight from TFI can fold the grid).
- * Multigrid does not use it. */
+ * because over-relaxing whole lines straight from TFI can fold the grid, and
+ * halved in omega - 1 whenever a sweep moves the grid 10 times more than the
+ * least move so far). Multigrid does not use it. */
 EG2D_API int eg2d_set_relaxation(eg2d_grid *grid, double omega);
 /* Stop when residual <= tolerance (default 1e-8), tolerance in (0, 1). */
 EG2D_API int eg2d_set_tolerance(eg2d_grid *grid, double tolerance);
