@@ -23,6 +23,10 @@ const ParameterInfo kParameters[] = {
      &Settings::mg_post_smooth},
     {EG2D_PARAM_MG_FMG, "mg_fmg", 0.0, 1.0, false, false, true, false, &Settings::mg_fmg},
     {EG2D_PARAM_MG_COARSEST, "mg_coarsest", 3.0, 1e9, false, false, true, false, &Settings::mg_coarsest},
+    // Controls.
+    {EG2D_PARAM_WALL_DECAY, "wall_decay", 0.01, 10.0, false, false, false, false, &Settings::wall_decay},
+    {EG2D_PARAM_WALL_RELAXATION, "wall_relaxation", 0.0, 1.0, true, false, false, false,
+     &Settings::wall_relaxation},
     {EG2D_PARAM_HERMITE_SPACING, "hermite_spacing", 0.0, 10.0, true, false, false, false, &Settings::hermite_spacing},
     {EG2D_PARAM_SVG_QUALITY, "svg_quality", -1.0, 99.0, false, false, true, false, &Settings::svg_quality},
     // Approximate factorisation (src/solvers/af.cpp).

@@ -17,6 +17,9 @@ struct Settings {
     double mg_post_smooth = 1;        // and after it
     double mg_fmg = 1;                // 1: the first cycle is a full-multigrid start
     double mg_coarsest = 5;           // a direction is not coarsened below this many nodes
+    // Wall orthogonality (src/controls/wall.cpp).
+    double wall_decay = 0.3;          // a: the wall control decays as exp(-a (m-1)) at depth m
+    double wall_relaxation = 0.1;     // under-relaxation of its updates, (0, 1]
     double hermite_spacing = 1.0;     // EG2D_INIT_HERMITE's alpha (seed 001 eq 2.6)
     double svg_quality = -1;          // EG2D_QUALITY_* colouring SVG cells, -1 none
 

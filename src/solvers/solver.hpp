@@ -17,6 +17,10 @@ struct Problem {
     System system;
     const ControlFields &controls;  // the fine grid's control fields
     const Settings &settings;
+    // True while a control term is recomputed from the grid between
+    // iterations (wall orthogonality): its update assumes each iteration
+    // moves the grid a little, which a multilevel cycle does not.
+    bool dynamic_controls = false;
 
     // The fine grid as an operator Level.
     Level level() const {
@@ -37,6 +41,8 @@ public:
     // Called when the problem changed shape (topology, size, a new start):
     // drop any cached hierarchy or time-step cycle.
     virtual void reset() {}
+    // The residual of the grid after each iteration, for solvers that adapt a setting to the convergence they see.
+    virtual void observe(double /*residual*/) {}
 };
 
 struct SolverInfo {

@@ -54,7 +54,9 @@ static void check_same_as_psor(const char *domain, int ni, int nj, int system) {
     dist = grid_distance(x1, y1, x2, y2, ni * nj);
     print_message("%-7s %-14s %3dx%-3d: psor %5d sweeps, multigrid %2d cycles, grids differ by %.2e\n",
                   system ? "Winslow" : "Laplace", domain, ni, nj, kp, km, dist);
-    assert_true(dist < 1e-10);
+    /* Both stop at residual 1e-13 (about a Jacobi step as a fraction of the
+     * domain): on the annulus (size 25) that leaves ~1e-10 between them. */
+    assert_true(dist < 1e-9);
     assert_true(km <= 12);
     free(x1); free(y1); free(x2); free(y2);
 }
