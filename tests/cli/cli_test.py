@@ -158,6 +158,14 @@ class ErrorMessages(unittest.TestCase):
         self.check(base + left + '{ kind = "tanh", beta = 2 }\n', 3,
                    "CASE:14:33: key 'sides.left.distribution.beta': unknown key (expected one of: kind, delta)")
 
+    def test_multigrid_parameters(self):
+        if not features()["solvers"]["multigrid"]:
+            self.skipTest("this build has no multigrid")
+        self.check('size = [9, 9]\n[solver]\nmethod = "multigrid"\nmg_cycle = 3\n' + self.GOOD_SIDES, 4,
+                   "CASE:4:12: key 'solver.mg_cycle': eg2d_set_parameter: mg_cycle = 3: must be in [1, 2]")
+        self.check('size = [9, 9]\n[solver]\nmethod = "multigrid"\nmg_fmg = "no"\n' + self.GOOD_SIDES, 3,
+                   "CASE:4:10: key 'solver.mg_fmg': bad formula \"no\": Unexpected token \"no\" found at position 0.")
+
     def test_toml_syntax(self):
         self.check('size = [9, 9\n', 3, "CASE:1:14: TOML syntax error: Error while parsing array: encountered end-of-file")
 
