@@ -23,7 +23,8 @@
  * residual evaluation), measured after the run. A run whose CPU time passes
  * --cap seconds (default 60; or its wall time 5x that) is stopped by the
  * monitor and reported as "capped" with the iterations it did. With
- * --repeats N the times are medians of N runs. A run that reaches the
+ * --repeats N the times are medians of N runs. JSON has -1 where a value
+ * is not finite (or undefined). A run that reaches the
  * residual with folded cells is reported as "folded". Solvers are found
  * NLopt-style: every id 0..99 with eg2d_solver_name(id) != NULL. Timings
  * belong here, never in the tests. */
@@ -189,8 +190,9 @@ static void print_row(const char *case_name, int ni, int nj, const char *solver,
             "\"iterations_per_cpu_second\": %.3f, \"factor_per_iteration\": %.6f, \"residual_cpu_seconds\": %.6e, "
             "\"work_units\": %.2f, \"wall_spacing\": %.6e, \"max_aspect_ratio\": %.6e, \"status\": \"%s\"}",
             json_first ? "" : ",", case_name, ni, nj, solver, r->iterations, r->wall, r->cpu, r->r0, r->residual,
-            rate, isnan(factor) ? -1.0 : factor, r->residual_cpu, isnan(wu) ? -1.0 : wu, r->wall_spacing,
-            isnan(r->aspect_ratio) ? -1.0 : r->aspect_ratio, r->status);
+            rate, isfinite(factor) ? factor : -1.0, r->residual_cpu, isfinite(wu) ? wu : -1.0,
+            isfinite(r->wall_spacing) ? r->wall_spacing : -1.0, isfinite(r->aspect_ratio) ? r->aspect_ratio : -1.0,
+            r->status);
     json_first = 0;
 }
 
