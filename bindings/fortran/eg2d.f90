@@ -1,0 +1,459 @@
+! eg2d.f90 -- module eg2d, the Fortran interface of libeg2d.
+!
+! Two layers in one module (`use eg2d`):
+!  1. the C API itself (eg2d_capi.inc): bind(C) interfaces under the C names
+!     and the constants under the C names, for line-by-line translations of C;
+!  2. Fortran-friendly wrappers under their own names: the type eg2d_grid_t
+!     (owns a handle, frees it in its final procedure) whose procedures take
+!     x(:,:) arrays with shape checks and an optional `status`. Without
+!     `status` a failing call stops the program with eg2d_last_error's
+!     message; with it, the status is returned and g%last_error() has the text.
+!
+!     type(eg2d_grid_t) :: g
+!     call g%create(65, 65)
+!     call g%set_side(EG2D_SIDE_JMIN, xb, yb)      ... the four sides
+!     call g%solve(status=rc)
+!     if (rc /= EG2D_OK) print *, g%last_error()
+!     call g%get_coordinates(x, y)                 ! x(ni,nj), y(ni,nj)
+!
+! Arrays are real(c_double) (= real(kind(1d0)) with gfortran); node (i, j) of
+! the C manual is x(i+1, j+1) here.
+module eg2d
+  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_ptr, c_funptr, c_char, c_size_t, &
+       c_null_ptr, c_null_funptr, c_associated, c_f_pointer, c_funloc
+  implicit none
+  private
+
+  include 'eg2d_capi.inc'
+
+  ! The real kind of every coordinate array.
+  integer, parameter, public :: eg2d_dp = c_double
+
+  ! A grid: the handle of eg2d_create and the text of its last failure.
+  ! Do not copy a created grid by assignment (both copies would own the handle).
+  type, public :: eg2d_grid_t
+    type(c_ptr), private :: handle = c_null_ptr
+    character(:), allocatable, private :: message
+  contains
+    procedure :: create => grid_create
+    procedure :: destroy => grid_destroy
+    procedure :: c_handle => grid_c_handle
+    procedure :: last_error => grid_last_error
+    procedure :: set_topology => grid_set_topology
+    procedure :: get_topology => grid_get_topology
+    procedure :: set_side => grid_set_side
+    procedure :: set_boundary => grid_set_boundary
+    procedure :: initialize => grid_initialize
+    procedure :: set_coordinates => grid_set_coordinates
+    procedure :: set_system => grid_set_system
+    procedure :: set_solver => grid_set_solver
+    procedure :: get_solver => grid_get_solver
+    procedure :: set_relaxation => grid_set_relaxation
+    procedure :: set_tolerance => grid_set_tolerance
+    procedure :: set_max_iterations => grid_set_max_iterations
+    procedure :: set_parameter => grid_set_parameter
+    procedure :: get_parameter => grid_get_parameter
+    procedure :: set_monitor => grid_set_monitor
+    procedure :: iterate => grid_iterate
+    procedure :: solve => grid_solve
+    procedure :: get_size => grid_get_size
+    procedure :: get_coordinates => grid_get_coordinates
+    procedure :: get_residual => grid_get_residual
+    procedure :: get_iterations => grid_get_iterations
+    procedure :: get_quality => grid_get_quality
+    final :: grid_final
+  end type eg2d_grid_t
+
+  public :: eg2d_c_string, eg2d_status_message, eg2d_solver_short_name, eg2d_version_string
+  public :: eg2d_get_parameter_bounds, eg2d_live_grids
+
+  ! Grids created through eg2d_grid_t and not yet freed (to check finalisation).
+  integer, save :: live_grids = 0
+
+contains
+
+  ! ---------------------------------------------------------------- strings
+  ! A Fortran copy of a NUL-terminated C string; '' for NULL.
+  function eg2d_c_string(p) result(s)
+    type(c_ptr), intent(in) :: p
+    character(:), allocatable :: s
+    character(kind=c_char), pointer :: chars(:)
+    integer :: n, i
+    if (.not. c_associated(p)) then
+      s = ''
+      return
+    end if
+    n = int(c_strlen(p))
+    call c_f_pointer(p, chars, [n])
+    allocate (character(n) :: s)
+    do i = 1, n
+      s(i:i) = chars(i)
+    end do
+  end function eg2d_c_string
+
+  ! The English name of a status ("EG2D_ERR_BOUNDARY: inconsistent boundary").
+  function eg2d_status_message(status) result(s)
+    integer, intent(in) :: status
+    character(:), allocatable :: s
+    s = eg2d_c_string(eg2d_status_string(int(status, c_int)))
+  end function eg2d_status_message
+
+  ! A solver's short name ("psor"), or '' if this library has no such solver.
+  function eg2d_solver_short_name(solver) result(s)
+    integer, intent(in) :: solver
+    character(:), allocatable :: s
+    s = eg2d_c_string(eg2d_solver_name(int(solver, c_int)))
+  end function eg2d_solver_short_name
+
+  ! The run-time library version as "major.minor.patch".
+  function eg2d_version_string() result(s)
+    character(:), allocatable :: s
+    integer(c_int) :: major, minor, patch
+    character(32) :: buf
+    call eg2d_version(major, minor, patch)
+    write (buf, '(i0,".",i0,".",i0)') major, minor, patch
+    s = trim(buf)
+  end function eg2d_version_string
+
+  ! Bounds and default of a generic parameter (EG2D_PARAM_*), without a grid.
+  subroutine eg2d_get_parameter_bounds(param, lower, upper, default_value, status)
+    integer, intent(in) :: param
+    real(c_double), intent(out) :: lower, upper, default_value
+    integer, intent(out), optional :: status
+    integer(c_int) :: rc
+    rc = eg2d_parameter_bounds(int(param, c_int), lower, upper, default_value)
+    call settle(rc, 'eg2d_get_parameter_bounds', eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
+  end subroutine eg2d_get_parameter_bounds
+
+  integer function eg2d_live_grids()
+    eg2d_live_grids = live_grids
+  end function eg2d_live_grids
+
+  ! ---------------------------------------------------------------- errors
+  ! Hands rc to the caller's status, or stops the program with the message.
+  subroutine settle(rc, where, message, status)
+    integer(c_int), intent(in) :: rc
+    character(*), intent(in) :: where, message
+    integer, intent(out), optional :: status
+    if (present(status)) then
+      status = int(rc)
+    else if (rc /= EG2D_OK) then
+      error stop 'eg2d: ' // where // ': ' // message
+    end if
+  end subroutine settle
+
+  ! After a C call on the grid: records the library's message on failure.
+  subroutine finish(self, rc, where, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer(c_int), intent(in) :: rc
+    character(*), intent(in) :: where
+    integer, intent(out), optional :: status
+    if (rc /= EG2D_OK) self%message = eg2d_c_string(eg2d_last_error(self%handle))
+    if (.not. allocated(self%message)) self%message = ''
+    call settle(rc, where, self%message, status)
+  end subroutine finish
+
+  ! A failure found by the Fortran layer (a shape check) before calling C.
+  subroutine fail(self, rc, where, message, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer(c_int), intent(in) :: rc
+    character(*), intent(in) :: where, message
+    integer, intent(out), optional :: status
+    self%message = where // ': ' // message
+    call settle(rc, where, self%message, status)
+  end subroutine fail
+
+  ! Checks that x and y have the shape (m, n); false after recording a failure.
+  logical function shape_ok(self, where, x, y, m, n, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    character(*), intent(in) :: where
+    real(c_double), intent(in) :: x(:, :), y(:, :)
+    integer, intent(in) :: m, n
+    integer, intent(out), optional :: status
+    character(160) :: buf
+    shape_ok = all(shape(x) == [m, n]) .and. all(shape(y) == [m, n])
+    if (.not. shape_ok) then
+      write (buf, '("x is (",i0,",",i0,"), y is (",i0,",",i0,"): both must be (ni,nj) = (",i0,",",i0,")")') &
+           shape(x), shape(y), m, n
+      call fail(self, EG2D_ERR_ARGUMENT, where, trim(buf), status)
+    end if
+  end function shape_ok
+
+  ! The grid's size, or a recorded failure (not created).
+  logical function size_of(self, where, ni, nj, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    character(*), intent(in) :: where
+    integer(c_int), intent(out) :: ni, nj
+    integer, intent(out), optional :: status
+    integer(c_int) :: rc
+    ni = 0
+    nj = 0
+    rc = eg2d_get_size(self%handle, ni, nj)
+    size_of = rc == EG2D_OK
+    if (.not. size_of) call finish(self, rc, where, status)
+  end function size_of
+
+  ! ---------------------------------------------------------------- lifetime
+  ! Creates an ni x nj grid; an earlier grid held by self is freed first.
+  subroutine grid_create(self, ni, nj, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: ni, nj
+    integer, intent(out), optional :: status
+    integer(c_int) :: rc
+    call grid_destroy(self)
+    rc = eg2d_create(int(ni, c_int), int(nj, c_int), self%handle)
+    if (rc == EG2D_OK) live_grids = live_grids + 1
+    call finish(self, rc, 'create', status)
+  end subroutine grid_create
+
+  ! Frees the grid; a grid never created (or already freed) is a no-op.
+  subroutine grid_destroy(self)
+    class(eg2d_grid_t), intent(inout) :: self
+    if (c_associated(self%handle)) then
+      call eg2d_destroy(self%handle)
+      live_grids = live_grids - 1
+    end if
+    self%handle = c_null_ptr
+  end subroutine grid_destroy
+
+  subroutine grid_final(self)
+    type(eg2d_grid_t), intent(inout) :: self
+    call grid_destroy(self)
+  end subroutine grid_final
+
+  ! The raw handle, for the bind(C) functions (eg2d_solve(g%c_handle())).
+  function grid_c_handle(self) result(p)
+    class(eg2d_grid_t), intent(in) :: self
+    type(c_ptr) :: p
+    p = self%handle
+  end function grid_c_handle
+
+  ! The message of the last failed call through this object ('' if none).
+  function grid_last_error(self) result(s)
+    class(eg2d_grid_t), intent(in) :: self
+    character(:), allocatable :: s
+    if (allocated(self%message)) then
+      s = self%message
+    else
+      s = ''
+    end if
+  end function grid_last_error
+
+  ! ---------------------------------------------------------------- topology
+  subroutine grid_set_topology(self, topology, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: topology
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_set_topology(self%handle, int(topology, c_int)), 'set_topology', status)
+  end subroutine grid_set_topology
+
+  subroutine grid_get_topology(self, topology, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(out) :: topology
+    integer, intent(out), optional :: status
+    integer(c_int) :: t
+    t = -1
+    call finish(self, eg2d_get_topology(self%handle, t), 'get_topology', status)
+    topology = int(t)
+  end subroutine grid_get_topology
+
+  ! ---------------------------------------------------------------- boundary
+  ! One side from its points in increasing index: ni points for JMIN/JMAX,
+  ! nj for IMIN/IMAX. An unknown side is left for the library to report.
+  subroutine grid_set_side(self, side, x, y, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: side
+    real(c_double), intent(in) :: x(:), y(:)
+    integer, intent(out), optional :: status
+    integer(c_int) :: ni, nj
+    integer :: need
+    character(160) :: buf
+    if (.not. size_of(self, 'set_side', ni, nj, status)) return
+    need = -1
+    if (side == EG2D_SIDE_JMIN .or. side == EG2D_SIDE_JMAX) need = ni
+    if (side == EG2D_SIDE_IMIN .or. side == EG2D_SIDE_IMAX) need = nj
+    if (need >= 0 .and. (size(x) /= need .or. size(y) /= need)) then
+      write (buf, '("side ",i0,": x has ",i0," and y ",i0," points; the side has ",i0)') &
+           side, size(x), size(y), need
+      call fail(self, EG2D_ERR_ARGUMENT, 'set_side', trim(buf), status)
+      return
+    end if
+    call finish(self, eg2d_set_side(self%handle, int(side, c_int), x, y), 'set_side', status)
+  end subroutine grid_set_side
+
+  ! The boundary ring from whole x(ni,nj), y(ni,nj) arrays (only the boundary is read).
+  subroutine grid_set_boundary(self, x, y, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    real(c_double), intent(in) :: x(:, :), y(:, :)
+    integer, intent(out), optional :: status
+    integer(c_int) :: ni, nj
+    if (.not. size_of(self, 'set_boundary', ni, nj, status)) return
+    if (.not. shape_ok(self, 'set_boundary', x, y, ni, nj, status)) return
+    call finish(self, eg2d_set_boundary(self%handle, x, y), 'set_boundary', status)
+  end subroutine grid_set_boundary
+
+  subroutine grid_initialize(self, method, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: method
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_initialize(self%handle, int(method, c_int)), 'initialize', status)
+  end subroutine grid_initialize
+
+  ! A whole start grid x(ni,nj), y(ni,nj), boundary included.
+  subroutine grid_set_coordinates(self, x, y, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    real(c_double), intent(in) :: x(:, :), y(:, :)
+    integer, intent(out), optional :: status
+    integer(c_int) :: ni, nj
+    if (.not. size_of(self, 'set_coordinates', ni, nj, status)) return
+    if (.not. shape_ok(self, 'set_coordinates', x, y, ni, nj, status)) return
+    call finish(self, eg2d_set_coordinates(self%handle, x, y), 'set_coordinates', status)
+  end subroutine grid_set_coordinates
+
+  ! ---------------------------------------------------------------- settings
+  subroutine grid_set_system(self, system, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: system
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_set_system(self%handle, int(system, c_int)), 'set_system', status)
+  end subroutine grid_set_system
+
+  subroutine grid_set_solver(self, solver, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: solver
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_set_solver(self%handle, int(solver, c_int)), 'set_solver', status)
+  end subroutine grid_set_solver
+
+  subroutine grid_get_solver(self, solver, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(out) :: solver
+    integer, intent(out), optional :: status
+    integer(c_int) :: s
+    s = -1
+    call finish(self, eg2d_get_solver(self%handle, s), 'get_solver', status)
+    solver = int(s)
+  end subroutine grid_get_solver
+
+  subroutine grid_set_relaxation(self, omega, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    real(c_double), intent(in) :: omega
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_set_relaxation(self%handle, omega), 'set_relaxation', status)
+  end subroutine grid_set_relaxation
+
+  subroutine grid_set_tolerance(self, tolerance, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    real(c_double), intent(in) :: tolerance
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_set_tolerance(self%handle, tolerance), 'set_tolerance', status)
+  end subroutine grid_set_tolerance
+
+  subroutine grid_set_max_iterations(self, max_iterations, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: max_iterations
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_set_max_iterations(self%handle, int(max_iterations, c_int)), &
+         'set_max_iterations', status)
+  end subroutine grid_set_max_iterations
+
+  subroutine grid_set_parameter(self, param, value, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: param
+    real(c_double), intent(in) :: value
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_set_parameter(self%handle, int(param, c_int), value), 'set_parameter', status)
+  end subroutine grid_set_parameter
+
+  subroutine grid_get_parameter(self, param, value, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: param
+    real(c_double), intent(out) :: value
+    integer, intent(out), optional :: status
+    value = 0
+    call finish(self, eg2d_get_parameter(self%handle, int(param, c_int), value), 'get_parameter', status)
+  end subroutine grid_get_parameter
+
+  ! ---------------------------------------------------------------- running
+  ! fn: a bind(C) function with the interface eg2d_monitor_fn; absent removes
+  ! the monitor. user is handed to fn unchanged (c_loc of your data).
+  subroutine grid_set_monitor(self, fn, user, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    procedure(eg2d_monitor_fn), optional :: fn
+    type(c_ptr), intent(in), optional :: user
+    integer, intent(out), optional :: status
+    type(c_funptr) :: f
+    type(c_ptr) :: u
+    f = c_null_funptr
+    u = c_null_ptr
+    if (present(fn)) f = c_funloc(fn)
+    if (present(user)) u = user
+    call finish(self, eg2d_set_monitor(self%handle, f, u), 'set_monitor', status)
+  end subroutine grid_set_monitor
+
+  subroutine grid_iterate(self, iterations, residual, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: iterations
+    real(c_double), intent(out), optional :: residual
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_iterate(self%handle, int(iterations, c_int), residual), 'iterate', status)
+  end subroutine grid_iterate
+
+  subroutine grid_solve(self, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_solve(self%handle), 'solve', status)
+  end subroutine grid_solve
+
+  ! ---------------------------------------------------------------- queries
+  subroutine grid_get_size(self, ni, nj, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(out) :: ni, nj
+    integer, intent(out), optional :: status
+    integer(c_int) :: m, n
+    m = 0
+    n = 0
+    call finish(self, eg2d_get_size(self%handle, m, n), 'get_size', status)
+    ni = int(m)
+    nj = int(n)
+  end subroutine grid_get_size
+
+  ! The node coordinates into x(ni,nj), y(ni,nj).
+  subroutine grid_get_coordinates(self, x, y, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    real(c_double), intent(inout) :: x(:, :), y(:, :)
+    integer, intent(out), optional :: status
+    integer(c_int) :: ni, nj
+    if (.not. size_of(self, 'get_coordinates', ni, nj, status)) return
+    if (.not. shape_ok(self, 'get_coordinates', x, y, ni, nj, status)) return
+    call finish(self, eg2d_get_coordinates(self%handle, x, y), 'get_coordinates', status)
+  end subroutine grid_get_coordinates
+
+  subroutine grid_get_residual(self, residual, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    real(c_double), intent(out) :: residual
+    integer, intent(out), optional :: status
+    residual = 0
+    call finish(self, eg2d_get_residual(self%handle, residual), 'get_residual', status)
+  end subroutine grid_get_residual
+
+  subroutine grid_get_iterations(self, iterations, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(out) :: iterations
+    integer, intent(out), optional :: status
+    integer(c_int) :: n
+    n = 0
+    call finish(self, eg2d_get_iterations(self%handle, n), 'get_iterations', status)
+    iterations = int(n)
+  end subroutine grid_get_iterations
+
+  subroutine grid_get_quality(self, metric, value, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: metric
+    real(c_double), intent(out) :: value
+    integer, intent(out), optional :: status
+    value = 0
+    call finish(self, eg2d_get_quality(self%handle, int(metric, c_int), value), 'get_quality', status)
+  end subroutine grid_get_quality
+
+end module eg2d
