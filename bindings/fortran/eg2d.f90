@@ -122,7 +122,7 @@ contains
     integer, intent(out), optional :: status
     integer(c_int) :: rc
     rc = eg2d_parameter_bounds(int(param, c_int), lower, upper, default_value)
-    call settle(rc, 'eg2d_get_parameter_bounds', eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
+    call settle(rc, eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
   end subroutine eg2d_get_parameter_bounds
 
   integer function eg2d_live_grids()
@@ -130,27 +130,28 @@ contains
   end function eg2d_live_grids
 
   ! ---------------------------------------------------------------- errors
-  ! Hands rc to the caller's status, or stops the program with the message.
-  subroutine settle(rc, where, message, status)
+  ! Hands rc to the caller's status, or stops the program with the message
+  ! (which starts with the function's name: "eg2d_solve: ..." from the library,
+  ! "set_side: ..." from a Fortran shape check).
+  subroutine settle(rc, message, status)
     integer(c_int), intent(in) :: rc
-    character(*), intent(in) :: where, message
+    character(*), intent(in) :: message
     integer, intent(out), optional :: status
     if (present(status)) then
       status = int(rc)
     else if (rc /= EG2D_OK) then
-      error stop 'eg2d: ' // where // ': ' // message
+      error stop 'eg2d: ' // message
     end if
   end subroutine settle
 
   ! After a C call on the grid: records the library's message on failure.
-  subroutine finish(self, rc, where, status)
+  subroutine finish(self, rc, status)
     class(eg2d_grid_t), intent(inout) :: self
     integer(c_int), intent(in) :: rc
-    character(*), intent(in) :: where
     integer, intent(out), optional :: status
     if (rc /= EG2D_OK) self%message = eg2d_c_string(eg2d_last_error(self%handle))
     if (.not. allocated(self%message)) self%message = ''
-    call settle(rc, where, self%message, status)
+    call settle(rc, self%message, status)
   end subroutine finish
 
   ! A failure found by the Fortran layer (a shape check) before calling C.
@@ -160,7 +161,7 @@ contains
     character(*), intent(in) :: where, message
     integer, intent(out), optional :: status
     self%message = where // ': ' // message
-    call settle(rc, where, self%message, status)
+    call settle(rc, self%message, status)
   end subroutine fail
 
   ! Checks that x and y have the shape (m, n); false after recording a failure.
@@ -180,9 +181,8 @@ contains
   end function shape_ok
 
   ! The grid's size, or a recorded failure (not created).
-  logical function size_of(self, where, ni, nj, status)
+  logical function size_of(self, ni, nj, status)
     class(eg2d_grid_t), intent(inout) :: self
-    character(*), intent(in) :: where
     integer(c_int), intent(out) :: ni, nj
     integer, intent(out), optional :: status
     integer(c_int) :: rc
@@ -190,7 +190,7 @@ contains
     nj = 0
     rc = eg2d_get_size(self%handle, ni, nj)
     size_of = rc == EG2D_OK
-    if (.not. size_of) call finish(self, rc, where, status)
+    if (.not. size_of) call finish(self, rc, status)
   end function size_of
 
   ! ---------------------------------------------------------------- lifetime
@@ -203,7 +203,7 @@ contains
     call grid_destroy(self)
     rc = eg2d_create(int(ni, c_int), int(nj, c_int), self%handle)
     if (rc == EG2D_OK) live_grids = live_grids + 1
-    call finish(self, rc, 'create', status)
+    call finish(self, rc, status)
   end subroutine grid_create
 
   ! Frees the grid; a grid never created (or already freed) is a no-op.
@@ -244,7 +244,7 @@ contains
     class(eg2d_grid_t), intent(inout) :: self
     integer, intent(in) :: topology
     integer, intent(out), optional :: status
-    call finish(self, eg2d_set_topology(self%handle, int(topology, c_int)), 'set_topology', status)
+    call finish(self, eg2d_set_topology(self%handle, int(topology, c_int)), status)
   end subroutine grid_set_topology
 
   subroutine grid_get_topology(self, topology, status)
@@ -253,7 +253,7 @@ contains
     integer, intent(out), optional :: status
     integer(c_int) :: t
     t = -1
-    call finish(self, eg2d_get_topology(self%handle, t), 'get_topology', status)
+    call finish(self, eg2d_get_topology(self%handle, t), status)
     topology = int(t)
   end subroutine grid_get_topology
 
@@ -268,7 +268,7 @@ contains
     integer(c_int) :: ni, nj
     integer :: need
     character(160) :: buf
-    if (.not. size_of(self, 'set_side', ni, nj, status)) return
+    if (.not. size_of(self, ni, nj, status)) return
     need = -1
     if (side == EG2D_SIDE_JMIN .or. side == EG2D_SIDE_JMAX) need = ni
     if (side == EG2D_SIDE_IMIN .or. side == EG2D_SIDE_IMAX) need = nj
@@ -278,7 +278,7 @@ contains
       call fail(self, EG2D_ERR_ARGUMENT, 'set_side', trim(buf), status)
       return
     end if
-    call finish(self, eg2d_set_side(self%handle, int(side, c_int), x, y), 'set_side', status)
+    call finish(self, eg2d_set_side(self%handle, int(side, c_int), x, y), status)
   end subroutine grid_set_side
 
   ! The boundary ring from whole x(ni,nj), y(ni,nj) arrays (only the boundary is read).
@@ -287,16 +287,16 @@ contains
     real(c_double), intent(in) :: x(:, :), y(:, :)
     integer, intent(out), optional :: status
     integer(c_int) :: ni, nj
-    if (.not. size_of(self, 'set_boundary', ni, nj, status)) return
+    if (.not. size_of(self, ni, nj, status)) return
     if (.not. shape_ok(self, 'set_boundary', x, y, ni, nj, status)) return
-    call finish(self, eg2d_set_boundary(self%handle, x, y), 'set_boundary', status)
+    call finish(self, eg2d_set_boundary(self%handle, x, y), status)
   end subroutine grid_set_boundary
 
   subroutine grid_initialize(self, method, status)
     class(eg2d_grid_t), intent(inout) :: self
     integer, intent(in) :: method
     integer, intent(out), optional :: status
-    call finish(self, eg2d_initialize(self%handle, int(method, c_int)), 'initialize', status)
+    call finish(self, eg2d_initialize(self%handle, int(method, c_int)), status)
   end subroutine grid_initialize
 
   ! A whole start grid x(ni,nj), y(ni,nj), boundary included.
@@ -305,9 +305,9 @@ contains
     real(c_double), intent(in) :: x(:, :), y(:, :)
     integer, intent(out), optional :: status
     integer(c_int) :: ni, nj
-    if (.not. size_of(self, 'set_coordinates', ni, nj, status)) return
+    if (.not. size_of(self, ni, nj, status)) return
     if (.not. shape_ok(self, 'set_coordinates', x, y, ni, nj, status)) return
-    call finish(self, eg2d_set_coordinates(self%handle, x, y), 'set_coordinates', status)
+    call finish(self, eg2d_set_coordinates(self%handle, x, y), status)
   end subroutine grid_set_coordinates
 
   ! ---------------------------------------------------------------- settings
@@ -315,14 +315,14 @@ contains
     class(eg2d_grid_t), intent(inout) :: self
     integer, intent(in) :: system
     integer, intent(out), optional :: status
-    call finish(self, eg2d_set_system(self%handle, int(system, c_int)), 'set_system', status)
+    call finish(self, eg2d_set_system(self%handle, int(system, c_int)), status)
   end subroutine grid_set_system
 
   subroutine grid_set_solver(self, solver, status)
     class(eg2d_grid_t), intent(inout) :: self
     integer, intent(in) :: solver
     integer, intent(out), optional :: status
-    call finish(self, eg2d_set_solver(self%handle, int(solver, c_int)), 'set_solver', status)
+    call finish(self, eg2d_set_solver(self%handle, int(solver, c_int)), status)
   end subroutine grid_set_solver
 
   subroutine grid_get_solver(self, solver, status)
@@ -331,7 +331,7 @@ contains
     integer, intent(out), optional :: status
     integer(c_int) :: s
     s = -1
-    call finish(self, eg2d_get_solver(self%handle, s), 'get_solver', status)
+    call finish(self, eg2d_get_solver(self%handle, s), status)
     solver = int(s)
   end subroutine grid_get_solver
 
@@ -339,22 +339,21 @@ contains
     class(eg2d_grid_t), intent(inout) :: self
     real(c_double), intent(in) :: omega
     integer, intent(out), optional :: status
-    call finish(self, eg2d_set_relaxation(self%handle, omega), 'set_relaxation', status)
+    call finish(self, eg2d_set_relaxation(self%handle, omega), status)
   end subroutine grid_set_relaxation
 
   subroutine grid_set_tolerance(self, tolerance, status)
     class(eg2d_grid_t), intent(inout) :: self
     real(c_double), intent(in) :: tolerance
     integer, intent(out), optional :: status
-    call finish(self, eg2d_set_tolerance(self%handle, tolerance), 'set_tolerance', status)
+    call finish(self, eg2d_set_tolerance(self%handle, tolerance), status)
   end subroutine grid_set_tolerance
 
   subroutine grid_set_max_iterations(self, max_iterations, status)
     class(eg2d_grid_t), intent(inout) :: self
     integer, intent(in) :: max_iterations
     integer, intent(out), optional :: status
-    call finish(self, eg2d_set_max_iterations(self%handle, int(max_iterations, c_int)), &
-         'set_max_iterations', status)
+    call finish(self, eg2d_set_max_iterations(self%handle, int(max_iterations, c_int)), status)
   end subroutine grid_set_max_iterations
 
   subroutine grid_set_parameter(self, param, value, status)
@@ -362,7 +361,7 @@ contains
     integer, intent(in) :: param
     real(c_double), intent(in) :: value
     integer, intent(out), optional :: status
-    call finish(self, eg2d_set_parameter(self%handle, int(param, c_int), value), 'set_parameter', status)
+    call finish(self, eg2d_set_parameter(self%handle, int(param, c_int), value), status)
   end subroutine grid_set_parameter
 
   subroutine grid_get_parameter(self, param, value, status)
@@ -371,7 +370,7 @@ contains
     real(c_double), intent(out) :: value
     integer, intent(out), optional :: status
     value = 0
-    call finish(self, eg2d_get_parameter(self%handle, int(param, c_int), value), 'get_parameter', status)
+    call finish(self, eg2d_get_parameter(self%handle, int(param, c_int), value), status)
   end subroutine grid_get_parameter
 
   ! ---------------------------------------------------------------- running
@@ -388,7 +387,7 @@ contains
     u = c_null_ptr
     if (present(fn)) f = c_funloc(fn)
     if (present(user)) u = user
-    call finish(self, eg2d_set_monitor(self%handle, f, u), 'set_monitor', status)
+    call finish(self, eg2d_set_monitor(self%handle, f, u), status)
   end subroutine grid_set_monitor
 
   subroutine grid_iterate(self, iterations, residual, status)
@@ -396,13 +395,13 @@ contains
     integer, intent(in) :: iterations
     real(c_double), intent(out), optional :: residual
     integer, intent(out), optional :: status
-    call finish(self, eg2d_iterate(self%handle, int(iterations, c_int), residual), 'iterate', status)
+    call finish(self, eg2d_iterate(self%handle, int(iterations, c_int), residual), status)
   end subroutine grid_iterate
 
   subroutine grid_solve(self, status)
     class(eg2d_grid_t), intent(inout) :: self
     integer, intent(out), optional :: status
-    call finish(self, eg2d_solve(self%handle), 'solve', status)
+    call finish(self, eg2d_solve(self%handle), status)
   end subroutine grid_solve
 
   ! ---------------------------------------------------------------- queries
@@ -413,7 +412,7 @@ contains
     integer(c_int) :: m, n
     m = 0
     n = 0
-    call finish(self, eg2d_get_size(self%handle, m, n), 'get_size', status)
+    call finish(self, eg2d_get_size(self%handle, m, n), status)
     ni = int(m)
     nj = int(n)
   end subroutine grid_get_size
@@ -424,9 +423,9 @@ contains
     real(c_double), intent(inout) :: x(:, :), y(:, :)
     integer, intent(out), optional :: status
     integer(c_int) :: ni, nj
-    if (.not. size_of(self, 'get_coordinates', ni, nj, status)) return
+    if (.not. size_of(self, ni, nj, status)) return
     if (.not. shape_ok(self, 'get_coordinates', x, y, ni, nj, status)) return
-    call finish(self, eg2d_get_coordinates(self%handle, x, y), 'get_coordinates', status)
+    call finish(self, eg2d_get_coordinates(self%handle, x, y), status)
   end subroutine grid_get_coordinates
 
   subroutine grid_get_residual(self, residual, status)
@@ -434,7 +433,7 @@ contains
     real(c_double), intent(out) :: residual
     integer, intent(out), optional :: status
     residual = 0
-    call finish(self, eg2d_get_residual(self%handle, residual), 'get_residual', status)
+    call finish(self, eg2d_get_residual(self%handle, residual), status)
   end subroutine grid_get_residual
 
   subroutine grid_get_iterations(self, iterations, status)
@@ -443,7 +442,7 @@ contains
     integer, intent(out), optional :: status
     integer(c_int) :: n
     n = 0
-    call finish(self, eg2d_get_iterations(self%handle, n), 'get_iterations', status)
+    call finish(self, eg2d_get_iterations(self%handle, n), status)
     iterations = int(n)
   end subroutine grid_get_iterations
 
@@ -453,7 +452,7 @@ contains
     real(c_double), intent(out) :: value
     integer, intent(out), optional :: status
     value = 0
-    call finish(self, eg2d_get_quality(self%handle, int(metric, c_int), value), 'get_quality', status)
+    call finish(self, eg2d_get_quality(self%handle, int(metric, c_int), value), status)
   end subroutine grid_get_quality
 
 end module eg2d
