@@ -1,0 +1,229 @@
+/*
+ * eg2d.hpp -- header-only C++ wrapper of eg2d.h (C++17).
+ *
+ *     eg2d::grid g(65, 65);                      // eg2d_create; freed by ~grid
+ *     g.set_side(EG2D_SIDE_JMIN, xb, yb);        // ... the four sides (std::vector<double>)
+ *     g.set_tolerance(1e-10);
+ *     g.solve();                                 // throws eg2d::error on failure
+ *     std::vector<double> x, y;
+ *     g.get_coordinates(x, y);                   // ni*nj, Fortran order
+ *
+ * Every failed call throws eg2d::error, whose status() is the EG2D_ERR_* code
+ * and what() the message of eg2d_last_error (or of the size check that this
+ * header does before handing a vector to the library). Methods are the C
+ * functions without the eg2d_ prefix; get() gives the raw handle for C calls.
+ */
+#ifndef EG2D_HPP
+#define EG2D_HPP
+
+#include <exception>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "eg2d.h"
+
+namespace eg2d {
+
+class error : public std::runtime_error {
+public:
+    error(int status, const std::string &message) : std::runtime_error(message), status_(status) {}
+    int status() const noexcept { return status_; }
+
+private:
+    int status_;
+};
+
+namespace detail {
+inline void check(int status, const eg2d_grid *g) {
+    if (status != EG2D_OK) throw error(status, ::eg2d_last_error(g));
+}
+inline std::string text(const char *s) { return s ? s : ""; }
+}  // namespace detail
+
+/* The calls that need no grid. */
+inline std::string status_string(int status) { return ::eg2d_status_string(status); }
+inline std::string last_error() { return ::eg2d_last_error(nullptr); }
+struct version_info {
+    int major, minor, patch;
+};
+inline version_info version() {
+    version_info v{0, 0, 0};
+    ::eg2d_version(&v.major, &v.minor, &v.patch);
+    return v;
+}
+/* A solver's short name, "" if the library has no such solver. */
+inline std::string solver_name(int solver) { return detail::text(::eg2d_solver_name(solver)); }
+struct parameter_info {
+    double lower, upper, default_value;
+};
+inline parameter_info parameter_bounds(int param) {
+    parameter_info p{0, 0, 0};
+    detail::check(::eg2d_parameter_bounds(param, &p.lower, &p.upper, &p.default_value), nullptr);
+    return p;
+}
+
+/* One grid handle: move-only, freed by the destructor. */
+class grid {
+public:
+    /* Called after every iteration; returning true stops the run. */
+    using monitor = std::function<bool(int iteration, double residual)>;
+
+    grid(int ni, int nj) {
+        eg2d_grid *g = nullptr;
+        const int status = ::eg2d_create(ni, nj, &g);
+        if (status != EG2D_OK) throw error(status, ::eg2d_last_error(nullptr));
+        g_ = g;
+    }
+    ~grid() { ::eg2d_destroy(g_); }
+    grid(const grid &) = delete;
+    grid &operator=(const grid &) = delete;
+    grid(grid &&other) noexcept : g_(std::exchange(other.g_, nullptr)), monitor_(std::move(other.monitor_)) {}
+    grid &operator=(grid &&other) noexcept {
+        if (this != &other) {
+            ::eg2d_destroy(g_);
+            g_ = std::exchange(other.g_, nullptr);
+            monitor_ = std::move(other.monitor_);
+        }
+        return *this;
+    }
+
+    eg2d_grid *get() const noexcept { return g_; }
+    std::string last_error() const { return ::eg2d_last_error(g_); }
+
+    void set_topology(int topology) { check(::eg2d_set_topology(g_, topology)); }
+    int get_topology() const {
+        int t = 0;
+        check(::eg2d_get_topology(g_, &t));
+        return t;
+    }
+
+    /* One side: ni points for JMIN/JMAX, nj for IMIN/IMAX. */
+    void set_side(int side, const std::vector<double> &x, const std::vector<double> &y) {
+        const auto n = side_points(side);
+        if (n && (x.size() != n || y.size() != n))
+            throw error(EG2D_ERR_ARGUMENT, "set_side: side " + std::to_string(side) + ": x has " +
+                                               std::to_string(x.size()) + " and y " + std::to_string(y.size()) +
+                                               " points; the side has " + std::to_string(n));
+        check(::eg2d_set_side(g_, side, x.data(), y.data()));
+    }
+    /* Whole ni*nj arrays (Fortran order); only the boundary is read. */
+    void set_boundary(const std::vector<double> &x, const std::vector<double> &y) {
+        check_nodes("set_boundary", x, y);
+        check(::eg2d_set_boundary(g_, x.data(), y.data()));
+    }
+    void initialize(int method = EG2D_INIT_TFI) { check(::eg2d_initialize(g_, method)); }
+    void set_coordinates(const std::vector<double> &x, const std::vector<double> &y) {
+        check_nodes("set_coordinates", x, y);
+        check(::eg2d_set_coordinates(g_, x.data(), y.data()));
+    }
+
+    void set_system(int system) { check(::eg2d_set_system(g_, system)); }
+    void set_solver(int solver) { check(::eg2d_set_solver(g_, solver)); }
+    int get_solver() const {
+        int s = 0;
+        check(::eg2d_get_solver(g_, &s));
+        return s;
+    }
+    void set_relaxation(double omega) { check(::eg2d_set_relaxation(g_, omega)); }
+    void set_tolerance(double tolerance) { check(::eg2d_set_tolerance(g_, tolerance)); }
+    void set_max_iterations(int max_iterations) { check(::eg2d_set_max_iterations(g_, max_iterations)); }
+    void set_parameter(int param, double value) { check(::eg2d_set_parameter(g_, param, value)); }
+    double get_parameter(int param) const {
+        double v = 0;
+        check(::eg2d_get_parameter(g_, param, &v));
+        return v;
+    }
+
+    /* An exception thrown by fn stops the run and is rethrown by iterate/solve.
+     * An empty fn removes the monitor. */
+    void set_monitor(monitor fn) {
+        if (!fn) {
+            check(::eg2d_set_monitor(g_, nullptr, nullptr));
+            monitor_.reset();
+            return;
+        }
+        auto state = std::make_unique<monitor_state>();
+        state->fn = std::move(fn);
+        check(::eg2d_set_monitor(g_, &grid::call_monitor, state.get()));
+        monitor_ = std::move(state);
+    }
+    /* Exactly `iterations` iterations; the residual after them. */
+    double iterate(int iterations) {
+        double r = 0;
+        run(::eg2d_iterate(g_, iterations, &r));
+        return r;
+    }
+    void solve() { run(::eg2d_solve(g_)); }
+
+    std::pair<int, int> get_size() const {
+        int ni = 0, nj = 0;
+        check(::eg2d_get_size(g_, &ni, &nj));
+        return {ni, nj};
+    }
+    /* x, y resized to ni*nj, node (i, j) at i + ni*j. */
+    void get_coordinates(std::vector<double> &x, std::vector<double> &y) const {
+        const auto [ni, nj] = get_size();
+        std::vector<double> xs(static_cast<std::size_t>(ni) * static_cast<std::size_t>(nj)), ys(xs.size());
+        check(::eg2d_get_coordinates(g_, xs.data(), ys.data()));
+        x.swap(xs);
+        y.swap(ys);
+    }
+    double get_residual() const {
+        double r = 0;
+        check(::eg2d_get_residual(g_, &r));
+        return r;
+    }
+    int get_iterations() const {
+        int n = 0;
+        check(::eg2d_get_iterations(g_, &n));
+        return n;
+    }
+    double get_quality(int metric) const {
+        double v = 0;
+        check(::eg2d_get_quality(g_, metric, &v));
+        return v;
+    }
+
+private:
+    struct monitor_state {
+        monitor fn;
+        std::exception_ptr thrown;
+    };
+    static int call_monitor(void *user, int iteration, double residual) noexcept {
+        auto *state = static_cast<monitor_state *>(user);
+        try {
+            return state->fn(iteration, residual) ? 1 : 0;
+        } catch (...) {
+            state->thrown = std::current_exception();
+            return 1;
+        }
+    }
+    void run(int status) {
+        if (monitor_ && monitor_->thrown) std::rethrow_exception(std::exchange(monitor_->thrown, nullptr));
+        check(status);
+    }
+    void check(int status) const { detail::check(status, g_); }
+    std::size_t side_points(int side) const {
+        const auto [ni, nj] = get_size();
+        if (side == EG2D_SIDE_JMIN || side == EG2D_SIDE_JMAX) return static_cast<std::size_t>(ni);
+        if (side == EG2D_SIDE_IMIN || side == EG2D_SIDE_IMAX) return static_cast<std::size_t>(nj);
+        return 0; /* unknown side: the library reports it */
+    }
+    void check_nodes(const char *what, const std::vector<double> &x, const std::vector<double> &y) const {
+        const auto [ni, nj] = get_size();
+        const auto n = static_cast<std::size_t>(ni) * static_cast<std::size_t>(nj);
+        if (x.size() != n || y.size() != n)
+            throw error(EG2D_ERR_ARGUMENT, std::string(what) + ": x has " + std::to_string(x.size()) + " and y " +
+                                               std::to_string(y.size()) + " values; ni*nj = " + std::to_string(n));
+    }
+
+    eg2d_grid *g_ = nullptr;
+    std::unique_ptr<monitor_state> monitor_;
+};
+
+}  // namespace eg2d
+#endif /* EG2D_HPP */

@@ -1,7 +1,7 @@
 /* The swan grid generated from C (tests/support/domains.c), written as text:
  * "ni nj" then x y of every node in Fortran order, %.17g. The Fortran test
  * test_swan_from_fortran generates the same grid through module eg2d and
- * compares. Usage: swan_write_c FILE */
+ * compares (so do the Python and C++ tests). Usage: swan_write_c FILE */
 #include <stdio.h>
 #include <stdlib.h>
 
