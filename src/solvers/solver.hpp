@@ -48,6 +48,10 @@ struct SolverInfo {
 // nullptr if this library has no solver with that id.
 const SolverInfo *find_solver(int id);
 
+// One lexicographic point SOR sweep over the unknowns of a level (psor.cpp);
+// the point solver and the coarse-to-fine solver share it.
+void sor_sweep(System system, const Level &L, double omega);
+
 // Seed 003's optimal SOR factor for Laplace on an N1 x N2 grid.
 double optimal_sor_omega(int n1, int n2);
 
