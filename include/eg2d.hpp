@@ -66,6 +66,32 @@ inline parameter_info parameter_bounds(int param) {
     return p;
 }
 
+/* A Plot3D grid read by read_plot3d: x, y of ni*nj nodes (Fortran order). */
+struct plot3d_grid {
+    int ni = 0, nj = 0, format = 0, nblocks = 0;
+    std::vector<double> x, y;
+};
+/* Grid `block` of a Plot3D file of any variant eg2d_read_plot3d detects. */
+inline plot3d_grid read_plot3d(const std::string &path, int block = 0) {
+    plot3d_grid g;
+    detail::check(::eg2d_read_plot3d(path.c_str(), block, &g.format, &g.nblocks, &g.ni, &g.nj, nullptr, nullptr),
+                  nullptr);
+    g.x.resize(static_cast<std::size_t>(g.ni) * static_cast<std::size_t>(g.nj));
+    g.y.resize(g.x.size());
+    detail::check(::eg2d_read_plot3d(path.c_str(), block, nullptr, nullptr, nullptr, nullptr, g.x.data(), g.y.data()),
+                  nullptr);
+    return g;
+}
+/* The points of a point file ("x y" per line) into x, y. */
+inline void read_points(const std::string &path, std::vector<double> &x, std::vector<double> &y) {
+    int n = 0;
+    detail::check(::eg2d_read_points(path.c_str(), 0, &n, nullptr, nullptr), nullptr);
+    std::vector<double> xs(static_cast<std::size_t>(n)), ys(xs.size());
+    detail::check(::eg2d_read_points(path.c_str(), n, nullptr, xs.data(), ys.data()), nullptr);
+    x.swap(xs);
+    y.swap(ys);
+}
+
 /* One grid handle: move-only, freed by the destructor. */
 class grid {
 public:
@@ -138,6 +164,11 @@ public:
         return v;
     }
 
+    void set_af_cycle(double dtau_min, double dtau_max, int steps) {
+        check(::eg2d_set_af_cycle(g_, dtau_min, dtau_max, steps));
+    }
+    void set_af_time_rule(double a, double b) { check(::eg2d_set_af_time_rule(g_, a, b)); }
+
     /* An exception thrown by fn stops the run and is rethrown by iterate/solve.
      * An empty fn removes the monitor. */
     void set_monitor(monitor fn) {
@@ -186,6 +217,19 @@ public:
         double v = 0;
         check(::eg2d_get_quality(g_, metric, &v));
         return v;
+    }
+
+    /* Per-cell values, (ni-1)*(nj-1), cell (i, j) at i + (ni-1)*j. */
+    std::vector<double> get_cell_quality(int metric) const {
+        const auto [ni, nj] = get_size();
+        std::vector<double> v(static_cast<std::size_t>(ni - 1) * static_cast<std::size_t>(nj - 1));
+        check(::eg2d_get_cell_quality(g_, metric, v.data()));
+        return v;
+    }
+
+    void write(const std::string &path, int format) const { check(::eg2d_write(g_, path.c_str(), format)); }
+    void set_side_from_file(int side, const std::string &path) {
+        check(::eg2d_set_side_from_file(g_, side, path.c_str()));
     }
 
 private:

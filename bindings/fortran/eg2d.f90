@@ -20,7 +20,7 @@
 ! the C manual is x(i+1, j+1) here.
 module eg2d
   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_ptr, c_funptr, c_char, c_size_t, &
-       c_null_ptr, c_null_funptr, c_associated, c_f_pointer, c_funloc
+       c_null_ptr, c_null_funptr, c_null_char, c_associated, c_f_pointer, c_funloc
   implicit none
   private
 
@@ -53,6 +53,8 @@ module eg2d
     procedure :: set_max_iterations => grid_set_max_iterations
     procedure :: set_parameter => grid_set_parameter
     procedure :: get_parameter => grid_get_parameter
+    procedure :: set_af_cycle => grid_set_af_cycle
+    procedure :: set_af_time_rule => grid_set_af_time_rule
     procedure :: set_monitor => grid_set_monitor
     procedure :: iterate => grid_iterate
     procedure :: solve => grid_solve
@@ -61,11 +63,15 @@ module eg2d
     procedure :: get_residual => grid_get_residual
     procedure :: get_iterations => grid_get_iterations
     procedure :: get_quality => grid_get_quality
+    procedure :: get_cell_quality => grid_get_cell_quality
+    procedure :: write => grid_write
+    procedure :: set_side_from_file => grid_set_side_from_file
     final :: grid_final
   end type eg2d_grid_t
 
   public :: eg2d_c_string, eg2d_status_message, eg2d_solver_short_name, eg2d_version_string
   public :: eg2d_get_parameter_bounds, eg2d_live_grids
+  public :: eg2d_read_plot3d_grid, eg2d_read_point_file
 
   ! Grids created through eg2d_grid_t and not yet freed (to check finalisation).
   integer, save :: live_grids = 0
@@ -373,6 +379,22 @@ contains
     call finish(self, eg2d_get_parameter(self%handle, int(param, c_int), value), status)
   end subroutine grid_get_parameter
 
+  ! AF (seed 004): the pseudo-time-step cycle and the Warming-Beam time rule.
+  subroutine grid_set_af_cycle(self, dtau_min, dtau_max, steps, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    real(c_double), intent(in) :: dtau_min, dtau_max
+    integer, intent(in) :: steps
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_set_af_cycle(self%handle, dtau_min, dtau_max, int(steps, c_int)), status)
+  end subroutine grid_set_af_cycle
+
+  subroutine grid_set_af_time_rule(self, a, b, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    real(c_double), intent(in) :: a, b
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_set_af_time_rule(self%handle, a, b), status)
+  end subroutine grid_set_af_time_rule
+
   ! ---------------------------------------------------------------- running
   ! fn: a bind(C) function with the interface eg2d_monitor_fn; absent removes
   ! the monitor. user is handed to fn unchanged (c_loc of your data).
@@ -454,5 +476,88 @@ contains
     value = 0
     call finish(self, eg2d_get_quality(self%handle, int(metric, c_int), value), status)
   end subroutine grid_get_quality
+
+  ! The per-cell values of a quality metric into values(ni-1, nj-1).
+  subroutine grid_get_cell_quality(self, metric, values, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: metric
+    real(c_double), intent(inout) :: values(:, :)
+    integer, intent(out), optional :: status
+    integer(c_int) :: ni, nj
+    character(160) :: buf
+    if (.not. size_of(self, ni, nj, status)) return
+    if (any(shape(values) /= [ni - 1, nj - 1])) then
+      write (buf, '("values is (",i0,",",i0,"): must be (ni-1,nj-1) = (",i0,",",i0,")")') &
+           shape(values), ni - 1, nj - 1
+      call fail(self, EG2D_ERR_ARGUMENT, 'get_cell_quality', trim(buf), status)
+      return
+    end if
+    call finish(self, eg2d_get_cell_quality(self%handle, int(metric, c_int), values), status)
+  end subroutine grid_get_cell_quality
+
+  ! ---------------------------------------------------------------- files
+  ! Writes the grid to path in an EG2D_FORMAT_* (ior() with EG2D_PLOT3D_* flags).
+  subroutine grid_write(self, path, format, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    character(*), intent(in) :: path
+    integer, intent(in) :: format
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_write(self%handle, c_path(path), int(format, c_int)), status)
+  end subroutine grid_write
+
+  ! Sets a side from a point file ("x y" per line) of exactly ni or nj points.
+  subroutine grid_set_side_from_file(self, side, path, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: side
+    character(*), intent(in) :: path
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_set_side_from_file(self%handle, int(side, c_int), c_path(path)), status)
+  end subroutine grid_set_side_from_file
+
+  ! Reads grid `block` (default 0) of a Plot3D file into x, y allocated as
+  ! (ni, nj); format (EG2D_FORMAT_* with its EG2D_PLOT3D_* flags) and the
+  ! number of grids in the file on request.
+  subroutine eg2d_read_plot3d_grid(path, x, y, block, format, nblocks, status)
+    character(*), intent(in) :: path
+    real(c_double), allocatable, intent(out) :: x(:, :), y(:, :)
+    integer, intent(in), optional :: block
+    integer, intent(out), optional :: format, nblocks, status
+    integer(c_int) :: rc, b, f, nb, ni, nj
+    b = 0
+    if (present(block)) b = int(block, c_int)
+    rc = eg2d_read_plot3d(c_path(path), b, f, nb, ni, nj)
+    if (rc == EG2D_OK) then
+      allocate (x(ni, nj), y(ni, nj))
+      rc = eg2d_read_plot3d(c_path(path), b, x=x, y=y)
+    end if
+    if (present(format) .and. rc == EG2D_OK) format = int(f)
+    if (present(nblocks) .and. rc == EG2D_OK) nblocks = int(nb)
+    call settle(rc, eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
+  end subroutine eg2d_read_plot3d_grid
+
+  ! Reads a point file into x, y allocated to its number of points.
+  subroutine eg2d_read_point_file(path, x, y, status)
+    character(*), intent(in) :: path
+    real(c_double), allocatable, intent(out) :: x(:), y(:)
+    integer, intent(out), optional :: status
+    integer(c_int) :: rc, n
+    rc = eg2d_read_points(c_path(path), 0_c_int, n)
+    if (rc == EG2D_OK) then
+      allocate (x(n), y(n))
+      rc = eg2d_read_points(c_path(path), n, x=x, y=y)
+    end if
+    call settle(rc, eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
+  end subroutine eg2d_read_point_file
+
+  ! A Fortran path as the C string the library reads.
+  function c_path(path) result(p)
+    character(*), intent(in) :: path
+    character(kind=c_char, len=1) :: p(len_trim(path) + 1)
+    integer :: i
+    do i = 1, len_trim(path)
+      p(i) = path(i:i)
+    end do
+    p(len_trim(path) + 1) = c_null_char
+  end function c_path
 
 end module eg2d

@@ -8,8 +8,8 @@ For every `EG2D_API ... eg2d_NAME(...)` in the header:
     (bindings/python/eg2d/_capi.py), called as lib.eg2d_NAME( somewhere else
     in the package;
   - C++: a call ::eg2d_NAME( in include/eg2d.hpp.
-For every integer `#define EG2D_X value`: EG2D_X = value in the Fortran module
-and X = value in bindings/python/eg2d/constants.py.
+For every integer `#define EG2D_X value` (decimal or hex): EG2D_X = value
+(decimal) in the Fortran module and X = value in bindings/python/eg2d/constants.py.
 And nothing is bound that the header lacks.
 
 Usage: check_bindings.py SOURCE_DIR [--extra-declaration TEXT]
@@ -51,8 +51,9 @@ def header_api(text):
     text = strip_c_comments(text)
     funcs = {m.group(1): count_c_args(m.group(2))
              for m in re.finditer(r"EG2D_API\s[^;{}]*?\b(eg2d_\w+)\s*\(([^)]*)\)\s*;", text)}
-    consts = {m.group(1): int(m.group(2))
-              for m in re.finditer(r"^\s*#\s*define\s+EG2D_(\w+)\s+\(?(-?\d+)\)?\s*$", text, flags=re.M)}
+    consts = {m.group(1): int(m.group(2), 0)
+              for m in re.finditer(r"^\s*#\s*define\s+EG2D_(\w+)\s+\(?(-?(?:0[xX][0-9a-fA-F]+|\d+))\)?\s*$",
+                                   text, flags=re.M)}
     return funcs, consts
 
 
@@ -86,8 +87,9 @@ def python_api(src):
     for path in glob.glob(os.path.join(pkg, "*.py")):
         if os.path.basename(path) != "_capi.py":
             called |= set(re.findall(r"\blib\.(eg2d_\w+)\s*\(", open(path).read()))
-    consts = {m.group(1): int(m.group(2)) for m in
-              re.finditer(r"^(\w+)\s*=\s*(-?\d+)\s*$", open(os.path.join(pkg, "constants.py")).read(), flags=re.M)}
+    consts = {m.group(1): int(m.group(2), 0) for m in
+              re.finditer(r"^(\w+)\s*=\s*(-?(?:0[xX][0-9a-fA-F]+|\d+))\s*$",
+                          open(os.path.join(pkg, "constants.py")).read(), flags=re.M)}
     return protos, called, consts
 
 

@@ -126,6 +126,40 @@ int main(int argc, char **argv) {
     CHECK(g.get_quality(EG2D_QUALITY_FOLDED_CELLS) == 0 && g.get_quality(EG2D_QUALITY_MIN_AREA) > 0);
     CHECK(throws([&] { g.get_quality(99); }, EG2D_ERR_ARGUMENT, "eg2d_get_quality"));
 
+    // AF settings, per-cell quality, files
+    CHECK(throws([&] { g.set_af_cycle(2, 1, 0); }, EG2D_ERR_ARGUMENT, "eg2d_set_af_cycle"));
+    g.set_af_cycle(0.5, 0, 0);
+    CHECK(throws([&] { g.set_af_time_rule(0, 0); }, EG2D_ERR_ARGUMENT, "eg2d_set_af_time_rule"));
+    g.set_af_time_rule(0, 0.5);
+    CHECK(g.get_parameter(EG2D_PARAM_AF_B) == 0.5);
+    const std::vector<double> areas = g.get_cell_quality(EG2D_QUALITY_MIN_AREA);
+    double total = 0;
+    for (double a : areas) total += a;
+    CHECK(areas.size() == 16u * 12u && std::fabs(total - 1) < 1e-2);  // the swan's area is 1
+    CHECK(throws([&] { g.get_cell_quality(EG2D_QUALITY_ORTHO_MAX_JMIN); }, EG2D_ERR_ARGUMENT, "per-cell"));
+    g.get_coordinates(x, y);
+    g.write("cxx_header.x", EG2D_FORMAT_PLOT3D_ASCII);
+    const eg2d::plot3d_grid back = eg2d::read_plot3d("cxx_header.x");
+    CHECK(back.ni == 17 && back.nj == 13 && back.nblocks == 1 && back.format == EG2D_FORMAT_PLOT3D_ASCII);
+    double worst = 0;
+    for (std::size_t k = 0; k < x.size(); ++k) worst = std::fmax(worst, std::fabs(back.x[k] - x[k]) + std::fabs(back.y[k] - y[k]));
+    CHECK(worst == 0);  // 17 significant digits round-trip exactly
+    CHECK(throws([&] { g.write("no-such-dir/g.x", EG2D_FORMAT_PLOT3D); }, EG2D_ERR_IO, "no-such-dir/g.x"));
+    CHECK(throws([] { eg2d::read_plot3d("no-such-file.x"); }, EG2D_ERR_IO, "no-such-file.x"));
+    {
+        std::ofstream pts("cxx_header_jmin.txt");
+        pts.precision(17);
+        for (int i = 0; i < 17; ++i) pts << i / 16.0 << " 0\n";
+    }
+    std::vector<double> px, py;
+    eg2d::read_points("cxx_header_jmin.txt", px, py);
+    CHECK(px.size() == 17u && px[16] == 1.0 && py[3] == 0.0);
+    CHECK(throws([&] { eg2d::read_points("no-such-file.txt", px, py); }, EG2D_ERR_IO, "no-such-file.txt"));
+    g.set_side_from_file(EG2D_SIDE_JMIN, "cxx_header_jmin.txt");
+    CHECK(throws([&] { g.set_side_from_file(EG2D_SIDE_IMIN, "cxx_header_jmin.txt"); }, EG2D_ERR_BOUNDARY,
+                 "holds 17 points"));
+    g.solve();
+
     // RAII: moves transfer the handle; a moved-from grid reports a NULL handle
     eg2d::grid h = std::move(g);
     CHECK(h.get() != nullptr && g.get() == nullptr);

@@ -29,7 +29,9 @@ program test_wrappers
   type(eg2d_grid_t) :: g, none
   type(eg2d_grid_t), allocatable :: h
   real(eg2d_dp) :: x(ni, nj), y(ni, nj), xs(ni, nj - 1), lo, hi, def, r, v
-  integer :: st, m, n, k, it
+  real(eg2d_dp) :: cells(ni - 1, nj - 1)
+  real(eg2d_dp), allocatable :: xr(:, :), yr(:, :), px(:), py(:)
+  integer :: st, m, n, k, it, u, fmt, nb
   integer(c_int), target :: calls
 
   ! ---- free functions
@@ -172,6 +174,59 @@ program test_wrappers
   call g%solve(st)
   call check_status(st, EG2D_ERR_NOT_CONVERGED, 'solve with one iteration')
   call check_contains(g%last_error(), 'eg2d_solve', 'its message')
+
+  ! ---- AF settings
+  call g%set_af_cycle(2d0, 1d0, 0, st)
+  call check_status(st, EG2D_ERR_ARGUMENT, 'set_af_cycle with dtau_min > dtau_max')
+  call g%set_af_cycle(0.5d0, 0d0, 0, st)
+  call check_status(st, EG2D_OK, 'set_af_cycle automatic')
+  call g%set_af_time_rule(0d0, 0d0, st)
+  call check_status(st, EG2D_ERR_ARGUMENT, 'set_af_time_rule explicit (b = 0)')
+  call g%set_af_time_rule(0.5d0, 1d0, st)
+  call g%get_parameter(EG2D_PARAM_AF_A, v, st)
+  call check(st == EG2D_OK .and. v == 0.5d0, 'set_af_time_rule three-point backward')
+
+  ! ---- per-cell quality
+  call g%get_cell_quality(EG2D_QUALITY_MIN_AREA, cells, st)
+  call check(st == EG2D_OK .and. minval(cells) > 0, 'per-cell areas')
+  call check(abs(sum(cells) - 1) < 1d-2, 'the cell areas add up to the swan area 1 (to the polygon error)')
+  call g%get_cell_quality(EG2D_QUALITY_MIN_AREA, xs, st)
+  call check_status(st, EG2D_ERR_ARGUMENT, 'get_cell_quality into (17,12)')
+  call check_contains(g%last_error(), 'must be (ni-1,nj-1) = (16,12)', 'its message')
+  call g%get_cell_quality(EG2D_QUALITY_ORTHO_MAX_JMIN, cells, st)
+  call check_status(st, EG2D_ERR_ARGUMENT, 'get_cell_quality of a boundary summary')
+
+  ! ---- files: write, read back, point files
+  call g%get_coordinates(x, y)
+  call g%write('fortran_wrappers.x', EG2D_FORMAT_PLOT3D, st)
+  call check_status(st, EG2D_OK, 'write Plot3D')
+  call g%write('no-such-dir/grid.x', EG2D_FORMAT_PLOT3D, st)
+  call check_status(st, EG2D_ERR_IO, 'write into a missing directory')
+  call check_contains(g%last_error(), 'no-such-dir/grid.x', 'its message names the path')
+  call eg2d_read_plot3d_grid('fortran_wrappers.x', xr, yr, format=fmt, nblocks=nb, status=st)
+  call check(st == EG2D_OK .and. fmt == EG2D_FORMAT_PLOT3D .and. nb == 1, 'read the Plot3D file back')
+  call check(all(shape(xr) == [ni, nj]) .and. all(xr == x) .and. all(yr == y), &
+       'the read grid equals the written one')
+  call eg2d_read_plot3d_grid('fortran_wrappers.x', xr, yr, block=1, status=st)
+  call check_status(st, EG2D_ERR_ARGUMENT, 'read block 1 of a one-grid file')
+  call eg2d_read_plot3d_grid('no-such-file.x', xr, yr, status=st)
+  call check_status(st, EG2D_ERR_IO, 'read a missing Plot3D file')
+  call check_contains(eg2d_c_string(eg2d_last_error(none%c_handle())), 'no-such-file.x', 'its message')
+  open (newunit=u, file='fortran_wrappers_jmin.txt', status='replace', action='write')
+  write (u, '(a)') '# the bottom of the swan, 17 points'
+  do k = 0, ni - 1
+    write (u, '(es24.16,1x,es24.16)') real(k, eg2d_dp) / (ni - 1), 0d0
+  end do
+  close (u)
+  call eg2d_read_point_file('fortran_wrappers_jmin.txt', px, py, st)
+  call check(st == EG2D_OK .and. size(px) == ni .and. px(ni) == 1 .and. all(py == 0), 'read a point file')
+  call eg2d_read_point_file('no-such-file.txt', px, py, st)
+  call check_status(st, EG2D_ERR_IO, 'read a missing point file')
+  call g%set_side_from_file(EG2D_SIDE_JMIN, 'fortran_wrappers_jmin.txt', st)
+  call check_status(st, EG2D_OK, 'set_side_from_file JMIN')
+  call g%set_side_from_file(EG2D_SIDE_IMIN, 'fortran_wrappers_jmin.txt', st)
+  call check_status(st, EG2D_ERR_BOUNDARY, 'set_side_from_file with 17 points for a 13-point side')
+  call check_contains(g%last_error(), 'holds 17 points', 'its message')
 
   ! ---- the bind(C) layer is usable on the same handle
   call check(eg2d_get_size(g%c_handle(), m, n) == EG2D_OK .and. m == ni, 'C layer on the handle')

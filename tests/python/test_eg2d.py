@@ -240,3 +240,62 @@ def test_annulus_matches_the_exact_winslow_solution_at_second_order():
     e1, e2 = annulus_error(9), annulus_error(17)
     assert e2 < 1e-2
     assert np.log2(e1 / e2) > 1.9
+
+
+# ---- AF settings, per-cell quality and files
+def test_af_settings():
+    with eg2d.Grid(9, 9) as g:
+        with pytest.raises(eg2d.ArgumentError):
+            g.set_af_cycle(2.0, 1.0)
+        g.set_af_cycle(0.25, 8.0, 6)
+        assert g.get_parameter(eg2d.PARAM_AF_DTAU_MAX) == 8.0 and g.get_parameter(eg2d.PARAM_AF_STEPS) == 6
+        with pytest.raises(eg2d.ArgumentError):
+            g.set_af_time_rule(0.0, 0.0)
+        g.set_af_time_rule(0.0, 0.5)
+        assert g.get_parameter(eg2d.PARAM_AF_B) == 0.5
+
+
+def test_cell_quality():
+    with swan(17, 13) as g:
+        with pytest.raises(eg2d.StateError):
+            g.get_cell_quality(eg2d.QUALITY_MIN_AREA)
+        g.solve()
+        a = g.get_cell_quality(eg2d.QUALITY_MIN_AREA)
+        assert a.shape == (16, 12) and a.flags["F_CONTIGUOUS"]
+        assert a.min() == pytest.approx(g.get_quality(eg2d.QUALITY_MIN_AREA), rel=1e-15)
+        assert abs(a.sum() - 1.0) < 1e-2  # the swan's area is 1
+        with pytest.raises(eg2d.ArgumentError, match="no per-cell values|boundary summary"):
+            g.get_cell_quality(eg2d.QUALITY_ORTHO_MAX_JMIN)
+
+
+def test_write_and_read_back(tmp_path):
+    with swan(17, 13) as g:
+        g.solve()
+        x, y = g.get_coordinates()
+        path = tmp_path / "swan.x"
+        g.write(path, eg2d.FORMAT_PLOT3D | eg2d.PLOT3D_MULTI)
+        xr, yr, fmt, nblocks = eg2d.read_plot3d(path)
+        assert fmt == eg2d.FORMAT_PLOT3D | eg2d.PLOT3D_MULTI and nblocks == 1
+        np.testing.assert_array_equal(xr, x)
+        np.testing.assert_array_equal(yr, y)
+        with pytest.raises(eg2d.FileError, match="no-such-dir"):
+            g.write(tmp_path / "no-such-dir" / "g.x", eg2d.FORMAT_PLOT3D)
+    with pytest.raises(eg2d.FileError, match="missing.x"):
+        eg2d.read_plot3d(tmp_path / "missing.x")
+
+
+def test_point_files(tmp_path):
+    pts = tmp_path / "bottom.txt"
+    s = np.arange(17) / 16
+    pts.write_text("# bottom of the swan\n" + "".join(f"{v!r} 0\n" for v in s))
+    x, y = eg2d.read_points(pts)
+    np.testing.assert_array_equal(x, s)
+    np.testing.assert_array_equal(y, 0 * s)
+    bad = tmp_path / "bad.txt"
+    bad.write_text("0 0\n1 oops\n")
+    with pytest.raises(eg2d.FileError, match=r"bad.txt:2: \"1 oops\""):
+        eg2d.read_points(bad)
+    with swan(17, 13) as g:
+        g.set_side_from_file(eg2d.SIDE_JMIN, pts)
+        with pytest.raises(eg2d.BoundaryError, match="holds 17 points"):
+            g.set_side_from_file(eg2d.SIDE_IMIN, pts)

@@ -2,7 +2,7 @@
 
 A ctypes + numpy package over libeg2d (include/eg2d.h is the manual): the
 class Grid, the grid-less calls (status_string, last_error, version,
-solver_name, parameter_bounds), the constants under their C names without the
+solver_name, parameter_bounds, read_plot3d, read_points), the constants under their C names without the
 EG2D_ prefix, and exceptions carrying the status and the library's message.
 The library is found via $EG2D_LIBRARY, the install location, or the system
 loader (see _library.py).
@@ -11,7 +11,8 @@ from .constants import *  # noqa: F401,F403
 from .errors import (ArgumentError, BoundaryError, DivergedError, Error, FileError, FoldedError,  # noqa: F401
                      NotConvergedError, OutOfMemoryError, StateError, StoppedByMonitor,
                      UnsupportedError, error_for)
-from .functions import last_error, parameter_bounds, solver_name, status_string, version  # noqa: F401
+from .functions import (last_error, parameter_bounds, read_plot3d, read_points, solver_name,  # noqa: F401
+                        status_string, version)
 from .grid import Grid  # noqa: F401
 
 __version__ = "%d.%d.%d" % (VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH)  # noqa: F405

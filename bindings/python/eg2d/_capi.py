@@ -39,6 +39,8 @@ PROTOTYPES = {
     "eg2d_set_parameter": (c_int, [grid_p, c_int, c_double]),
     "eg2d_get_parameter": (c_int, [grid_p, c_int, double_p]),
     "eg2d_parameter_bounds": (c_int, [c_int, double_p, double_p, double_p]),
+    "eg2d_set_af_cycle": (c_int, [grid_p, c_double, c_double, c_int]),
+    "eg2d_set_af_time_rule": (c_int, [grid_p, c_double, c_double]),
     # running
     "eg2d_set_monitor": (c_int, [grid_p, monitor_fn, c_void_p]),
     "eg2d_iterate": (c_int, [grid_p, c_int, double_p]),
@@ -49,6 +51,12 @@ PROTOTYPES = {
     "eg2d_get_residual": (c_int, [grid_p, double_p]),
     "eg2d_get_iterations": (c_int, [grid_p, int_p]),
     "eg2d_get_quality": (c_int, [grid_p, c_int, double_p]),
+    "eg2d_get_cell_quality": (c_int, [grid_p, c_int, double_p]),
+    # files (paths as bytes: os.fsencode)
+    "eg2d_write": (c_int, [grid_p, c_char_p, c_int]),
+    "eg2d_read_plot3d": (c_int, [c_char_p, c_int, int_p, int_p, int_p, int_p, double_p, double_p]),
+    "eg2d_read_points": (c_int, [c_char_p, c_int, int_p, double_p, double_p]),
+    "eg2d_set_side_from_file": (c_int, [grid_p, c_int, c_char_p]),
 }
 
 

@@ -1,5 +1,8 @@
 """The calls of the C API that need no grid."""
-from ctypes import byref, c_double, c_int
+import os
+from ctypes import POINTER, byref, c_double, c_int
+
+import numpy as np
 
 from ._capi import lib
 from .errors import error_for
@@ -38,3 +41,35 @@ def parameter_bounds(param):
     if status:
         raise error_for(status, last_error())
     return lower.value, upper.value, default.value
+
+
+def _check(status):
+    if status:
+        raise error_for(status, last_error())
+
+
+def _dp(a):
+    return a.ctypes.data_as(POINTER(c_double))
+
+
+def read_plot3d(path, block=0):
+    """Grid `block` of a Plot3D file (any variant eg2d_read_plot3d detects):
+    (x, y, format, nblocks) with x, y numpy (ni, nj) in Fortran order and
+    format the EG2D_FORMAT_PLOT3D* id with its PLOT3D_* flags."""
+    p = os.fsencode(path)
+    fmt, nblocks, ni, nj = c_int(), c_int(), c_int(), c_int()
+    _check(lib.eg2d_read_plot3d(p, int(block), byref(fmt), byref(nblocks), byref(ni), byref(nj), None, None))
+    x = np.empty((ni.value, nj.value), order="F")
+    y = np.empty_like(x, order="F")
+    _check(lib.eg2d_read_plot3d(p, int(block), None, None, None, None, _dp(x), _dp(y)))
+    return x, y, fmt.value, nblocks.value
+
+
+def read_points(path):
+    """The points of a point file ("x y" per line, '#' comments): (x, y) numpy arrays."""
+    p = os.fsencode(path)
+    n = c_int()
+    _check(lib.eg2d_read_points(p, 0, byref(n), None, None))
+    x, y = np.empty(n.value), np.empty(n.value)
+    _check(lib.eg2d_read_points(p, n.value, None, _dp(x), _dp(y)))
+    return x, y

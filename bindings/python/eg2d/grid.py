@@ -10,6 +10,7 @@ Every failed call raises eg2d.Error (a subclass per status) with the
 library's message; the grid is left as it was (runs keep their iterations,
 see eg2d.h). Node (i, j) of the C manual is x[i, j].
 """
+import os
 from ctypes import POINTER, byref, c_double, c_int, c_void_p
 
 import numpy as np
@@ -148,6 +149,14 @@ class Grid:
         self._check(lib.eg2d_get_parameter(self._handle(), int(param), byref(v)))
         return v.value
 
+    def set_af_cycle(self, dtau_min, dtau_max=0.0, steps=0):
+        """The AF pseudo-time-step cycle (0 = automatic for dtau_max and steps)."""
+        self._check(lib.eg2d_set_af_cycle(self._handle(), float(dtau_min), float(dtau_max), int(steps)))
+
+    def set_af_time_rule(self, a, b):
+        """The Warming-Beam time rule of AF (seed 004 Table 1)."""
+        self._check(lib.eg2d_set_af_time_rule(self._handle(), float(a), float(b)))
+
     # ---- running
     def set_monitor(self, fn):
         """fn(iteration, residual) after every iteration; a true result stops
@@ -216,6 +225,22 @@ class Grid:
         v = c_double()
         self._check(lib.eg2d_get_quality(self._handle(), int(metric), byref(v)))
         return v.value
+
+    def get_cell_quality(self, metric):
+        """Per-cell values of a metric: numpy (ni-1, nj-1), Fortran order."""
+        ni, nj = self.get_size()
+        v = np.empty((ni - 1, nj - 1), dtype=np.float64, order="F")
+        self._check(lib.eg2d_get_cell_quality(self._handle(), int(metric), _ptr(v)))
+        return v
+
+    # ---- files
+    def write(self, path, format):
+        """Writes the grid to path as FORMAT_* (| PLOT3D_* flags)."""
+        self._check(lib.eg2d_write(self._handle(), os.fsencode(path), int(format)))
+
+    def set_side_from_file(self, side, path):
+        """A side from a point file of exactly ni or nj points."""
+        self._check(lib.eg2d_set_side_from_file(self._handle(), int(side), os.fsencode(path)))
 
 
 __all__ = ["Grid", "Error"]
