@@ -1,7 +1,7 @@
 /* eg2d_bench: iterations, time and residual of every solver of the library
  * on the benchmark cases of issue 3, as a markdown table and as JSON.
  *
- *   eg2d_bench [--cases swan,valley,annulus] [--sizes 65,129,257,513,1025]
+ *   eg2d_bench [--cases swan,valley,annulus,naca0012] [--sizes 65,129,257,513,1025]
  *              [--solvers psor,af,...] [--system winslow|laplace]
  *              [--tolerance 1e-10] [--cap SECONDS] [--repeats N] [--json FILE]
  *   eg2d_bench --seed004     seed 004 Table 2: an 87x31 O-grid, E < 5e-5 and 1e-10
@@ -46,11 +46,14 @@ static int half(int n) { return n / 2 + 1; }
 static int set_swan(eg2d_grid *g) { return domain_set(g, "swan"); }
 static int set_valley(eg2d_grid *g) { return domain_set(g, "valley"); }
 static int set_annulus(eg2d_grid *g) { return domain_set_annulus(g, 1.0, 3.0); }
+static int quarter(int n) { return n / 4 + 1; }
+static int set_naca0012(eg2d_grid *g) { return domain_set_airfoil_o(g, "0012", 10.0); }
 
 static const bench_case cases[] = {
     {"swan", square, set_swan},       /* seed 003 A4 */
     {"valley", square, set_valley},   /* seed 003 A1 */
     {"annulus", half, set_annulus},   /* O-grid, 1 <= r <= 3, n x (n/2+1) */
+    {"naca0012", quarter, set_naca0012}, /* O-grid, sharp-TE NACA0012 in r = 10, n x (n/4+1) */
     /* ATTRACTION-SOURCE CASE: when eg2d_add_line_source (controls issue) is on
      * main, add {"annulus-source", half, set_annulus_source} here: the annulus
      * with seed 004 eq 14's line attraction toward the inner wall

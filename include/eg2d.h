@@ -117,7 +117,16 @@ EG2D_API void eg2d_destroy(eg2d_grid *grid);
 /* Topologies. SINGLE: four sides, all fixed. O: periodic in i; JMIN is the
  * inner and JMAX the outer closed curve (first point == last point), columns
  * i = 0 and i = ni-1 are the same physical points (the branch cut) and are
- * solved for with the interior. C: reserved for the C-grid with a wake cut.
+ * solved for with the interior. C: a C-grid around a body with a wake cut
+ * (ni >= 7): JMIN runs from the outflow end of the lower wake to the trailing
+ * edge, around the body, and back along the upper wake to the outflow; JMAX
+ * is the far field, IMIN and IMAX the two outflow lines. The wake length is
+ * read from JMIN: the leading run of points i = 0..w with point i equal to
+ * point ni-1-i (to 1e-8 of JMIN's size) is the cut, w the trailing edge. The
+ * cut's inner nodes 0 < i < w are solved for with the interior (their
+ * neighbours across the cut are the upper half's row j = 1), so the two wake
+ * halves stay the same points and the grid stays smooth across the cut; the
+ * outflow point i = 0 and the trailing edge i = w stay fixed.
  * Changing the topology forgets the boundary and the grid. */
 #define EG2D_TOPO_SINGLE 0
 #define EG2D_TOPO_O      1
@@ -136,7 +145,8 @@ EG2D_API int eg2d_get_topology(const eg2d_grid *grid, int *topology);
 /* Sets one side from its points in increasing index. Corners shared with a
  * side already set must agree to 1e-8 of the boundary's size, or the call
  * fails with EG2D_ERR_BOUNDARY and sets nothing. On an O-grid only JMIN and
- * JMAX exist and each must be a closed curve. A side set after the grid was
+ * JMAX exist and each must be a closed curve. On a C-grid JMIN must hold the
+ * wake cut (see EG2D_TOPO_C). A side set after the grid was
  * initialised moves only the boundary: the interior is kept as a warm start. */
 EG2D_API int eg2d_set_side(eg2d_grid *grid, int side, const double *x, const double *y);
 
@@ -147,7 +157,13 @@ EG2D_API int eg2d_set_boundary(eg2d_grid *grid, const double *x, const double *y
 /*=====================================================================
  * Initial grid
  *===================================================================*/
-#define EG2D_INIT_TFI 0  /* linear transfinite interpolation, seed 001 eq 2.2 */
+#define EG2D_INIT_TFI     0  /* linear transfinite interpolation, seed 001 eq 2.2 */
+#define EG2D_INIT_HERMITE 1  /* TFI with Hermite blending in eta and the orthogonal
+                                projector (seed 001 eqs 2.4-2.6): grid lines leave JMIN
+                                and JMAX normal to them, with d r/d eta of length
+                                alpha * |r(i,nj-1) - r(i,0)| / (nj-1), alpha =
+                                EG2D_PARAM_HERMITE_SPACING; linear TFI in xi (none on an
+                                O-grid). Can fold on strongly curved sides. */
 
 /* Fills the interior from the boundary. Needs the whole boundary. */
 EG2D_API int eg2d_initialize(eg2d_grid *grid, int method);
@@ -199,7 +215,8 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
 /* Generic parameters, zstd-style: every setting has an id, bounds and a
  * default; the typed setters above are shorthands for these. Values are
  * doubles; an integer parameter takes only whole values. Ids are fixed and
- * grouped with gaps: 0-99 run, 100-199 solvers, 200-299 controls, 300-399 output. */
+ * grouped with gaps: 0-99 run, 100-199 solvers, 200-299 controls, 300-399 output,
+ * 400-499 geometry and initial grid. */
 #define EG2D_PARAM_RELAXATION         0  /* (0, 2), 0 = automatic           */
 #define EG2D_PARAM_TOLERANCE          1  /* (0, 1),  default 1e-8           */
 #define EG2D_PARAM_MAX_ITERATIONS     2  /* [1, 1e9], default 100000        */
@@ -210,6 +227,8 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
 #define EG2D_PARAM_SVG_QUALITY      300  /* output 300-399. EG2D_FORMAT_SVG colours cells by this
                                             EG2D_QUALITY_* metric (one with per-cell values);
                                             -1 (default): no colouring */
+#define EG2D_PARAM_HERMITE_SPACING  400  /* geometry and initial grid 400-499. (0, 10], default 1:
+                                            alpha of EG2D_INIT_HERMITE */
 EG2D_API int eg2d_set_parameter(eg2d_grid *grid, int param, double value);
 EG2D_API int eg2d_get_parameter(const eg2d_grid *grid, int param, double *value);
 /* Bounds and default of a parameter, without a grid. */
@@ -269,6 +288,116 @@ EG2D_API int eg2d_iterate(eg2d_grid *grid, int iterations, double *residual);
  * after max_iterations, EG2D_ERR_DIVERGED, EG2D_ERR_INTERRUPTED. A converged
  * grid is checked for folded cells (EG2D_ERR_FOLDED, see PARAM_FOLD_CHECK). */
 EG2D_API int eg2d_solve(eg2d_grid *grid);
+
+/*=====================================================================
+ * Curves and point distributions (seed 001 sections 2.4-2.5)
+ *===================================================================*/
+/* A curve is a second opaque handle: a plane curve r(t), t in [0, 1], with
+ * its arc length. Curve calls have no grid: their errors are reported by
+ * eg2d_last_error(NULL) (per thread). A curve is immutable once made and may
+ * be shared by threads and grids; eg2d_set_side_curve copies its points.
+ *
+ * Arc length (seed 001 eq 2.11) is tabulated by 5-point Gauss-Legendre
+ * panels refined until halving a panel changes the length by less than
+ * 1e-14 of it, and inverted by safeguarded Newton iteration: the normalized
+ * arc length of every point given out is exact to about 1e-12 (1e-11 for
+ * callback curves, whose speed |r'(t)| comes from fourth-order differences,
+ * which assume r is smooth on [0, 1]). */
+typedef struct eg2d_curve eg2d_curve;
+typedef void (*eg2d_curve_fn)(void *user, double t, double *x, double *y);
+
+/* Straight segments through n >= 2 points. */
+EG2D_API int eg2d_curve_polyline(int n, const double *x, const double *y, eg2d_curve **curve);
+/* The cubic spline through n >= 2 points, parameterised by chord length:
+ * periodic when the last point repeats the first (a smooth closed curve),
+ * natural (zero curvature) ends otherwise. */
+EG2D_API int eg2d_curve_spline(int n, const double *x, const double *y, eg2d_curve **curve);
+/* A user curve: fn(user, t, &x, &y) for t in [0, 1]; it must be smooth on
+ * [0, 1] and is called only there, from the calling thread, during curve
+ * calls (not after eg2d_curve_destroy). A non-finite point fails the call. */
+EG2D_API int eg2d_curve_function(eg2d_curve_fn fn, void *user, eg2d_curve **curve);
+/* NACA 4-digit section "MPTT" ("0012", "2412"), chord 1 from the leading edge
+ * (0, 0) to the trailing edge (1, 0), running from the trailing edge along the
+ * lower surface to the leading edge and back along the upper surface
+ * (clockwise). flags: EG2D_NACA_CLOSED_TE for the sharp trailing edge
+ * (thickness coefficient -0.1036: a closed curve, as an O- or C-grid needs);
+ * 0 for the standard open one (-0.1015, thickness 0.0021 at x = 1 for 0012). */
+#define EG2D_NACA_CLOSED_TE 1
+EG2D_API int eg2d_curve_naca4(const char *digits, int flags, eg2d_curve **curve);
+/* An airfoil from a Selig or Lednicer coordinate file (the format is
+ * recognised from the second line), as a spline through its points oriented
+ * like eg2d_curve_naca4. EG2D_ERR_IO if the file cannot be read,
+ * EG2D_ERR_ARGUMENT (with the line number) if its contents are malformed. */
+EG2D_API int eg2d_curve_read_airfoil(const char *path, eg2d_curve **curve);
+/* Frees a curve; NULL is a no-op. */
+EG2D_API void eg2d_curve_destroy(eg2d_curve *curve);
+
+/* Total arc length. */
+EG2D_API int eg2d_curve_length(const eg2d_curve *curve, double *length);
+/* The point at normalized arc length s in [0, 1] (seed 001's x(s)). */
+EG2D_API int eg2d_curve_evaluate(const eg2d_curve *curve, double s, double *x, double *y);
+
+/* Distributions of n points on [0, 1], s_k = s(u_k), u_k = k/(n-1); s_0 = 0,
+ * s_{n-1} = 1. Spacings below are s_1 - s_0 (first) and s_{n-1} - s_{n-2} (last).
+ *  UNIFORM      s = u.
+ *  EXPONENTIAL  p1 = beta != 0, |beta| <= 700: s = (e^(beta u) - 1)/(e^beta - 1)
+ *               (seed 001 after eq 2.12); first spacing (e^(beta/(n-1)) - 1)/(e^beta - 1);
+ *               beta > 0 clusters at s = 0, beta < 0 at s = 1.
+ *  TANH_ONE     p1 = delta in (0, 700]: s = 1 + tanh(delta (u-1)/2)/tanh(delta/2)
+ *               (seed 001 eq 2.13); clusters at s = 0; first spacing
+ *               1 + tanh(delta (1/(n-1) - 1)/2)/tanh(delta/2), last 1 - s(1 - 1/(n-1)).
+ *  TANH_TWO     p1 = b in (0, 350], p2 = c in [0, 1]: s = (tanh(b (u-c)) - A)/(B - A),
+ *               A = tanh(-b c), B = tanh(b (1-c)) (seed 001 end of 2.5). The slope is
+ *               largest at u = c, so points thin out there and gather toward the
+ *               ends: c = 1 is TANH_ONE with delta = 2b (clusters at s = 0, the seed's
+ *               attraction point 1 - c), c = 0 clusters at s = 1, c = 1/2 at both.
+ *  VINOKUR      p1, p2 > 0: the first and last spacings, in the curve's length
+ *               units (eg2d_distribution: fractions of 1), met to 1e-11 relative:
+ *               Vinokur's two-sided tanh/tan function (J. Comput. Phys. 50, 1983)
+ *               with its end slopes corrected iteratively. p1 + p2 < length, n >= 3. */
+#define EG2D_DIST_UNIFORM     0
+#define EG2D_DIST_EXPONENTIAL 1
+#define EG2D_DIST_TANH_ONE    2
+#define EG2D_DIST_TANH_TWO    3
+#define EG2D_DIST_VINOKUR     4
+EG2D_API int eg2d_distribution(int distribution, int n, double p1, double p2, double *s);
+
+/* n >= 2 points of a curve at the normalized arc lengths of a distribution. */
+EG2D_API int eg2d_curve_points(const eg2d_curve *curve, int n, int distribution, double p1, double p2,
+                               double *x, double *y);
+
+/* Puts the side's points on a curve with a distribution (as
+ * eg2d_curve_points; the side's corner checks and rules are eg2d_set_side's).
+ * Direction (seed 001 figure 1.13): a side whose curve runs against the grid
+ * fails with EG2D_ERR_BOUNDARY and a message that says so, unless flags ask:
+ *  EG2D_CURVE_REVERSE  use the curve from its end to its start (s -> 1 - s);
+ *  EG2D_CURVE_ORIENT   reverse it when, and only when, it runs against the grid;
+ *  EG2D_CURVE_SLIDING  the side slides (single-block grids only, else
+ *                      EG2D_ERR_UNSUPPORTED): after every iteration of every
+ *                      solver, each node of the side except the corners moves
+ *                      along the curve to the foot of the perpendicular from its
+ *                      neighbour on the first interior line (Overture's
+ *                      slip-orthogonal condition), keeping its order (a node
+ *                      moves at most halfway to its neighbours' positions), so
+ *                      grid lines meet the side at right angles. Setting the
+ *                      side again (eg2d_set_side, eg2d_set_boundary,
+ *                      eg2d_set_coordinates, a topology) ends the sliding.
+ * Running against the grid means: its ends match the corners of an adjacent
+ * side already set the wrong way round; or, with no adjacent side set, it
+ * turns the other way than the opposite side (O- and C-grids: the signed area
+ * of the closed side; single block: the direction from first to last point). */
+#define EG2D_CURVE_REVERSE 1
+#define EG2D_CURVE_ORIENT  2
+#define EG2D_CURVE_SLIDING 4
+EG2D_API int eg2d_set_side_curve(eg2d_grid *grid, int side, const eg2d_curve *curve, int distribution,
+                                 double p1, double p2, int flags);
+
+/* The wall spacing for a target y+ on a body of the given chord at Reynolds
+ * number Re (based on chord), from the turbulent flat-plate estimate (as
+ * Construct2D offers): Cf = (2 log10(Re) - 0.65)^-2.3 (Schlichting,
+ * Boundary-Layer Theory, 1979, eq 21.16) and height = chord y+ / (Re sqrt(Cf/2)).
+ * y+ > 0, 1e3 <= Re <= 1e9, chord > 0. */
+EG2D_API int eg2d_first_cell_height(double yplus, double reynolds, double chord, double *height);
 
 /*=====================================================================
  * Queries

@@ -33,12 +33,20 @@ Generator::Generator(int ni, int nj)
     : grid_(ni, nj), solver_info_(find_solver(EG2D_SOLVER_PSOR)), solver_(solver_info_->make()) {}
 
 void Generator::set_topology(Topology t) {
-    if (t == Topology::C) fail(Failure::Unsupported, "the C-grid topology is not built into this library yet");
     Grid next(grid_);
     next.set_topology(t);
     grid_ = std::move(next);
+    motions_.clear();
     changed_start();
     controls_.invalidate();
+}
+
+void Generator::drop_motion(Side s) {
+    for (std::size_t k = 0; k < motions_.size(); ++k)
+        if (motions_[k]->side() == s) {
+            motions_.erase(motions_.begin() + static_cast<std::ptrdiff_t>(k));
+            return;
+        }
 }
 
 void Generator::changed_boundary() {
@@ -52,6 +60,7 @@ void Generator::changed_start() {
 
 void Generator::set_coordinates(const double *x, const double *y) {
     grid_.set_coordinates(x, y);
+    motions_.clear();  // the user's boundary is the boundary now
     changed_start();
     controls_.invalidate();
 }
@@ -62,9 +71,9 @@ void Generator::initialize(int method) {
     if (!grid_.boundary_complete())
         fail(Failure::State, format("the boundary is not complete: side %s not set", missing_sides(grid_).c_str()));
     Grid next(grid_);
-    m->fill(next);
-    check_finite("initial x", next.x.data(), next.size());
-    check_finite("initial y", next.y.data(), next.size());
+    m->fill(next, settings);
+    check_coordinates("initial x", next.x.data(), next.size());
+    check_coordinates("initial y", next.y.data(), next.size());
     next.mark_initialized();
     grid_ = std::move(next);
     changed_start();
@@ -126,6 +135,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
         saved_y_ = grid_.y;
         if (it > 0 && controls_.has_dynamic()) controls_.update(grid_, false);
         solver_->iterate(problem);
+        for (const auto &m : motions_) m->apply(grid_);  // sliding sides follow the interior
         const ResidualInfo ri = eg2d::residual(system_, problem.level(), extent);
         if (!std::isfinite(ri.value) ||
             (ri.value > settings.divergence_factor * best && ri.value > kDivergenceFloor)) {
