@@ -66,12 +66,35 @@ module eg2d
     procedure :: get_cell_quality => grid_get_cell_quality
     procedure :: write => grid_write
     procedure :: set_side_from_file => grid_set_side_from_file
+    procedure :: set_side_curve => grid_set_side_curve
     final :: grid_final
   end type eg2d_grid_t
+
+  ! A curve (eg2d_curve_*): made by one of polyline, spline, from_function,
+  ! naca4, read_airfoil (each frees a curve held before); freed by destroy or
+  ! its final procedure. Do not copy a made curve by assignment.
+  type, public :: eg2d_curve_t
+    type(c_ptr), private :: handle = c_null_ptr
+    character(:), allocatable, private :: message
+  contains
+    procedure :: polyline => curve_polyline
+    procedure :: spline => curve_spline
+    procedure :: from_function => curve_from_function
+    procedure :: naca4 => curve_naca4
+    procedure :: read_airfoil => curve_read_airfoil
+    procedure :: destroy => curve_destroy
+    procedure :: c_handle => curve_c_handle
+    procedure :: last_error => curve_last_error
+    procedure :: get_length => curve_get_length
+    procedure :: evaluate => curve_evaluate
+    procedure :: points => curve_points
+    final :: curve_final
+  end type eg2d_curve_t
 
   public :: eg2d_c_string, eg2d_status_message, eg2d_solver_short_name, eg2d_version_string
   public :: eg2d_get_parameter_bounds, eg2d_live_grids
   public :: eg2d_read_plot3d_grid, eg2d_read_point_file
+  public :: eg2d_get_distribution, eg2d_get_first_cell_height
 
   ! Grids created through eg2d_grid_t and not yet freed (to check finalisation).
   integer, save :: live_grids = 0
@@ -548,6 +571,181 @@ contains
     end if
     call settle(rc, eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
   end subroutine eg2d_read_point_file
+
+  ! The side's points on a curve with a distribution (EG2D_DIST_*, parameters
+  ! p1, p2) and flags (EG2D_CURVE_*, default 0).
+  subroutine grid_set_side_curve(self, side, curve, distribution, p1, p2, flags, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: side, distribution
+    class(eg2d_curve_t), intent(in) :: curve
+    real(c_double), intent(in) :: p1, p2
+    integer, intent(in), optional :: flags
+    integer, intent(out), optional :: status
+    integer(c_int) :: f
+    f = 0
+    if (present(flags)) f = int(flags, c_int)
+    call finish(self, eg2d_set_side_curve(self%handle, int(side, c_int), curve%handle, &
+         int(distribution, c_int), p1, p2, f), status)
+  end subroutine grid_set_side_curve
+
+  ! ---------------------------------------------------------------- curves
+  ! After a curve call: the thread's message on failure (curves have no grid).
+  subroutine curve_finish(self, rc, status)
+    class(eg2d_curve_t), intent(inout) :: self
+    integer(c_int), intent(in) :: rc
+    integer, intent(out), optional :: status
+    if (rc /= EG2D_OK) self%message = eg2d_c_string(eg2d_last_error(c_null_ptr))
+    if (.not. allocated(self%message)) self%message = ''
+    call settle(rc, self%message, status)
+  end subroutine curve_finish
+
+  ! x(:), y(:) of the same size, or a recorded failure.
+  logical function points_ok(self, where, x, y, status)
+    class(eg2d_curve_t), intent(inout) :: self
+    character(*), intent(in) :: where
+    real(c_double), intent(in) :: x(:), y(:)
+    integer, intent(out), optional :: status
+    character(120) :: buf
+    points_ok = size(x) == size(y)
+    if (.not. points_ok) then
+      write (buf, '(a,": x has ",i0," points, y ",i0)') where, size(x), size(y)
+      self%message = trim(buf)
+      call settle(EG2D_ERR_ARGUMENT, self%message, status)
+    end if
+  end function points_ok
+
+  ! Straight segments through the points (x(k), y(k)).
+  subroutine curve_polyline(self, x, y, status)
+    class(eg2d_curve_t), intent(inout) :: self
+    real(c_double), intent(in) :: x(:), y(:)
+    integer, intent(out), optional :: status
+    call curve_destroy(self)
+    if (.not. points_ok(self, 'polyline', x, y, status)) return
+    call curve_finish(self, eg2d_curve_polyline(int(size(x), c_int), x, y, self%handle), status)
+  end subroutine curve_polyline
+
+  ! The cubic spline through the points (periodic when the last repeats the first).
+  subroutine curve_spline(self, x, y, status)
+    class(eg2d_curve_t), intent(inout) :: self
+    real(c_double), intent(in) :: x(:), y(:)
+    integer, intent(out), optional :: status
+    call curve_destroy(self)
+    if (.not. points_ok(self, 'spline', x, y, status)) return
+    call curve_finish(self, eg2d_curve_spline(int(size(x), c_int), x, y, self%handle), status)
+  end subroutine curve_spline
+
+  ! A user curve: fn, a bind(C) subroutine with the interface eg2d_curve_fn.
+  subroutine curve_from_function(self, fn, user, status)
+    class(eg2d_curve_t), intent(inout) :: self
+    procedure(eg2d_curve_fn) :: fn
+    type(c_ptr), intent(in), optional :: user
+    integer, intent(out), optional :: status
+    type(c_ptr) :: u
+    call curve_destroy(self)
+    u = c_null_ptr
+    if (present(user)) u = user
+    call curve_finish(self, eg2d_curve_function(c_funloc(fn), u, self%handle), status)
+  end subroutine curve_from_function
+
+  ! A NACA 4-digit section ('0012'); flags EG2D_NACA_CLOSED_TE or 0 (default).
+  subroutine curve_naca4(self, digits, flags, status)
+    class(eg2d_curve_t), intent(inout) :: self
+    character(*), intent(in) :: digits
+    integer, intent(in), optional :: flags
+    integer, intent(out), optional :: status
+    integer(c_int) :: f
+    call curve_destroy(self)
+    f = 0
+    if (present(flags)) f = int(flags, c_int)
+    call curve_finish(self, eg2d_curve_naca4(c_path(digits), f, self%handle), status)
+  end subroutine curve_naca4
+
+  ! An airfoil from a Selig or Lednicer coordinate file.
+  subroutine curve_read_airfoil(self, path, status)
+    class(eg2d_curve_t), intent(inout) :: self
+    character(*), intent(in) :: path
+    integer, intent(out), optional :: status
+    call curve_destroy(self)
+    call curve_finish(self, eg2d_curve_read_airfoil(c_path(path), self%handle), status)
+  end subroutine curve_read_airfoil
+
+  subroutine curve_destroy(self)
+    class(eg2d_curve_t), intent(inout) :: self
+    if (c_associated(self%handle)) call eg2d_curve_destroy(self%handle)
+    self%handle = c_null_ptr
+  end subroutine curve_destroy
+
+  subroutine curve_final(self)
+    type(eg2d_curve_t), intent(inout) :: self
+    call curve_destroy(self)
+  end subroutine curve_final
+
+  function curve_c_handle(self) result(p)
+    class(eg2d_curve_t), intent(in) :: self
+    type(c_ptr) :: p
+    p = self%handle
+  end function curve_c_handle
+
+  function curve_last_error(self) result(s)
+    class(eg2d_curve_t), intent(in) :: self
+    character(:), allocatable :: s
+    if (allocated(self%message)) then
+      s = self%message
+    else
+      s = ''
+    end if
+  end function curve_last_error
+
+  subroutine curve_get_length(self, length, status)
+    class(eg2d_curve_t), intent(inout) :: self
+    real(c_double), intent(out) :: length
+    integer, intent(out), optional :: status
+    length = 0
+    call curve_finish(self, eg2d_curve_length(self%handle, length), status)
+  end subroutine curve_get_length
+
+  ! The point at normalized arc length s in [0, 1].
+  subroutine curve_evaluate(self, s, x, y, status)
+    class(eg2d_curve_t), intent(inout) :: self
+    real(c_double), intent(in) :: s
+    real(c_double), intent(out) :: x, y
+    integer, intent(out), optional :: status
+    x = 0
+    y = 0
+    call curve_finish(self, eg2d_curve_evaluate(self%handle, s, x, y), status)
+  end subroutine curve_evaluate
+
+  ! size(x) points of the curve at the normalized arc lengths of a distribution.
+  subroutine curve_points(self, distribution, p1, p2, x, y, status)
+    class(eg2d_curve_t), intent(inout) :: self
+    integer, intent(in) :: distribution
+    real(c_double), intent(in) :: p1, p2
+    real(c_double), intent(inout) :: x(:), y(:)
+    integer, intent(out), optional :: status
+    if (.not. points_ok(self, 'points', x, y, status)) return
+    call curve_finish(self, eg2d_curve_points(self%handle, int(size(x), c_int), int(distribution, c_int), &
+         p1, p2, x, y), status)
+  end subroutine curve_points
+
+  ! size(s) values of a distribution of points on [0, 1].
+  subroutine eg2d_get_distribution(distribution, p1, p2, s, status)
+    integer, intent(in) :: distribution
+    real(c_double), intent(in) :: p1, p2
+    real(c_double), intent(inout) :: s(:)
+    integer, intent(out), optional :: status
+    call settle(eg2d_distribution(int(distribution, c_int), int(size(s), c_int), p1, p2, s), &
+         eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
+  end subroutine eg2d_get_distribution
+
+  ! The wall spacing for a target y+ at Reynolds number re on a body of this chord.
+  subroutine eg2d_get_first_cell_height(yplus, re, chord, height, status)
+    real(c_double), intent(in) :: yplus, re, chord
+    real(c_double), intent(out) :: height
+    integer, intent(out), optional :: status
+    height = 0
+    call settle(eg2d_first_cell_height(yplus, re, chord, height), &
+         eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
+  end subroutine eg2d_get_first_cell_height
 
   ! A Fortran path as the C string the library reads.
   function c_path(path) result(p)
