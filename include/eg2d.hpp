@@ -18,9 +18,11 @@
 
 #include <exception>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -91,6 +93,119 @@ inline void read_points(const std::string &path, std::vector<double> &x, std::ve
     x.swap(xs);
     y.swap(ys);
 }
+
+/* n points of an EG2D_DIST_* distribution on [0, 1]. */
+inline std::vector<double> distribution(int dist, int n, double p1 = 0, double p2 = 0) {
+    std::vector<double> s(n > 0 ? static_cast<std::size_t>(n) : 0u);
+    detail::check(::eg2d_distribution(dist, n, p1, p2, s.data()), nullptr);
+    return s;
+}
+/* The wall spacing for a target y+ at a chord Reynolds number. */
+inline double first_cell_height(double yplus, double reynolds, double chord = 1) {
+    double h = 0;
+    detail::check(::eg2d_first_cell_height(yplus, reynolds, chord, &h), nullptr);
+    return h;
+}
+
+/* A curve handle: move-only, freed by the destructor. Made by the static
+ * functions; a function curve keeps its std::function alive with it. */
+class curve {
+public:
+    using function_type = std::function<std::pair<double, double>(double t)>;
+
+    static curve polyline(const std::vector<double> &x, const std::vector<double> &y) {
+        same_size(x, y);
+        return curve([&](eg2d_curve **c) { return ::eg2d_curve_polyline(size_of(x), x.data(), y.data(), c); });
+    }
+    static curve spline(const std::vector<double> &x, const std::vector<double> &y) {
+        same_size(x, y);
+        return curve([&](eg2d_curve **c) { return ::eg2d_curve_spline(size_of(x), x.data(), y.data(), c); });
+    }
+    /* fn(t) -> (x, y) for t in [0, 1]; an exception in fn fails the call and is rethrown. */
+    static curve function(function_type fn) {
+        auto state = std::make_unique<function_state>();
+        state->fn = std::move(fn);
+        function_state *raw = state.get();
+        curve c;
+        c.state_ = std::move(state);
+        const int status = ::eg2d_curve_function(&curve::call, raw, &c.c_);
+        if (raw->thrown) std::rethrow_exception(std::exchange(raw->thrown, nullptr));
+        detail::check(status, nullptr);
+        return c;
+    }
+    static curve naca4(const std::string &digits, int flags = 0) {
+        return curve([&](eg2d_curve **c) { return ::eg2d_curve_naca4(digits.c_str(), flags, c); });
+    }
+    static curve read_airfoil(const std::string &path) {
+        return curve([&](eg2d_curve **c) { return ::eg2d_curve_read_airfoil(path.c_str(), c); });
+    }
+
+    ~curve() { ::eg2d_curve_destroy(c_); }
+    curve(const curve &) = delete;
+    curve &operator=(const curve &) = delete;
+    curve(curve &&o) noexcept : c_(std::exchange(o.c_, nullptr)), state_(std::move(o.state_)) {}
+    curve &operator=(curve &&o) noexcept {
+        if (this != &o) {
+            ::eg2d_curve_destroy(c_);
+            c_ = std::exchange(o.c_, nullptr);
+            state_ = std::move(o.state_);
+        }
+        return *this;
+    }
+    const eg2d_curve *get() const noexcept { return c_; }
+
+    double length() const {
+        double v = 0;
+        run(::eg2d_curve_length(c_, &v));
+        return v;
+    }
+    /* The point at normalized arc length s in [0, 1]. */
+    std::pair<double, double> evaluate(double s) const {
+        double x = 0, y = 0;
+        run(::eg2d_curve_evaluate(c_, s, &x, &y));
+        return {x, y};
+    }
+    /* n points at the normalized arc lengths of a distribution into x, y. */
+    void points(int n, int dist, double p1, double p2, std::vector<double> &x, std::vector<double> &y) const {
+        std::vector<double> xs(n > 0 ? static_cast<std::size_t>(n) : 0u), ys(xs.size());
+        run(::eg2d_curve_points(c_, n, dist, p1, p2, xs.data(), ys.data()));
+        x.swap(xs);
+        y.swap(ys);
+    }
+
+private:
+    struct function_state {
+        function_type fn;
+        std::exception_ptr thrown;
+    };
+    curve() = default;
+    template <class Make>
+    explicit curve(Make make) {
+        detail::check(make(&c_), nullptr);
+    }
+    static void call(void *user, double t, double *x, double *y) noexcept {
+        auto *state = static_cast<function_state *>(user);
+        try {
+            std::tie(*x, *y) = state->fn(t);
+        } catch (...) {
+            state->thrown = std::current_exception();
+            *x = *y = std::numeric_limits<double>::quiet_NaN();
+        }
+    }
+    void run(int status) const {
+        if (state_ && state_->thrown) std::rethrow_exception(std::exchange(state_->thrown, nullptr));
+        detail::check(status, nullptr);
+    }
+    static void same_size(const std::vector<double> &x, const std::vector<double> &y) {
+        if (x.size() != y.size())
+            throw error(EG2D_ERR_ARGUMENT, "curve: x has " + std::to_string(x.size()) + " points, y " +
+                                               std::to_string(y.size()));
+    }
+    static int size_of(const std::vector<double> &x) { return static_cast<int>(x.size()); }
+
+    eg2d_curve *c_ = nullptr;
+    std::unique_ptr<function_state> state_;
+};
 
 /* One grid handle: move-only, freed by the destructor. */
 class grid {
@@ -225,6 +340,11 @@ public:
         std::vector<double> v(static_cast<std::size_t>(ni - 1) * static_cast<std::size_t>(nj - 1));
         check(::eg2d_get_cell_quality(g_, metric, v.data()));
         return v;
+    }
+
+    void set_side_curve(int side, const curve &c, int dist = EG2D_DIST_UNIFORM, double p1 = 0, double p2 = 0,
+                        int flags = 0) {
+        check(::eg2d_set_side_curve(g_, side, c.get(), dist, p1, p2, flags));
     }
 
     void write(const std::string &path, int format) const { check(::eg2d_write(g_, path.c_str(), format)); }

@@ -167,6 +167,45 @@ int main(int argc, char **argv) {
     h.get_coordinates(x, y);
     CHECK(std::fabs(x[16 + 17 * 12] - 1.0) < 1e-15);
 
+    // curves, distributions, y+
+    {
+        const auto c = eg2d::curve::polyline({0, 1, 1}, {0, 0, 1});
+        CHECK(std::fabs(c.length() - 2) < 1e-14);
+        const auto p = c.evaluate(0.75);
+        CHECK(std::fabs(p.first - 1) < 1e-12 && std::fabs(p.second - 0.5) < 1e-12);
+        CHECK(throws([&] { c.evaluate(1.5); }, EG2D_ERR_ARGUMENT, "s = 1.5"));
+        std::vector<double> cx, cy;
+        c.points(5, EG2D_DIST_UNIFORM, 0, 0, cx, cy);
+        CHECK(cx.size() == 5u && std::fabs(cx[1] - 0.5) < 1e-12 && std::fabs(cy[3] - 0.5) < 1e-12);
+        CHECK(throws([] { eg2d::curve::polyline({0}, {0}); }, EG2D_ERR_ARGUMENT, "eg2d_curve_polyline"));
+        CHECK(throws([] { eg2d::curve::spline({0, 1}, {0}); }, EG2D_ERR_ARGUMENT, "x has 2 points, y 1"));
+        const double pi = std::acos(-1.0);
+        const auto arc = eg2d::curve::function(
+            [pi](double t) { return std::make_pair(3 * std::cos(pi * t / 2), 3 * std::sin(pi * t / 2)); });
+        CHECK(std::fabs(arc.length() - 1.5 * pi) < 1e-10);
+        bool rethrown = false;
+        try {
+            eg2d::curve::function([](double) -> std::pair<double, double> { throw std::logic_error("from the curve"); });
+        } catch (const std::logic_error &e) {
+            rethrown = std::string(e.what()) == "from the curve";
+        }
+        CHECK(rethrown);
+        const auto naca = eg2d::curve::naca4("0012", EG2D_NACA_CLOSED_TE);
+        CHECK(std::fabs(naca.evaluate(0).first - 1) < 1e-12);
+        CHECK(throws([] { eg2d::curve::naca4("12"); }, EG2D_ERR_ARGUMENT, "eg2d_curve_naca4"));
+        CHECK(throws([] { eg2d::curve::read_airfoil("no-such-airfoil.dat"); }, EG2D_ERR_IO, "no-such-airfoil.dat"));
+        const std::vector<double> s = eg2d::distribution(EG2D_DIST_UNIFORM, 5);
+        CHECK(s.size() == 5u && s[2] == 0.5);
+        CHECK(throws([] { eg2d::distribution(EG2D_DIST_EXPONENTIAL, 5, 0); }, EG2D_ERR_ARGUMENT, "eg2d_distribution"));
+        const double cf = std::pow(2 * std::log10(1e6) - 0.65, -2.3);
+        CHECK(std::fabs(eg2d::first_cell_height(1, 1e6) - 1 / (1e6 * std::sqrt(cf / 2))) < 1e-18);
+        CHECK(throws([] { eg2d::first_cell_height(-1, 1e6); }, EG2D_ERR_ARGUMENT, "eg2d_first_cell_height"));
+        eg2d::grid q(17, 13);
+        const auto bottom = eg2d::curve::polyline({0, 1}, {0, 0});
+        q.set_side_curve(EG2D_SIDE_JMIN, bottom);
+        CHECK(throws([&] { q.set_side_curve(9, bottom); }, EG2D_ERR_ARGUMENT, "eg2d_set_side_curve"));
+    }
+
     // the swan of the C library (tests/support/swan_write_c.c)
     if (argc > 1) {
         std::ifstream in(argv[1]);

@@ -299,3 +299,70 @@ def test_point_files(tmp_path):
         g.set_side_from_file(eg2d.SIDE_JMIN, pts)
         with pytest.raises(eg2d.BoundaryError, match="holds 17 points"):
             g.set_side_from_file(eg2d.SIDE_IMIN, pts)
+
+
+# ---- curves, distributions, y+
+def test_polyline_length_evaluate_points():
+    with eg2d.Curve.polyline([0, 1, 1], [0, 0, 1]) as c:
+        assert c.length() == pytest.approx(2, abs=1e-14)
+        assert c.evaluate(0.75) == pytest.approx((1, 0.5), abs=1e-12)
+        with pytest.raises(eg2d.ArgumentError, match="s = 1.5"):
+            c.evaluate(1.5)
+        x, y = c.points(5)
+        np.testing.assert_allclose(x, [0, 0.5, 1, 1, 1], atol=1e-12)
+        np.testing.assert_allclose(y, [0, 0, 0, 0.5, 1], atol=1e-12)
+    with pytest.raises(eg2d.StateError, match="closed"):
+        c.length()
+    with pytest.raises(eg2d.ArgumentError, match="eg2d_curve_polyline"):
+        eg2d.Curve.polyline([0], [0])
+    with pytest.raises(eg2d.ArgumentError, match="need two equal 1-D arrays"):
+        eg2d.Curve.polyline([0, 1], [0])
+
+
+def test_spline_circle_and_function_curve():
+    t = 2 * np.pi * np.arange(65) / 64
+    x, y = 2 * np.cos(t), 2 * np.sin(t)
+    x[-1], y[-1] = x[0], y[0]
+    with eg2d.Curve.spline(x, y) as c:
+        assert abs(c.length() - 4 * np.pi) < 1e-5
+    with eg2d.Curve.function(lambda t: (3 * np.cos(np.pi * t / 2), 3 * np.sin(np.pi * t / 2))) as c:
+        assert abs(c.length() - 1.5 * np.pi) < 1e-10
+        assert c.evaluate(0.5) == pytest.approx((3 / np.sqrt(2), 3 / np.sqrt(2)), abs=1e-10)
+
+    def broken(t):
+        raise ZeroDivisionError("from the curve")
+    with pytest.raises(ZeroDivisionError, match="from the curve"):
+        eg2d.Curve.function(broken)
+
+
+def test_naca_and_airfoil_files(tmp_path):
+    with eg2d.Curve.naca4("0012", eg2d.NACA_CLOSED_TE) as c:
+        assert c.evaluate(0) == pytest.approx((1, 0), abs=1e-12)
+        assert c.evaluate(1) == pytest.approx((1, 0), abs=1e-12)  # closed trailing edge
+    with pytest.raises(eg2d.ArgumentError):
+        eg2d.Curve.naca4("12")
+    with pytest.raises(eg2d.FileError, match="missing.dat"):
+        eg2d.Curve.read_airfoil(tmp_path / "missing.dat")
+
+
+def test_distribution_and_first_cell_height():
+    np.testing.assert_allclose(eg2d.distribution(eg2d.DIST_UNIFORM, 5), [0, 0.25, 0.5, 0.75, 1], atol=1e-15)
+    s = eg2d.distribution(eg2d.DIST_EXPONENTIAL, 5, 2.0)
+    assert s[1] == pytest.approx((np.exp(0.5) - 1) / (np.exp(2) - 1), rel=1e-13)
+    with pytest.raises(eg2d.ArgumentError):
+        eg2d.distribution(eg2d.DIST_EXPONENTIAL, 5, 0.0)
+    cf = (2 * np.log10(1e6) - 0.65) ** -2.3
+    assert eg2d.first_cell_height(1, 1e6) == pytest.approx(1 / (1e6 * np.sqrt(cf / 2)), rel=1e-12)
+    with pytest.raises(eg2d.ArgumentError):
+        eg2d.first_cell_height(-1, 1e6)
+
+
+def test_set_side_curve():
+    with eg2d.Grid(17, 13) as g, eg2d.Curve.polyline([0, 1], [0, 0]) as c:
+        g.set_side_curve(eg2d.SIDE_JMIN, c)
+        with pytest.raises(eg2d.ArgumentError):
+            g.set_side_curve(9, c)
+        g.set_side(eg2d.SIDE_IMIN, np.zeros(13), np.arange(13) / 12)
+        with pytest.raises(eg2d.BoundaryError, match="eg2d_set_side_curve"):
+            g.set_side_curve(eg2d.SIDE_JMIN, c, flags=eg2d.CURVE_REVERSE)
+        g.set_side_curve(eg2d.SIDE_JMIN, c, flags=eg2d.CURVE_ORIENT)

@@ -12,6 +12,8 @@ grid_p = c_void_p  # eg2d_grid *
 double_p = POINTER(c_double)
 int_p = POINTER(c_int)
 monitor_fn = ctypes.CFUNCTYPE(c_int, c_void_p, c_int, c_double)
+curve_p = c_void_p  # eg2d_curve *
+curve_fn = ctypes.CFUNCTYPE(None, c_void_p, c_double, double_p, double_p)
 
 PROTOTYPES = {
     # errors and version
@@ -45,6 +47,19 @@ PROTOTYPES = {
     "eg2d_set_monitor": (c_int, [grid_p, monitor_fn, c_void_p]),
     "eg2d_iterate": (c_int, [grid_p, c_int, double_p]),
     "eg2d_solve": (c_int, [grid_p]),
+    # curves and distributions
+    "eg2d_curve_polyline": (c_int, [c_int, double_p, double_p, POINTER(curve_p)]),
+    "eg2d_curve_spline": (c_int, [c_int, double_p, double_p, POINTER(curve_p)]),
+    "eg2d_curve_function": (c_int, [curve_fn, c_void_p, POINTER(curve_p)]),
+    "eg2d_curve_naca4": (c_int, [c_char_p, c_int, POINTER(curve_p)]),
+    "eg2d_curve_read_airfoil": (c_int, [c_char_p, POINTER(curve_p)]),
+    "eg2d_curve_destroy": (None, [curve_p]),
+    "eg2d_curve_length": (c_int, [curve_p, double_p]),
+    "eg2d_curve_evaluate": (c_int, [curve_p, c_double, double_p, double_p]),
+    "eg2d_distribution": (c_int, [c_int, c_int, c_double, c_double, double_p]),
+    "eg2d_curve_points": (c_int, [curve_p, c_int, c_int, c_double, c_double, double_p, double_p]),
+    "eg2d_set_side_curve": (c_int, [grid_p, c_int, curve_p, c_int, c_double, c_double, c_int]),
+    "eg2d_first_cell_height": (c_int, [c_double, c_double, c_double, double_p]),
     # queries
     "eg2d_get_size": (c_int, [grid_p, int_p, int_p]),
     "eg2d_get_coordinates": (c_int, [grid_p, double_p, double_p]),

@@ -73,3 +73,17 @@ def read_points(path):
     x, y = np.empty(n.value), np.empty(n.value)
     _check(lib.eg2d_read_points(p, n.value, None, _dp(x), _dp(y)))
     return x, y
+
+
+def distribution(distribution, n, p1=0.0, p2=0.0):
+    """n points of a DIST_* distribution on [0, 1] (numpy array)."""
+    s = np.empty(int(n))
+    _check(lib.eg2d_distribution(int(distribution), int(n), float(p1), float(p2), _dp(s)))
+    return s
+
+
+def first_cell_height(yplus, reynolds, chord=1.0):
+    """The wall spacing for a target y+ at a chord Reynolds number (flat-plate estimate)."""
+    h = c_double()
+    _check(lib.eg2d_first_cell_height(float(yplus), float(reynolds), float(chord), byref(h)))
+    return h.value

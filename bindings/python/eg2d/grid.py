@@ -11,12 +11,13 @@ library's message; the grid is left as it was (runs keep their iterations,
 see eg2d.h). Node (i, j) of the C manual is x[i, j].
 """
 import os
-from ctypes import POINTER, byref, c_double, c_int, c_void_p
+from ctypes import POINTER, byref, c_double, c_int
 
 import numpy as np
 
 from . import constants as C
 from ._capi import lib, monitor_fn
+from ._handle import Handle
 from .errors import Error, error_for
 from .functions import _text, last_error
 
@@ -41,45 +42,23 @@ def _ptr(v):
     return v.ctypes.data_as(_double_p)
 
 
-class Grid:
+class Grid(Handle):
     def __init__(self, ni, nj):
-        self._h = c_void_p()
+        super().__init__()
         self._monitor = None  # keeps the ctypes callback alive while installed
         self._monitor_error = None
         status = lib.eg2d_create(int(ni), int(nj), byref(self._h))
         if status:
             raise error_for(status, last_error())
 
-    # ---- lifetime
-    def close(self):
-        """Frees the grid; later calls raise eg2d.Error. Idempotent."""
-        if self._h:
-            lib.eg2d_destroy(self._h)
-            self._h = c_void_p()
+    _kind = "grid"
 
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-        return False
-
-    def __del__(self):
-        if getattr(self, "_h", None) and lib is not None:
-            self.close()
-
-    @property
-    def closed(self):
-        return not self._h
+    def _destroy(self, h):
+        lib.eg2d_destroy(h)
 
     def _check(self, status):
         if status:
             raise error_for(status, self.last_error)
-
-    def _handle(self):
-        if not self._h:
-            raise error_for(C.ERR_STATE, "the grid is closed")
-        return self._h
 
     @property
     def last_error(self):
@@ -232,6 +211,11 @@ class Grid:
         v = np.empty((ni - 1, nj - 1), dtype=np.float64, order="F")
         self._check(lib.eg2d_get_cell_quality(self._handle(), int(metric), _ptr(v)))
         return v
+
+    def set_side_curve(self, side, curve, distribution=C.DIST_UNIFORM, p1=0.0, p2=0.0, flags=0):
+        """The side's points on an eg2d.Curve with a distribution and CURVE_* flags."""
+        self._check(lib.eg2d_set_side_curve(self._handle(), int(side), curve._handle(), int(distribution),
+                                            float(p1), float(p2), int(flags)))
 
     # ---- files
     def write(self, path, format):
