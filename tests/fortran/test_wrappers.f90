@@ -51,6 +51,14 @@ program test_wrappers
   call none%solve(st)
   call check_status(st, EG2D_ERR_ARGUMENT, 'solve on a grid never created')
   call check_contains(none%last_error(), 'grid is NULL', 'its message')
+  call none%get_size(m, n, st)
+  call check_status(st, EG2D_ERR_ARGUMENT, 'get_size on a grid never created')
+  call none%set_side(EG2D_SIDE_JMIN, x(:, 1), y(:, 1), st)
+  call check_status(st, EG2D_ERR_ARGUMENT, 'set_side on a grid never created')
+  call none%get_coordinates(x, y, st)
+  call check_status(st, EG2D_ERR_ARGUMENT, 'get_coordinates on a grid never created')
+  call none%iterate(1, status=st)
+  call check_status(st, EG2D_ERR_ARGUMENT, 'iterate on a grid never created')
   call none%destroy()
 
   ! ---- create

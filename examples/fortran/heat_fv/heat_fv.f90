@@ -27,6 +27,7 @@ program heat_fv
   call mms_case('linear')
   call patch_test('swan', 17, ok)
   call patch_test('annulus', 17, ok)
+  call without_correction(ok)
   call mms_case('smooth')
   call convergence('swan', 32, .false., ok)
   call convergence('annulus', 16, .true., ok)
@@ -116,6 +117,20 @@ contains
     print '("patch test (T linear, k = 1) on ",a,": max error ",es9.2)', family, emax
     if (emax > 1d-10) ok = .false.
   end subroutine patch_test
+
+  ! The same patch test on the swan without the non-orthogonal correction:
+  ! the error must be large (the correction is what makes the scheme exact).
+  subroutine without_correction(ok)
+    logical, intent(inout) :: ok
+    real(dp) :: e2, emax, hmax
+    integer :: sweeps
+    call heat_cross_diffusion(.false.)
+    call run('swan', 17, 1d-13, e2, emax, hmax, sweeps)
+    call heat_cross_diffusion(.true.)
+    print '("patch test on swan without the non-orthogonal correction: max error ",es9.2, &
+         & " (must be > 1e-3)")', emax
+    if (emax <= 1d-3) ok = .false.
+  end subroutine without_correction
 
   ! Three grids n0, 2 n0, 4 n0; orders against the refinement ratio 2 and,
   ! for information, against hmax.
