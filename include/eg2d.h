@@ -204,8 +204,10 @@ EG2D_API int eg2d_get_solver(const eg2d_grid *grid, int *solver);
 /* A solver's short name ("psor"), or NULL if this library has no such solver. */
 EG2D_API const char *eg2d_solver_name(int solver);
 
-/* Relaxation factor omega in (0, 2); 0 = automatic (for point SOR the
- * optimal factor of seed 003, computed for the grid's size). */
+/* Relaxation factor omega in (0, 2); 0 = automatic. Automatic point SOR uses
+ * seed 003's optimal factor for Laplace; for Winslow it starts at the optimum
+ * of a grid half as fine and widens 2 - omega whenever the residual rises 10x
+ * above its best (the optimum itself diverges on some grids). */
 EG2D_API int eg2d_set_relaxation(eg2d_grid *grid, double omega);
 /* Stop when residual <= tolerance (default 1e-8), tolerance in (0, 1). */
 EG2D_API int eg2d_set_tolerance(eg2d_grid *grid, double tolerance);

@@ -155,6 +155,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
         }
         ++iterations_;
         r = ri.value;
+        solver_->observe(r);
         best = std::min(best, r);
         if (monitor && monitor(iterations_, r))
             fail(Failure::Interrupted,

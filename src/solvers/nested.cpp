@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "quality/quality.hpp"
+#include "solvers/auto_relaxation.hpp"
 #include "solvers/solver.hpp"
 
 namespace eg2d {
@@ -76,7 +77,11 @@ void interpolate(const Connectivity &c, double *f, int s) {
 
 class Nested final : public Solver {
 public:
-    void reset() override { started_ = false; }
+    void reset() override {
+        started_ = false;
+        relaxation_.reset();
+    }
+    void observe(double residual) override { relaxation_.observe(residual); }
 
     void iterate(Problem &p) override {
         const Level L = p.level();
@@ -84,9 +89,7 @@ public:
             coarse_to_fine(p);
             started_ = true;
         }
-        const double omega = p.settings.relaxation > 0.0 ? p.settings.relaxation
-                                                         : optimal_sor_omega(L.conn->ni(), L.conn->nj());
-        sor_sweep(p.system, L, omega);
+        sor_sweep(p.system, L, relaxation_.omega(p.settings, p.system, L.conn->ni(), L.conn->nj()));
     }
 
 private:
@@ -102,7 +105,7 @@ private:
         const double target = std::max(p.settings.tolerance, kCoarseTolerance);
         for (int s = top; s > 1; s /= 2) {
             const int nci = (ni - 1) / s + 1, ncj = (conn.nj() - 1) / s + 1;
-            const Connectivity cc(nci, ncj, conn.topology());
+            const Connectivity cc = conn.coarsened(s, s);
             std::vector<double> cx(static_cast<std::size_t>(nci) * ncj), cy(cx.size());
             auto fine_index = [&](int i, int j) { return i * s + static_cast<std::size_t>(ni) * j * s; };
             for (int j = 0; j < ncj; ++j)
@@ -116,8 +119,7 @@ private:
             coarse.x = cx.data();
             coarse.y = cy.data();
             coarse.controls = cf.empty() ? nullptr : &cf;
-            const double omega = p.settings.relaxation > 0.0 ? p.settings.relaxation : optimal_sor_omega(nci, ncj);
-            converge(p.system, coarse, extent, target, omega);
+            converge(p.system, coarse, extent, target, p.settings);
             for (int j = 0; j < ncj; ++j)
                 for (int i = 0; i < nci; ++i) {
                     p.grid.x[fine_index(i, j)] = cx[i + static_cast<std::size_t>(nci) * j];
@@ -137,18 +139,22 @@ private:
 
     // Point SOR sweeps on a coarse level until its residual is below target,
     // the sweeps stop helping, or a cap proportional to its size.
-    static void converge(System system, const Level &L, double extent, double target, double omega) {
+    static void converge(System system, const Level &L, double extent, double target, const Settings &settings) {
         const int cap = 50 * std::max(L.conn->ni(), L.conn->nj()) + 100;
+        AutoRelaxation relaxation;
         double best = residual(system, L, extent).value;
+        relaxation.observe(best);
         for (int k = 0; k < cap && best > target; ++k) {
-            sor_sweep(system, L, omega);
+            sor_sweep(system, L, relaxation.omega(settings, system, L.conn->ni(), L.conn->nj()));
             const double r = residual(system, L, extent).value;
+            relaxation.observe(r);
             if (!std::isfinite(r) || r > 1e4 * best) return;  // the fine grid's run loop reports it
             best = std::min(best, r);
         }
     }
 
     bool started_ = false;
+    AutoRelaxation relaxation_;
 };
 
 }  // namespace

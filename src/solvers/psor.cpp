@@ -3,6 +3,7 @@
 // coefficients are frozen at each node's current neighbours (Picard).
 #include <cmath>
 
+#include "solvers/auto_relaxation.hpp"
 #include "solvers/solver.hpp"
 
 namespace eg2d {
@@ -34,10 +35,13 @@ class PointSor final : public Solver {
 public:
     void iterate(Problem &p) override {
         const Level L = p.level();
-        const double omega = p.settings.relaxation > 0.0 ? p.settings.relaxation
-                                                         : optimal_sor_omega(L.conn->ni(), L.conn->nj());
-        sor_sweep(p.system, L, omega);
+        sor_sweep(p.system, L, relaxation_.omega(p.settings, p.system, L.conn->ni(), L.conn->nj()));
     }
+    void observe(double residual) override { relaxation_.observe(residual); }
+    void reset() override { relaxation_.reset(); }
+
+private:
+    AutoRelaxation relaxation_;
 };
 
 }  // namespace

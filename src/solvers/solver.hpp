@@ -37,6 +37,8 @@ public:
     // Called when the problem changed shape (topology, size, a new start):
     // drop any cached hierarchy or time-step cycle.
     virtual void reset() {}
+    // The residual of the grid after each iteration, for solvers that adapt a setting to the convergence they see.
+    virtual void observe(double /*residual*/) {}
 };
 
 struct SolverInfo {
