@@ -226,6 +226,11 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
                                             the best of the run (and above 1e-2) is divergence */
 #define EG2D_PARAM_FOLD_CHECK         4  /* 1 (default): eg2d_solve returns EG2D_ERR_FOLDED when
                                             the converged grid has folded cells; 0: it does not */
+/* Controls (200-299), see "Grid control" below. */
+#define EG2D_PARAM_WALL_DECAY       200  /* [0.01, 10], default 0.3: decay rate a (per cell) of the
+                                            wall control, which acts as exp(-a (m-1)) at depth m */
+#define EG2D_PARAM_WALL_RELAXATION  201  /* (0, 1], default 0.1: under-relaxation of the wall
+                                            control's updates between iterations */
 #define EG2D_PARAM_SVG_QUALITY      300  /* output 300-399. EG2D_FORMAT_SVG colours cells by this
                                             EG2D_QUALITY_* metric (one with per-cell values);
                                             -1 (default): no colouring */
@@ -542,6 +547,110 @@ EG2D_API int eg2d_read_points(const char *path, int capacity, int *n, double *x,
 /* Sets a side from a point file (as eg2d_set_side); the file must hold
  * exactly as many points as the side has (ni or nj), else EG2D_ERR_BOUNDARY. */
 EG2D_API int eg2d_set_side_from_file(eg2d_grid *grid, int side, const char *path);
+
+/*=====================================================================
+ * Grid control
+ *
+ * Control terms turn the Winslow system into NUMERICS.md's full equation
+ *   alpha (r_xixi + Phi r_xi) - 2 beta r_xieta + gamma (r_etaeta + Psi r_eta)
+ *     + J^2 (P r_xi + Q r_eta) = 0
+ * (plus seed 002's parameter-space terms). A grid has at most one control of
+ * each kind below; different kinds add up. Controls are kept across
+ * boundary changes and re-derived from the new boundary. They need the
+ * Winslow system: eg2d_iterate/eg2d_solve with EG2D_SYSTEM_LAPLACE and any
+ * control set fail with EG2D_ERR_STATE and change nothing. Every control
+ * works with every solver and with the O-grid topology (there xi is
+ * periodic: distances in xi are taken the short way round the cut).
+ * Each call validates all its arguments first; a failed call changes nothing.
+ *===================================================================*/
+#define EG2D_XI  0  /* a xi = const line (i index), acts on P */
+#define EG2D_ETA 1  /* an eta = const line (j index), acts on Q */
+
+/* Thompson's attraction (NUMERICS.md "Source terms"), in index units:
+ *   P = -sum a sign(xi - line) exp(-decay |xi - line|)  (direction EG2D_XI)
+ *   Q = -sum a sign(eta - line) exp(-decay |eta - line|) (direction EG2D_ETA)
+ * A positive amplitude attracts lines of that family toward `line`, a
+ * negative one repels them. line in [0, ni-1] (resp. [0, nj-1]); decay >= 0;
+ * amplitude finite. Seed 004 eq 14 is direction EG2D_ETA with amplitude mu and
+ * decay kappa: (line 0, 100, 0.2) clusters eta-lines at the inner wall of an
+ * O-grid. Sources accumulate until eg2d_clear_sources. The strength of a given
+ * amplitude depends on the physical size of the cells (P enters times J^2). */
+EG2D_API int eg2d_add_line_source(eg2d_grid *grid, int direction, double line, double amplitude, double decay);
+/* Attraction of both families toward the point (xi, eta):
+ *   P -= a sign(xi - xi0) exp(-decay d), Q -= a sign(eta - eta0) exp(-decay d),
+ *   d = sqrt((xi - xi0)^2 + (eta - eta0)^2). */
+EG2D_API int eg2d_add_point_source(eg2d_grid *grid, double xi, double eta, double amplitude, double decay);
+/* Removes every line and point source. */
+EG2D_API int eg2d_clear_sources(eg2d_grid *grid);
+
+/* The user's own P and Q per node (ni*nj, Fortran order), as seed 000's
+ * p1/p2 arrays: the term J^2 (P r_xi + Q r_eta). A positive P pushes xi-lines
+ * toward larger xi. Either pointer may be NULL (that one is zero); both NULL
+ * removes the arrays. Values must be finite. The arrays are copied. */
+EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const double *Q);
+
+/* Orthogonality at the boundary.
+ * MIDDLECOFF_THOMAS: seed 000 section 4: Phi from the point distribution of
+ *   the eta = const boundaries, Psi from the xi = const ones (none on an
+ *   O-grid), interpolated linearly inward. It makes lines leave smooth
+ *   curved boundaries nearly orthogonally; on boundaries made of straight
+ *   segments and corners it is zero away from the corners (seed 000 fig. 7).
+ * WALL: a Sorenson (GRAPE)-type control, updated between iterations, that
+ *   makes the grid lines leave each wall side at 90 degrees with the
+ *   first-cell height of eg2d_set_wall_spacing; its influence decays into the
+ *   interior (EG2D_PARAM_WALL_DECAY) and its updates are under-relaxed
+ *   (EG2D_PARAM_WALL_RELAXATION). It does not use the wall's curvature and
+ *   works on walls with corners. At convergence the first interior node
+ *   sits on the wall normal at the requested height (normal = perpendicular
+ *   to the wall's central difference r(k+1) - r(k-1)). On a single block the
+ *   end nodes next to a corner shared with another wall side are left free.
+ *   While it is active, the automatic relaxation (EG2D_PARAM_RELAXATION 0)
+ *   is 1: over-relaxing its strong terms diverges at sharp trailing edges.
+ * NONE removes either. */
+#define EG2D_ORTHO_NONE              0
+#define EG2D_ORTHO_MIDDLECOFF_THOMAS 1
+#define EG2D_ORTHO_WALL              2
+EG2D_API int eg2d_set_orthogonality(eg2d_grid *grid, int method);
+/* Makes `side` (EG2D_SIDE_*, one the topology has) a wall for
+ * EG2D_ORTHO_WALL: height > 0 is the first-cell height (distance of the first
+ * interior node from the wall along the normal, in the boundary's length
+ * unit); 0 asks for orthogonality only; a negative height makes the side no
+ * wall again. While no side has been made a wall, EG2D_ORTHO_WALL treats
+ * every side of the topology as a wall with height 0. May be called before
+ * or after eg2d_set_orthogonality. */
+EG2D_API int eg2d_set_wall_spacing(eg2d_grid *grid, int side, double height);
+
+/* Adaptive control from a parameter-space grid (seed 002): s, t are an ni*nj
+ * grid on the unit square (Fortran order), unfolded: s_xi t_eta - s_eta t_xi
+ * of one sign at every unknown node (O-grid: s may jump by a constant at
+ * the cut, e.g. run from 0 to 1 round the grid). The physical grid inherits
+ * its distribution: where the parameter grid is dense, so is the result.
+ * Both NULL removes it. Arrays are copied. */
+EG2D_API int eg2d_set_parameter_grid(eg2d_grid *grid, const double *s, const double *t);
+
+/* Seed 002's clustering maps of [0, 1] onto itself, sampled at n >= 2
+ * uniform points u_k = k/(n-1) into u_out[k]; increasing, u(0) = 0, u(1) = 1,
+ * with slope strength/(e^strength - 1) at the attracting points:
+ *   LINE       dense at a in (0, 1)                      (Cluster_X_Near, strength 3)
+ *   TWO_LINES  dense at a and b, 0 < a < b < 1           (Cluster_Two_Lines, 3)
+ *   BOUNDARIES dense at 0 and 1, split at a in (0, 1)    (Bound_Clust, 4)
+ * strength > 0 (0 = the seed's value above); b is ignored unless TWO_LINES.
+ * No grid: failures are reported by eg2d_last_error(NULL). */
+#define EG2D_CLUSTER_LINE       0
+#define EG2D_CLUSTER_TWO_LINES  1
+#define EG2D_CLUSTER_BOUNDARIES 2
+EG2D_API int eg2d_clustering_map(int kind, double a, double b, double strength, int n, double *u_out);
+/* The tensor-product parameter grid s(i, j) = u[i], t(i, j) = v[j] (ni*nj
+ * arrays s, t) from two increasing distributions u (ni values), v (nj). */
+EG2D_API int eg2d_tensor_parameter_grid(int ni, int nj, const double *u, const double *v, double *s, double *t);
+
+/* Weight-function adaptivity (seed 001): w per node (ni*nj, Fortran order,
+ * finite and > 0); larger w = denser grid. Along each index direction the
+ * spacing follows 1/w: Phi = 2 (w_e - w_w)/(w_w + 2 w_c + w_e), Psi likewise,
+ * which a one-dimensional grid satisfies exactly as w ds = const with
+ * midpoint weights. For solution-adaptive regridding, set the new weights
+ * and solve again from the current grid. NULL removes it. */
+EG2D_API int eg2d_set_weight(eg2d_grid *grid, const double *w);
 
 #ifdef __cplusplus
 }

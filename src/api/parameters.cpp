@@ -17,6 +17,10 @@ const ParameterInfo kParameters[] = {
     {EG2D_PARAM_DIVERGENCE_FACTOR, "divergence_factor", 10.0, 1e12, false, false, false, false,
      &Settings::divergence_factor},
     {EG2D_PARAM_FOLD_CHECK, "fold_check", 0.0, 1.0, false, false, true, false, &Settings::fold_check},
+    // Controls.
+    {EG2D_PARAM_WALL_DECAY, "wall_decay", 0.01, 10.0, false, false, false, false, &Settings::wall_decay},
+    {EG2D_PARAM_WALL_RELAXATION, "wall_relaxation", 0.0, 1.0, true, false, false, false,
+     &Settings::wall_relaxation},
     {EG2D_PARAM_HERMITE_SPACING, "hermite_spacing", 0.0, 10.0, true, false, false, false, &Settings::hermite_spacing},
     {EG2D_PARAM_SVG_QUALITY, "svg_quality", -1.0, 99.0, false, false, true, false, &Settings::svg_quality},
     // Approximate factorisation (src/solvers/af.cpp).

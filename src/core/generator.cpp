@@ -123,9 +123,22 @@ ResidualInfo Generator::residual() const {
 }
 
 Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
+    // The control terms are coefficients of the quasi-linear (Winslow/TTM)
+    // equation; Laplace has no place for them, and silently dropping the
+    // user's controls would hand back a grid they did not ask for.
+    if (system_ == System::Laplace && !controls_.empty())
+        fail(Failure::State, "control terms are set but the system is Laplace: controls need "
+                             "EG2D_SYSTEM_WINSLOW (or clear the controls)");
     ensure_ready();
     const ControlFields &fields = controls_.update(grid_, true);
-    Problem problem{grid_, system_, fields, settings};
+    // The automatic relaxation factor is an over-relaxation (seed 003's
+    // optimum for Laplace). While a wall control is updated between sweeps
+    // its strong first-order terms (rows that are not diagonally dominant
+    // next to a sharp convex corner, the NACA0012 trailing edge) make
+    // over-relaxation diverge: automatic means 1 then.
+    Settings run_settings = settings;
+    if (controls_.has_dynamic() && run_settings.relaxation == 0.0) run_settings.relaxation = 1.0;
+    Problem problem{grid_, system_, fields, run_settings};
     const double extent = grid_.extent();
     double r = eg2d::residual(system_, problem.level(), extent).value;
     double best = r;
@@ -133,7 +146,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
         if (stop_at_tolerance && r <= settings.tolerance) return RunEnd::Converged;
         saved_x_ = grid_.x;
         saved_y_ = grid_.y;
-        if (it > 0 && controls_.has_dynamic()) controls_.update(grid_, false);
+        if (controls_.has_dynamic()) controls_.advance(grid_, settings);
         solver_->iterate(problem);
         for (const auto &m : motions_) m->apply(grid_);  // sliding sides follow the interior
         const ResidualInfo ri = eg2d::residual(system_, problem.level(), extent);

@@ -11,6 +11,9 @@ struct Settings {
     double max_iterations = 100000;   // per eg2d_solve call
     double divergence_factor = 1e4;   // residual > factor * best of the run = divergence
     double fold_check = 1;            // 1: solve fails with Folded on a folded converged grid
+    // Wall orthogonality (src/controls/wall.cpp).
+    double wall_decay = 0.3;          // a: the wall control decays as exp(-a (m-1)) at depth m
+    double wall_relaxation = 0.1;     // under-relaxation of its updates, (0, 1]
     double hermite_spacing = 1.0;     // EG2D_INIT_HERMITE's alpha (seed 001 eq 2.6)
     double svg_quality = -1;          // EG2D_QUALITY_* colouring SVG cells, -1 none
 
