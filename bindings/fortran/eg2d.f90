@@ -67,6 +67,14 @@ module eg2d
     procedure :: write => grid_write
     procedure :: set_side_from_file => grid_set_side_from_file
     procedure :: set_side_curve => grid_set_side_curve
+    procedure :: add_line_source => grid_add_line_source
+    procedure :: add_point_source => grid_add_point_source
+    procedure :: clear_sources => grid_clear_sources
+    procedure :: set_source_arrays => grid_set_source_arrays
+    procedure :: set_orthogonality => grid_set_orthogonality
+    procedure :: set_wall_spacing => grid_set_wall_spacing
+    procedure :: set_parameter_grid => grid_set_parameter_grid
+    procedure :: set_weight => grid_set_weight
     final :: grid_final
   end type eg2d_grid_t
 
@@ -95,6 +103,7 @@ module eg2d
   public :: eg2d_get_parameter_bounds, eg2d_live_grids
   public :: eg2d_read_plot3d_grid, eg2d_read_point_file
   public :: eg2d_get_distribution, eg2d_get_first_cell_height
+  public :: eg2d_get_clustering_map, eg2d_get_tensor_parameter_grid
 
   ! Grids created through eg2d_grid_t and not yet freed (to check finalisation).
   integer, save :: live_grids = 0
@@ -587,6 +596,131 @@ contains
     call finish(self, eg2d_set_side_curve(self%handle, int(side, c_int), curve%handle, &
          int(distribution, c_int), p1, p2, f), status)
   end subroutine grid_set_side_curve
+
+  ! ---------------------------------------------------------------- control
+  ! Thompson's attraction of the lines direction = EG2D_XI / EG2D_ETA to `line`.
+  subroutine grid_add_line_source(self, direction, line, amplitude, decay, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: direction
+    real(c_double), intent(in) :: line, amplitude, decay
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_add_line_source(self%handle, int(direction, c_int), line, amplitude, decay), status)
+  end subroutine grid_add_line_source
+
+  subroutine grid_add_point_source(self, xi, eta, amplitude, decay, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    real(c_double), intent(in) :: xi, eta, amplitude, decay
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_add_point_source(self%handle, xi, eta, amplitude, decay), status)
+  end subroutine grid_add_point_source
+
+  subroutine grid_clear_sources(self, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_clear_sources(self%handle), status)
+  end subroutine grid_clear_sources
+
+  ! One array of shape (ni, nj), or a recorded failure (`name` names it).
+  logical function field_ok(self, where, name, a, ni, nj, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    character(*), intent(in) :: where, name
+    real(c_double), intent(in) :: a(:, :)
+    integer(c_int), intent(in) :: ni, nj
+    integer, intent(out), optional :: status
+    character(120) :: buf
+    field_ok = all(shape(a) == [ni, nj])
+    if (.not. field_ok) then
+      write (buf, '(a," is (",i0,",",i0,"): must be (ni,nj) = (",i0,",",i0,")")') name, shape(a), ni, nj
+      call fail(self, EG2D_ERR_ARGUMENT, where, trim(buf), status)
+    end if
+  end function field_ok
+
+  ! The user's P(ni,nj), Q(ni,nj) (seed 000's p1, p2); an absent one is zero,
+  ! both absent remove them.
+  subroutine grid_set_source_arrays(self, P, Q, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    real(c_double), intent(in), optional :: P(:, :), Q(:, :)
+    integer, intent(out), optional :: status
+    integer(c_int) :: ni, nj
+    if (.not. size_of(self, ni, nj, status)) return
+    if (present(P)) then
+      if (.not. field_ok(self, 'set_source_arrays', 'P', P, ni, nj, status)) return
+    end if
+    if (present(Q)) then
+      if (.not. field_ok(self, 'set_source_arrays', 'Q', Q, ni, nj, status)) return
+    end if
+    call finish(self, eg2d_set_source_arrays(self%handle, P, Q), status)
+  end subroutine grid_set_source_arrays
+
+  subroutine grid_set_orthogonality(self, method, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: method
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_set_orthogonality(self%handle, int(method, c_int)), status)
+  end subroutine grid_set_orthogonality
+
+  subroutine grid_set_wall_spacing(self, side, height, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: side
+    real(c_double), intent(in) :: height
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_set_wall_spacing(self%handle, int(side, c_int), height), status)
+  end subroutine grid_set_wall_spacing
+
+  ! Seed 002's parameter-space grid s(ni,nj), t(ni,nj); both absent remove it.
+  subroutine grid_set_parameter_grid(self, s, t, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    real(c_double), intent(in), optional :: s(:, :), t(:, :)
+    integer, intent(out), optional :: status
+    integer(c_int) :: ni, nj
+    if (.not. size_of(self, ni, nj, status)) return
+    if (present(s)) then
+      if (.not. field_ok(self, 'set_parameter_grid', 's', s, ni, nj, status)) return
+    end if
+    if (present(t)) then
+      if (.not. field_ok(self, 'set_parameter_grid', 't', t, ni, nj, status)) return
+    end if
+    call finish(self, eg2d_set_parameter_grid(self%handle, s, t), status)
+  end subroutine grid_set_parameter_grid
+
+  ! Weight-function adaptivity, w(ni,nj) > 0; absent removes it.
+  subroutine grid_set_weight(self, w, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    real(c_double), intent(in), optional :: w(:, :)
+    integer, intent(out), optional :: status
+    integer(c_int) :: ni, nj
+    if (.not. size_of(self, ni, nj, status)) return
+    if (present(w)) then
+      if (.not. field_ok(self, 'set_weight', 'w', w, ni, nj, status)) return
+    end if
+    call finish(self, eg2d_set_weight(self%handle, w), status)
+  end subroutine grid_set_weight
+
+  ! Seed 002's clustering map (EG2D_CLUSTER_*) sampled at size(u) points.
+  subroutine eg2d_get_clustering_map(kind, a, b, strength, u, status)
+    integer, intent(in) :: kind
+    real(c_double), intent(in) :: a, b, strength
+    real(c_double), intent(inout) :: u(:)
+    integer, intent(out), optional :: status
+    call settle(eg2d_clustering_map(int(kind, c_int), a, b, strength, int(size(u), c_int), u), &
+         eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
+  end subroutine eg2d_get_clustering_map
+
+  ! s(i,j) = u(i), t(i,j) = v(j): s, t must be (size(u), size(v)).
+  subroutine eg2d_get_tensor_parameter_grid(u, v, s, t, status)
+    real(c_double), intent(in) :: u(:), v(:)
+    real(c_double), intent(inout) :: s(:, :), t(:, :)
+    integer, intent(out), optional :: status
+    character(160) :: buf
+    if (any(shape(s) /= [size(u), size(v)]) .or. any(shape(t) /= [size(u), size(v)])) then
+      write (buf, '("tensor_parameter_grid: s is (",i0,",",i0,"), t (",i0,",",i0,"): must be (",i0,",",i0,")")') &
+           shape(s), shape(t), size(u), size(v)
+      call settle(EG2D_ERR_ARGUMENT, trim(buf), status)
+      return
+    end if
+    call settle(eg2d_tensor_parameter_grid(int(size(u), c_int), int(size(v), c_int), u, v, s, t), &
+         eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
+  end subroutine eg2d_get_tensor_parameter_grid
 
   ! ---------------------------------------------------------------- curves
   ! After a curve call: the thread's message on failure (curves have no grid).
