@@ -107,6 +107,23 @@ inline double first_cell_height(double yplus, double reynolds, double chord = 1)
     return h;
 }
 
+/* Seed 002's clustering map EG2D_CLUSTER_* sampled at n points. */
+inline std::vector<double> clustering_map(int kind, double a, double b, double strength, int n) {
+    std::vector<double> u(n > 0 ? static_cast<std::size_t>(n) : 0u);
+    detail::check(::eg2d_clustering_map(kind, a, b, strength, n, u.data()), nullptr);
+    return u;
+}
+/* s(i, j) = u[i], t(i, j) = v[j] into u.size()*v.size() arrays (Fortran order). */
+inline void tensor_parameter_grid(const std::vector<double> &u, const std::vector<double> &v, std::vector<double> &s,
+                                  std::vector<double> &t) {
+    std::vector<double> ss(u.size() * v.size()), ts(ss.size());
+    detail::check(::eg2d_tensor_parameter_grid(static_cast<int>(u.size()), static_cast<int>(v.size()), u.data(),
+                                               v.data(), ss.data(), ts.data()),
+                  nullptr);
+    s.swap(ss);
+    t.swap(ts);
+}
+
 /* A curve handle: move-only, freed by the destructor. Made by the static
  * functions; a function curve keeps its std::function alive with it. */
 class curve {
@@ -284,6 +301,25 @@ public:
     }
     void set_af_time_rule(double a, double b) { check(::eg2d_set_af_time_rule(g_, a, b)); }
 
+    /* Grid control (see eg2d.h). Arrays are ni*nj; an empty vector is NULL. */
+    void add_line_source(int direction, double line, double amplitude, double decay) {
+        check(::eg2d_add_line_source(g_, direction, line, amplitude, decay));
+    }
+    void add_point_source(double xi, double eta, double amplitude, double decay) {
+        check(::eg2d_add_point_source(g_, xi, eta, amplitude, decay));
+    }
+    void clear_sources() { check(::eg2d_clear_sources(g_)); }
+    void set_source_arrays(const std::vector<double> &P, const std::vector<double> &Q) {
+        check(::eg2d_set_source_arrays(g_, optional_nodes("set_source_arrays", P), optional_nodes("set_source_arrays", Q)));
+    }
+    void set_orthogonality(int method) { check(::eg2d_set_orthogonality(g_, method)); }
+    void set_wall_spacing(int side, double height) { check(::eg2d_set_wall_spacing(g_, side, height)); }
+    void set_parameter_grid(const std::vector<double> &s, const std::vector<double> &t) {
+        check(::eg2d_set_parameter_grid(g_, optional_nodes("set_parameter_grid", s),
+                                        optional_nodes("set_parameter_grid", t)));
+    }
+    void set_weight(const std::vector<double> &w) { check(::eg2d_set_weight(g_, optional_nodes("set_weight", w))); }
+
     /* An exception thrown by fn stops the run and is rethrown by iterate/solve.
      * An empty fn removes the monitor. */
     void set_monitor(monitor fn) {
@@ -376,6 +412,12 @@ private:
         if (side == EG2D_SIDE_JMIN || side == EG2D_SIDE_JMAX) return static_cast<std::size_t>(ni);
         if (side == EG2D_SIDE_IMIN || side == EG2D_SIDE_IMAX) return static_cast<std::size_t>(nj);
         return 0; /* unknown side: the library reports it */
+    }
+    /* NULL for an empty vector, else its data after the ni*nj size check. */
+    const double *optional_nodes(const char *what, const std::vector<double> &a) const {
+        if (a.empty()) return nullptr;
+        check_nodes(what, a, a);
+        return a.data();
     }
     void check_nodes(const char *what, const std::vector<double> &x, const std::vector<double> &y) const {
         const auto [ni, nj] = get_size();

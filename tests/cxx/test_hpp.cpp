@@ -206,6 +206,51 @@ int main(int argc, char **argv) {
         CHECK(throws([&] { q.set_side_curve(9, bottom); }, EG2D_ERR_ARGUMENT, "eg2d_set_side_curve"));
     }
 
+    // grid control, on the swan (17 x 13)
+    {
+        eg2d::grid c(17, 13);
+        set_swan(c, 17, 13);
+        c.set_tolerance(1e-12);
+        c.solve();
+        std::vector<double> x0, y0;
+        c.get_coordinates(x0, y0);
+        CHECK(throws([&] { c.add_line_source(5, 0, 1, 0.5); }, EG2D_ERR_ARGUMENT, "eg2d_add_line_source"));
+        c.add_line_source(EG2D_ETA, 0, 20, 0.5);
+        c.solve();
+        c.get_coordinates(x, y);
+        CHECK(y[8 + 17] < y0[8 + 17] - 1e-3);  // eta-lines pulled toward eta = 0
+        CHECK(throws([&] { c.add_point_source(4, 4, 1, -1); }, EG2D_ERR_ARGUMENT, "eg2d_add_point_source"));
+        c.add_point_source(4, 4, 1, 0.5);
+        c.clear_sources();
+        CHECK(throws([&] { c.set_source_arrays({}, std::vector<double>(5)); }, EG2D_ERR_ARGUMENT,
+                     "set_source_arrays: x has 5"));
+        c.set_source_arrays({}, std::vector<double>(17 * 13, 0.5));
+        c.set_source_arrays({}, {});
+        CHECK(throws([&] { c.set_orthogonality(7); }, EG2D_ERR_ARGUMENT, "eg2d_set_orthogonality"));
+        CHECK(throws([&] { c.set_wall_spacing(9, 0.1); }, EG2D_ERR_ARGUMENT, "eg2d_set_wall_spacing"));
+        c.set_wall_spacing(EG2D_SIDE_JMIN, 0.02);
+        c.set_orthogonality(EG2D_ORTHO_WALL);
+        c.set_max_iterations(20000);
+        c.solve();
+        c.get_coordinates(x, y);
+        CHECK(std::fabs(y[8 + 17] - 0.02) < 1e-6);  // the first cell height at the wall
+        c.set_orthogonality(EG2D_ORTHO_NONE);
+        CHECK(throws([] { eg2d::clustering_map(EG2D_CLUSTER_LINE, 1.5, 0, 0, 9); }, EG2D_ERR_ARGUMENT,
+                     "eg2d_clustering_map"));
+        const std::vector<double> u = eg2d::clustering_map(EG2D_CLUSTER_BOUNDARIES, 0.5, 0, 0, 17);
+        const std::vector<double> v = eg2d::clustering_map(EG2D_CLUSTER_BOUNDARIES, 0.5, 0, 0, 13);
+        CHECK(u.front() == 0 && u.back() == 1 && u[1] < 1.0 / 16);
+        std::vector<double> s, t;
+        eg2d::tensor_parameter_grid(u, v, s, t);
+        CHECK(s.size() == 17u * 13u && s[3 + 17 * 5] == u[3] && t[3 + 17 * 5] == v[5]);
+        c.set_parameter_grid(s, t);
+        CHECK(throws([&] { c.set_parameter_grid(s, std::vector<double>(3)); }, EG2D_ERR_ARGUMENT, "set_parameter_grid"));
+        c.set_parameter_grid({}, {});
+        c.set_weight(std::vector<double>(17 * 13, 1.0));
+        CHECK(throws([&] { c.set_weight(std::vector<double>(17 * 13, 0.0)); }, EG2D_ERR_ARGUMENT, "eg2d_set_weight"));
+        c.set_weight({});
+    }
+
     // the swan of the C library (tests/support/swan_write_c.c)
     if (argc > 1) {
         std::ifstream in(argv[1]);

@@ -366,3 +366,86 @@ def test_set_side_curve():
         with pytest.raises(eg2d.BoundaryError, match="eg2d_set_side_curve"):
             g.set_side_curve(eg2d.SIDE_JMIN, c, flags=eg2d.CURVE_REVERSE)
         g.set_side_curve(eg2d.SIDE_JMIN, c, flags=eg2d.CURVE_ORIENT)
+
+
+# ---- grid control
+def unit_square(n=9):
+    s = np.arange(n) / (n - 1)
+    g = eg2d.Grid(n, n)
+    g.set_side(eg2d.SIDE_JMIN, s, 0 * s)
+    g.set_side(eg2d.SIDE_IMAX, 1 + 0 * s, s)
+    g.set_side(eg2d.SIDE_JMAX, s, 1 + 0 * s)
+    g.set_side(eg2d.SIDE_IMIN, 0 * s, s)
+    g.set_tolerance(1e-12)
+    return g
+
+
+def test_sources_and_source_arrays():
+    with unit_square() as g:
+        g.solve()
+        _, y0 = g.get_coordinates()
+        with pytest.raises(eg2d.ArgumentError):
+            g.add_line_source(5, 0, 100, 0.2)
+        g.add_line_source(eg2d.ETA, 0, 1, 0.5)
+        g.solve()
+        assert g.get_coordinates()[1][4, 1] < y0[4, 1] - 1e-3
+        with pytest.raises(eg2d.ArgumentError):
+            g.add_point_source(4, 4, 1, -1)
+        g.add_point_source(4, 4, 1, 0.5)
+        g.clear_sources()
+        g.solve()
+        np.testing.assert_allclose(g.get_coordinates()[1], y0, atol=1e-9)
+        with pytest.raises(eg2d.ArgumentError, match=r"Q has shape \(9, 8\)"):
+            g.set_source_arrays(Q=np.zeros((9, 8)))
+        g.set_source_arrays(Q=np.full((9, 9), 0.5))
+        g.solve()
+        assert g.get_coordinates()[1][4, 4] > y0[4, 4] + 1e-3
+        with pytest.raises(eg2d.ArgumentError):
+            g.set_source_arrays(P=np.full((9, 9), np.inf))
+        g.set_source_arrays()
+
+
+def test_orthogonality_and_wall_spacing():
+    # The swan, whose TFI start is not a Winslow solution (on the unit square it
+    # is, and eg2d_solve then stops at iteration 0 before the wall control acts).
+    with swan(17, 13) as g:
+        with pytest.raises(eg2d.ArgumentError):
+            g.set_orthogonality(7)
+        with pytest.raises(eg2d.ArgumentError):
+            g.set_wall_spacing(9, 0.05)
+        g.set_wall_spacing(eg2d.SIDE_JMIN, 0.02)
+        g.set_orthogonality(eg2d.ORTHO_WALL)
+        g.set_max_iterations(20000)
+        g.solve()
+        x, y = g.get_coordinates()
+        assert abs(y[8, 1] - 0.02) < 1e-6 and abs(x[8, 1] - x[8, 0]) < 1e-6  # on the normal, at 0.02
+        g.set_orthogonality(eg2d.ORTHO_NONE)
+
+
+def test_parameter_grid_clustering_and_weights():
+    with pytest.raises(eg2d.ArgumentError):
+        eg2d.clustering_map(eg2d.CLUSTER_LINE, 1.5, 9)
+    u = eg2d.clustering_map(eg2d.CLUSTER_BOUNDARIES, 0.5, 9)
+    assert u[0] == 0 and u[-1] == 1 and np.all(np.diff(u) > 0)
+    assert u[1] - u[0] < 0.125 < u[4] - u[3]
+    s, t = eg2d.tensor_parameter_grid(np.arange(9) / 8, u)
+    assert s.shape == (9, 9) and s.flags["F_CONTIGUOUS"] and s[3, 6] == 3 / 8 and t[3, 6] == u[6]
+    with unit_square() as g:
+        g.solve()
+        x0, y0 = g.get_coordinates()
+        with pytest.raises(eg2d.ArgumentError, match=r"t has shape"):
+            g.set_parameter_grid(s, t[:, :8])
+        g.set_parameter_grid(s, t)
+        g.solve()
+        y = g.get_coordinates()[1]
+        assert y[4, 1] < y0[4, 1] - 1e-3 and y[4, 7] > y0[4, 7] + 1e-3
+        g.set_parameter_grid()
+        g.set_weight(np.ones((9, 9)))
+        g.solve()
+        x, y = g.get_coordinates()
+        assert abs(x - x0).max() + abs(y - y0).max() < 1e-9
+        w = np.ones((9, 9))
+        w[3, 3] = 0
+        with pytest.raises(eg2d.ArgumentError):
+            g.set_weight(w)
+        g.set_weight(None)

@@ -47,6 +47,17 @@ PROTOTYPES = {
     "eg2d_set_monitor": (c_int, [grid_p, monitor_fn, c_void_p]),
     "eg2d_iterate": (c_int, [grid_p, c_int, double_p]),
     "eg2d_solve": (c_int, [grid_p]),
+    # grid control
+    "eg2d_add_line_source": (c_int, [grid_p, c_int, c_double, c_double, c_double]),
+    "eg2d_add_point_source": (c_int, [grid_p, c_double, c_double, c_double, c_double]),
+    "eg2d_clear_sources": (c_int, [grid_p]),
+    "eg2d_set_source_arrays": (c_int, [grid_p, double_p, double_p]),
+    "eg2d_set_orthogonality": (c_int, [grid_p, c_int]),
+    "eg2d_set_wall_spacing": (c_int, [grid_p, c_int, c_double]),
+    "eg2d_set_parameter_grid": (c_int, [grid_p, double_p, double_p]),
+    "eg2d_clustering_map": (c_int, [c_int, c_double, c_double, c_double, c_int, double_p]),
+    "eg2d_tensor_parameter_grid": (c_int, [c_int, c_int, double_p, double_p, double_p, double_p]),
+    "eg2d_set_weight": (c_int, [grid_p, double_p]),
     # curves and distributions
     "eg2d_curve_polyline": (c_int, [c_int, double_p, double_p, POINTER(curve_p)]),
     "eg2d_curve_spline": (c_int, [c_int, double_p, double_p, POINTER(curve_p)]),

@@ -87,3 +87,20 @@ def first_cell_height(yplus, reynolds, chord=1.0):
     h = c_double()
     _check(lib.eg2d_first_cell_height(float(yplus), float(reynolds), float(chord), byref(h)))
     return h.value
+
+
+def clustering_map(kind, a, n, b=0.0, strength=0.0):
+    """Seed 002's clustering map CLUSTER_* of [0, 1] sampled at n points (numpy array)."""
+    u = np.empty(int(n))
+    _check(lib.eg2d_clustering_map(int(kind), float(a), float(b), float(strength), int(n), _dp(u)))
+    return u
+
+
+def tensor_parameter_grid(u, v):
+    """(s, t): numpy (len(u), len(v)) Fortran-order arrays, s[i, j] = u[i], t[i, j] = v[j]."""
+    u = np.ascontiguousarray(u, dtype=np.float64)
+    v = np.ascontiguousarray(v, dtype=np.float64)
+    s = np.empty((len(u), len(v)), order="F")
+    t = np.empty((len(u), len(v)), order="F")
+    _check(lib.eg2d_tensor_parameter_grid(len(u), len(v), _dp(u), _dp(v), _dp(s), _dp(t)))
+    return s, t

@@ -136,6 +136,46 @@ class Grid(Handle):
         """The Warming-Beam time rule of AF (seed 004 Table 1)."""
         self._check(lib.eg2d_set_af_time_rule(self._handle(), float(a), float(b)))
 
+    # ---- grid control
+    def add_line_source(self, direction, line, amplitude, decay):
+        """Thompson's attraction of the XI or ETA lines toward `line` (index units)."""
+        self._check(lib.eg2d_add_line_source(self._handle(), int(direction), float(line), float(amplitude),
+                                             float(decay)))
+
+    def add_point_source(self, xi, eta, amplitude, decay):
+        self._check(lib.eg2d_add_point_source(self._handle(), float(xi), float(eta), float(amplitude),
+                                              float(decay)))
+
+    def clear_sources(self):
+        self._check(lib.eg2d_clear_sources(self._handle()))
+
+    def _optional_fields(self, **arrays):
+        ni, nj = self.get_size()
+        return [None if a is None else _field(a, ni, nj, name) for name, a in arrays.items()]
+
+    def set_source_arrays(self, P=None, Q=None):
+        """The user's P, Q (ni, nj); None is zero; both None remove them."""
+        P, Q = self._optional_fields(P=P, Q=Q)
+        self._check(lib.eg2d_set_source_arrays(self._handle(), P if P is None else _ptr(P),
+                                               Q if Q is None else _ptr(Q)))
+
+    def set_orthogonality(self, method):
+        self._check(lib.eg2d_set_orthogonality(self._handle(), int(method)))
+
+    def set_wall_spacing(self, side, height):
+        self._check(lib.eg2d_set_wall_spacing(self._handle(), int(side), float(height)))
+
+    def set_parameter_grid(self, s=None, t=None):
+        """Seed 002's parameter-space grid s, t (ni, nj); both None remove it."""
+        s, t = self._optional_fields(s=s, t=t)
+        self._check(lib.eg2d_set_parameter_grid(self._handle(), s if s is None else _ptr(s),
+                                                t if t is None else _ptr(t)))
+
+    def set_weight(self, w):
+        """Weight-function adaptivity, w (ni, nj) > 0; None removes it."""
+        (w,) = self._optional_fields(w=w)
+        self._check(lib.eg2d_set_weight(self._handle(), w if w is None else _ptr(w)))
+
     # ---- running
     def set_monitor(self, fn):
         """fn(iteration, residual) after every iteration; a true result stops
