@@ -91,7 +91,7 @@ static void test_naca0012_o_grid(void **state) {
     assert_int_equal(eg2d_solve(g), EG2D_OK);
     assert_int_equal(eg2d_get_iterations(g, &iters), EG2D_OK);
     assert_int_equal(eg2d_get_residual(g, &res), EG2D_OK);
-    print_message("NACA0012 O-grid %dx%d: psor %d iterations, residual %.2e\n", ni, nj, iters, res);
+    print_message("NACA0012 O-grid %dx%d: %d iterations, residual %.2e\n", ni, nj, iters, res);
     assert_true(res <= 1e-9);
     check_unfolded(g);
     eg2d_destroy(g);
@@ -204,7 +204,7 @@ static void test_c_grid_wake_cut(void **state) {
         else te_cos = (ax * bx + ay * by) / (la * lb);
         worst_ratio = fmax(worst_ratio, fmax(la / lb, lb / la));
     }
-    print_message("C-grid NACA2412 %dx%d: psor %d iterations, residual %.2e, wake node moved %.3e; across the cut: "
+    print_message("C-grid NACA2412 %dx%d: %d iterations, residual %.2e, wake node moved %.3e; across the cut: "
                   "angle of the eta-line >= %.2f deg (%.2f deg next to the TE), cell ratio <= %.3f\n",
                   ni, nj, iters, res, moved, acos(worst_cos) * 180 / PI, acos(te_cos) * 180 / PI, worst_ratio);
     assert_true(res <= 1e-9);
@@ -238,12 +238,12 @@ static void test_c_grid_naca0012(void **state) {
     g = c_grid("0012", 24, 81, 33, EG2D_INIT_TFI, &x0, &y0);
     check_unfolded(g);
     assert_int_equal(eg2d_get_iterations(g, &iters), EG2D_OK);
-    print_message("C-grid NACA0012 129x33: psor %d iterations from linear TFI\n", iters);
+    print_message("C-grid NACA0012 129x33: %d iterations from linear TFI\n", iters);
     eg2d_destroy(g);
     g = c_grid("0012", 24, 81, 33, EG2D_INIT_HERMITE, &x0, &y0);
     check_unfolded(g);
     assert_int_equal(eg2d_get_iterations(g, &iters), EG2D_OK);
-    print_message("C-grid NACA0012 129x33: psor %d iterations from Hermite TFI\n", iters);
+    print_message("C-grid NACA0012 129x33: %d iterations from Hermite TFI\n", iters);
     eg2d_destroy(g);
 }
 
@@ -294,7 +294,7 @@ static void test_rose_in_circle(void **state) {
     assert_int_equal(eg2d_solve(g), EG2D_OK);
     check_unfolded(g);
     assert_int_equal(eg2d_get_iterations(g, &iters), EG2D_OK);
-    print_message("rose in circle 61x25: psor %d iterations\n", iters);
+    print_message("rose in circle 61x25: %d iterations\n", iters);
     eg2d_destroy(g);
     eg2d_curve_destroy(rose);
     eg2d_curve_destroy(circ);
