@@ -1,5 +1,5 @@
 /* Line SOR (EG2D_SOLVER_LSOR): the same grids as point SOR on the seed 003
- * domains, second order on the annulus O-grid with the branch cut solved
+ * domains, the annulus O-grid with the branch cut solved
  * implicitly (columns 0 and ni-1 stay the same points), Laplace exact on a
  * bilinear map, and a given relaxation factor honoured. */
 #include <math.h>
@@ -46,30 +46,6 @@ static void test_same_grid_as_psor(void **state) {
             assert_true(dist < 1e-10);
         }
     free(x1); free(y1); free(x2); free(y2);
-}
-
-/* r = 3 * 3^eta, theta = 2 pi xi; the cut column must be the same points. */
-static double annulus_error(int ni, int nj) {
-    double *x = alloc(ni * nj), *y = alloc(ni * nj), err;
-    solve("annulus", ni, nj, EG2D_SOLVER_LSOR, EG2D_SYSTEM_WINSLOW, 1e-13, x, y);
-    err = annulus_exact_error(ni, nj, x, y);
-    assert_true(cut_columns_equal(ni, nj, x, y));
-    free(x);
-    free(y);
-    return err;
-}
-
-static void test_annulus_second_order(void **state) {
-    const int ni[] = {17, 33, 65}, nj[] = {9, 17, 33};
-    double e[3];
-    int m;
-    (void)state;
-    for (m = 0; m < 3; ++m) e[m] = annulus_error(ni[m], nj[m]);
-    for (m = 1; m < 3; ++m) {
-        const double order = log(e[m - 1] / e[m]) / log(2.0);
-        print_message("lsor annulus %dx%d: error %.3e, observed order %.3f\n", ni[m], nj[m], e[m], order);
-        assert_true(order > 1.9 && order < 2.1);
-    }
 }
 
 /* Start with the cut column pushed off the solution: every sweep must keep
@@ -140,7 +116,6 @@ static void test_given_relaxation(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_same_grid_as_psor),
-        cmocka_unit_test(test_annulus_second_order),
         cmocka_unit_test(test_cut_moves_with_the_interior),
         cmocka_unit_test(test_given_relaxation),
     };

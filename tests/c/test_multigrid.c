@@ -1,5 +1,5 @@
-/* FAS multigrid (EG2D_SOLVER_MULTIGRID): the same grids as point SOR, second
- * order on the annulus O-grid, cycle counts that do not grow with the grid,
+/* FAS multigrid (EG2D_SOLVER_MULTIGRID): the same grids as point SOR (second
+ * order on the annulus is test_geometry_grids' every-solver loop), cycle counts that do not grow with the grid,
  * sizes that coarsen badly (odd, semicoarsened, not at all), every cycle
  * option, its parameters' checks, and that it is the default solver. */
 #include <math.h>
@@ -81,30 +81,6 @@ static void test_awkward_sizes(void **state) {
     check_same_as_psor("dome", 4, 4, EG2D_SYSTEM_WINSLOW);
     check_same_as_psor("annulus", 30, 9, EG2D_SYSTEM_WINSLOW); /* period 29 */
     check_same_as_psor("annulus", 21, 12, EG2D_SYSTEM_WINSLOW);
-}
-
-/* r = 3 * 3^eta, theta = 2 pi xi, at second order; the cut stays one column. */
-static double annulus_error(int ni, int nj) {
-    double *x = alloc(ni * nj), *y = alloc(ni * nj), err;
-    solve("annulus", ni, nj, EG2D_SOLVER_MULTIGRID, EG2D_SYSTEM_WINSLOW, 1e-13, x, y);
-    err = annulus_exact_error(ni, nj, x, y);
-    assert_true(cut_columns_equal(ni, nj, x, y));
-    free(x);
-    free(y);
-    return err;
-}
-
-static void test_annulus_second_order(void **state) {
-    const int ni[] = {17, 33, 65}, nj[] = {9, 17, 33};
-    double e[3];
-    int m;
-    (void)state;
-    for (m = 0; m < 3; ++m) e[m] = annulus_error(ni[m], nj[m]);
-    for (m = 1; m < 3; ++m) {
-        const double order = log(e[m - 1] / e[m]) / log(2.0);
-        print_message("multigrid annulus %dx%d: error %.3e, observed order %.3f\n", ni[m], nj[m], e[m], order);
-        assert_true(order > 1.9 && order < 2.1);
-    }
 }
 
 static double history[64];
@@ -239,7 +215,6 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_same_grid_as_psor),
         cmocka_unit_test(test_awkward_sizes),
-        cmocka_unit_test(test_annulus_second_order),
         cmocka_unit_test(test_cycles_do_not_grow),
         cmocka_unit_test(test_cycle_options),
         cmocka_unit_test(test_long_thin_grid),
