@@ -10,7 +10,7 @@
 //   solve L_c(u_c) = f_c  (recursively), then u_f += P (u_c - I u_f), bilinear.
 //
 // Defaults, W(2,1) with FMG (settings.hpp), chosen by measurement on the seed
-// 003 domains and the annulus (bench/mg_timing.c): with the over-relaxed
+// 003 domains and the annulus (bench/eg2d_bench): with the over-relaxed
 // zebra/line smoother, W(2,1) gives 0.01-0.11 per cycle at 65^2..1025^2 (the
 // dome: up to 0.18; its error sits in a strip along the strongly curved top,
 // and extra relaxation of the lines there does not remove it). V(2,1) is
