@@ -39,7 +39,10 @@ struct Cell {
         const int n = (m + 1) % 4, p = (m + 3) % 4;
         const double ax = x[n] - x[m], ay = y[n] - y[m], bx = x[p] - x[m], by = y[p] - y[m];
         const double cross = (ax * by - ay * bx) * orientation, dot = ax * bx + ay * by;
-        return std::atan2(cross, dot) * (180.0 / 3.14159265358979323846);
+        // Collinear edges (a straight-through corner, 180 degrees) give a zero
+        // cross product that may carry a sign: atan2(-0, -1) is -180, which
+        // would read as a folded corner (skewness 270). A zero turn is no fold.
+        return std::atan2(cross == 0.0 ? 0.0 : cross, dot) * (180.0 / 3.14159265358979323846);
     }
 };
 

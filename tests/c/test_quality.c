@@ -73,6 +73,29 @@ static void test_unit_square(void **state) {
     eg2d_destroy(g);
 }
 
+/* Cell (0, 0) with node (1, 1) moved to (2, 0): corner (1, 0) is a straight
+ * 180-degree corner, degenerate but not folded, so its skewness is 90 - in
+ * the grid and in its mirror image (left-handed), where the zero cross
+ * product carries the other sign. */
+static void test_straight_corner(void **state) {
+    double x[9], y[9], v[4];
+    int k, mirror;
+    (void)state;
+    for (mirror = 0; mirror < 2; ++mirror) {
+        eg2d_grid *g;
+        for (k = 0; k < 9; ++k) x[k] = k % 3, y[k] = k / 3;
+        x[4] = 2;
+        y[4] = 0;
+        for (k = 0; k < 9 && mirror; ++k) y[k] = -y[k]; /* left-handed */
+        g = grid3(x, y);
+        assert_int_equal(eg2d_get_cell_quality(g, EG2D_QUALITY_FOLDED_CELLS, v), EG2D_OK);
+        assert_near(v[0], 0, 0, "straight corner folded");
+        assert_int_equal(eg2d_get_cell_quality(g, EG2D_QUALITY_SKEWNESS, v), EG2D_OK);
+        assert_near(v[0], 90, TIGHT, mirror ? "straight corner skewness (mirrored)" : "straight corner skewness");
+        eg2d_destroy(g);
+    }
+}
+
 /* Node (i, j) at i (1, 0) + j (cos 30, sin 30): every cell a rhombus of unit
  * sides with corners of 30 and 150 degrees, area sin 30 = 1/2. */
 static void test_rhombus_30(void **state) {
@@ -298,6 +321,7 @@ static void test_cell_quality_errors(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_unit_square),        cmocka_unit_test(test_rhombus_30),
+        cmocka_unit_test(test_straight_corner),
         cmocka_unit_test(test_stretched_row),      cmocka_unit_test(test_bow_tie),
         cmocka_unit_test(test_converged_dome),     cmocka_unit_test(test_annulus_orthogonal),
         cmocka_unit_test(test_solve_reports_folds), cmocka_unit_test(test_cell_quality_errors),
