@@ -15,6 +15,17 @@ namespace {
 // Below this residual growth is never taken for divergence: round-off near a
 // converged grid can grow by large factors and still mean nothing.
 constexpr double kDivergenceFloor = 1e-2;
+// Smallest boundary extent L: below it the residual (a 3rd power of node
+// spacings) underflows to 0 and a TFI grid would pass as converged (found
+// by fuzz_api). The largest is bounded by kMaxCoordinate in grid.cpp.
+constexpr double kMinExtent = 1e-75;
+
+void check_extent(const Grid &g) {
+    const double L = g.extent();
+    if (!(L >= kMinExtent))
+        fail(Failure::Boundary, format("the boundary's extent (bounding-box diagonal) is %g, below %g: the points "
+                                       "(nearly) coincide, or the domain needs scaling", L, kMinExtent));
+}
 
 std::string missing_sides(const Grid &g) {
     std::string s;
@@ -61,6 +72,7 @@ void Generator::initialize(int method) {
     if (!m) fail(Failure::Argument, format("initialisation method %d: no such method", method));
     if (!grid_.boundary_complete())
         fail(Failure::State, format("the boundary is not complete: side %s not set", missing_sides(grid_).c_str()));
+    check_extent(grid_);
     Grid next(grid_);
     m->fill(next);
     check_finite("initial x", next.x.data(), next.size());
@@ -102,6 +114,7 @@ void Generator::ensure_ready() {
     if (!grid_.boundary_complete())
         fail(Failure::State,
              format("the boundary is not complete: side %s not set", missing_sides(grid_).c_str()));
+    check_extent(grid_);
     if (!grid_.initialized()) initialize(EG2D_INIT_TFI);
 }
 

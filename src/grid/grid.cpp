@@ -12,6 +12,8 @@ namespace eg2d {
 namespace {
 // Relative tolerance on the domain size for corners that must coincide.
 constexpr double kCornerTolerance = 1e-8;
+// Largest accepted |coordinate|: (2e75)^4 is still far below DBL_MAX.
+constexpr double kMaxCoordinate = 1e75;
 
 // Index of the p-th point of side s (increasing index along the side).
 std::size_t side_index(int ni, int nj, Side s, int p) {
@@ -46,9 +48,15 @@ const char *side_name(Side s) {
 }
 
 void check_finite(const char *what, const double *v, std::size_t n) {
-    for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t k = 0; k < n; ++k) {
         if (!std::isfinite(v[k]))
             fail(Failure::Argument, format("%s[%zu] = %g: coordinates must be finite", what, k, v[k]));
+        // The operator squares and multiplies coordinate differences (J^2 is a
+        // 4th power): beyond this magnitude they overflow to Inf (found by fuzz_api).
+        if (std::fabs(v[k]) > kMaxCoordinate)
+            fail(Failure::Argument, format("%s[%zu] = %g: coordinates must be within +-%g (the metric terms "
+                                           "would overflow); scale the domain", what, k, v[k], kMaxCoordinate));
+    }
 }
 
 Grid::Grid(int ni, int nj) : ni_(ni), nj_(nj), connectivity_(ni, nj, Topology::Single) {
