@@ -68,6 +68,22 @@ static int set_square(eg2d_grid *g, double s) {
     return EG2D_OK;
 }
 
+/* A triangle: IMIN has zero length (all its points at (0, 0)), JMAX is
+ * the diagonal from (0, 0) to (1, 1). */
+static int set_triangle(eg2d_grid *g) {
+    double x[N], y[N];
+    int p, rc;
+    unit_side(EG2D_SIDE_JMIN, x, y);
+    rc = eg2d_set_side(g, EG2D_SIDE_JMIN, x, y);
+    unit_side(EG2D_SIDE_IMAX, x, y);
+    rc = rc ? rc : eg2d_set_side(g, EG2D_SIDE_IMAX, x, y);
+    unit_side(EG2D_SIDE_JMAX, x, y);
+    for (p = 0; p < N; ++p) y[p] = x[p];
+    rc = rc ? rc : eg2d_set_side(g, EG2D_SIDE_JMAX, x, y);
+    for (p = 0; p < N; ++p) x[p] = y[p] = 0;
+    return rc ? rc : eg2d_set_side(g, EG2D_SIDE_IMIN, x, y);
+}
+
 /* JMIN of the unit square with point p set to (px, py). */
 static int jmin_with(eg2d_grid *g, int p, double px, double py) {
     double x[N], y[N];
@@ -185,6 +201,8 @@ typedef enum {
     S_OGRID,  /* a fresh N x N grid with the O topology */
     S_TINY,   /* the square of side 1e-100 */
     S_POINT,  /* the square of side 0: every boundary point at (0, 0) */
+    S_TRIANGLE, /* set_triangle */
+    S_DUPLICATE, /* the unit square with JMIN's points 3 and 4 the same */
     S_BIG     /* a 1000 x 1000 grid with the quad boundary */
 } setup_kind;
 
@@ -235,9 +253,10 @@ static const bad_input rows[] = {
     {"NaN on the boundary ring", "eg2d_set_boundary(g, x, y), IMIN x[4] = NaN", S_FRESH, r_boundary_nan,
      EG2D_ERR_ARGUMENT, "eg2d_set_boundary: IMIN x[4] = nan: coordinates must be finite", 0},
     {"open curve on an O-grid", "eg2d_set_side(g, JMIN, x, y), first != last", S_OGRID, r_ogrid_open,
-     EG2D_ERR_BOUNDARY, "eg2d_set_side: O-grid side JMIN is not closed*", 0},
+     EG2D_ERR_BOUNDARY, "eg2d_set_side: O-grid side JMIN is not closed: first point (0, 0) vs last (1, 0)", 0},
     {"a side the O-grid does not have", "eg2d_set_side(g, IMIN, x, y)", S_OGRID, r_ogrid_imin,
-     EG2D_ERR_ARGUMENT, "eg2d_set_side: *IMIN*", 0},
+     EG2D_ERR_ARGUMENT, "eg2d_set_side: side IMIN: an O-grid has only the sides JMIN (inner) and JMAX (outer); IMIN/IMAX is its "
+     "periodic cut", 0},
     {"NaN inside a start grid", "eg2d_set_coordinates(g, x, y), y[40] = NaN", S_INIT, r_coords_nan,
      EG2D_ERR_ARGUMENT, "eg2d_set_coordinates: y[40] = nan: coordinates must be finite", 0},
     {"initialise before the boundary", "eg2d_initialize(g, EG2D_INIT_TFI)", S_FRESH, r_init_no_boundary,
@@ -275,11 +294,12 @@ static const bad_input rows[] = {
     {"iterate before the boundary", "eg2d_iterate(g, 1, NULL)", S_FRESH, r_iterate_early, EG2D_ERR_STATE,
      "eg2d_iterate: the boundary is not complete: side JMIN, IMAX, JMAX, IMIN not set", 0},
     {"coordinates before the interior", "eg2d_get_coordinates(g, x, y)", S_SQUARE, r_coords_early,
-     EG2D_ERR_STATE, "eg2d_get_coordinates: *no interior yet*", 0},
+     EG2D_ERR_STATE, "eg2d_get_coordinates: coordinates: the grid has a boundary but no interior yet: call eg2d_initialize, "
+     "eg2d_iterate or eg2d_solve first", 0},
     {"NULL output arrays", "eg2d_get_coordinates(g, NULL, NULL)", S_INIT, r_coords_null, EG2D_ERR_ARGUMENT,
      "eg2d_get_coordinates: x and y are both NULL", 0},
     {"unknown quality metric", "eg2d_get_quality(g, 999, &v)", S_INIT, r_quality_999, EG2D_ERR_ARGUMENT,
-     "eg2d_get_quality: metric = 999*", 0},
+     "eg2d_get_quality: metric = 999: no such quality metric", 0},
     {"iteration limit reached", "eg2d_solve(g), max_iterations = 1", S_VALLEY, r_not_converged,
      EG2D_ERR_NOT_CONVERGED, "eg2d_solve: psor did not converge in 1 iterations: residual * > tolerance 1e-08",
      KEEPS_WORK},
@@ -315,6 +335,10 @@ static const bad_input rows[] = {
      "eg2d_solve: the converged grid has * folded cells; the first is cell (*, *) (cells are numbered by their "
      "lowest node)",
      KEEPS_WORK},
+    {"a zero-length side (IMIN a single point: a triangle)", "eg2d_solve(g)", S_TRIANGLE, r_solve, EG2D_OK,
+     "", KEEPS_WORK},
+    {"a duplicate point in a side", "eg2d_solve(g), JMIN point 4 = point 3", S_DUPLICATE, r_solve, EG2D_OK, "",
+     KEEPS_WORK},
     {"an allocation during a call fails (1000 x 1000, 4 MB margin)", "eg2d_initialize(g, EG2D_INIT_TFI)", S_BIG,
      r_init_oom, EG2D_ERR_MEMORY, "eg2d_initialize: out of memory", MEMORY_LIMIT},
 };
@@ -322,6 +346,7 @@ static const bad_input rows[] = {
 
 static const char *code_name(int code) {
     switch (code) {
+    case EG2D_OK: return "EG2D_OK (accepted)";
     case EG2D_ERR_ARGUMENT: return "EG2D_ERR_ARGUMENT";
     case EG2D_ERR_MEMORY: return "EG2D_ERR_MEMORY";
     case EG2D_ERR_BOUNDARY: return "EG2D_ERR_BOUNDARY";
@@ -364,6 +389,8 @@ static int setup(const bad_input *r, eg2d_grid *g) {
     case S_OGRID: return eg2d_set_topology(g, EG2D_TOPO_O);
     case S_TINY: return set_square(g, 1e-100);
     case S_POINT: return set_square(g, 0);
+    case S_TRIANGLE: return set_triangle(g);
+    case S_DUPLICATE: return set_square(g, 1) || jmin_with(g, 4, 0.375, 0);
     case S_BIG: return domain_set(g, "quad");
     }
     return EG2D_ERR_ARGUMENT;
@@ -473,7 +500,7 @@ static int check_row(const bad_input *r) {
     if ((r->flags & MEMORY_LIMIT) && address_space_limit(r->setup == S_NONE ? 64u << 20 : 4u << 20)) return 1;
     rc = r->run(g);
     if (r->flags & MEMORY_LIMIT) address_space_unlimited();
-    message = eg2d_last_error(g);
+    message = rc == EG2D_OK ? "" : eg2d_last_error(g);
     if (rc != r->code)
         bad = failed("returned %d (%s), expected %s: \"%s\"", rc, code_name(rc), code_name(r->code), message);
     else if (!matches(r->message, message))
@@ -605,9 +632,10 @@ static void print_table(void) {
     puts("| Bad input | Call | Returns | Message (`*`: a value the numerics decide) |");
     puts("|---|---|---|---|");
     for (k = 0; k < NROWS; ++k)
-        printf("| %s%s | `%s` | %s | `%s` |\n", rows[k].input,
+        printf("| %s%s | `%s` | %s | %s%s%s |\n", rows[k].input,
                rows[k].flags & MEMORY_LIMIT ? " (setrlimit in a child)" : "", rows[k].call,
-               code_name(rows[k].code), rows[k].message);
+               code_name(rows[k].code), *rows[k].message ? "`" : "", *rows[k].message ? rows[k].message : "(none)",
+               *rows[k].message ? "`" : "");
 }
 
 int main(int argc, char **argv) {
