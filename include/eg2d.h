@@ -199,7 +199,7 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
 /* Generic parameters, zstd-style: every setting has an id, bounds and a
  * default; the typed setters above are shorthands for these. Values are
  * doubles; an integer parameter takes only whole values. Ids are fixed and
- * grouped with gaps: 0-99 run, 100-199 solvers, 200-299 controls. */
+ * grouped with gaps: 0-99 run, 100-199 solvers, 200-299 controls, 300-399 output. */
 #define EG2D_PARAM_RELAXATION         0  /* (0, 2), 0 = automatic           */
 #define EG2D_PARAM_TOLERANCE          1  /* (0, 1),  default 1e-8           */
 #define EG2D_PARAM_MAX_ITERATIONS     2  /* [1, 1e9], default 100000        */
@@ -207,6 +207,9 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
                                             the best of the run (and above 1e-2) is divergence */
 #define EG2D_PARAM_FOLD_CHECK         4  /* 1 (default): eg2d_solve returns EG2D_ERR_FOLDED when
                                             the converged grid has folded cells; 0: it does not */
+#define EG2D_PARAM_SVG_QUALITY      300  /* output 300-399. EG2D_FORMAT_SVG colours cells by this
+                                            EG2D_QUALITY_* metric (one with per-cell values);
+                                            -1 (default): no colouring */
 EG2D_API int eg2d_set_parameter(eg2d_grid *grid, int param, double value);
 EG2D_API int eg2d_get_parameter(const eg2d_grid *grid, int param, double *value);
 /* Bounds and default of a parameter, without a grid. */
@@ -243,13 +246,136 @@ EG2D_API int eg2d_get_residual(const eg2d_grid *grid, double *residual);
 /* Iterations done since the grid was last initialised or given coordinates. */
 EG2D_API int eg2d_get_iterations(const eg2d_grid *grid, int *iterations);
 
-/* Scalar quality summaries of the current grid. A cell is folded when one of
- * its corners turns against the grid's orientation (left- and right-handed
- * grids are both legal; the orientation is the sign of the total area). */
-#define EG2D_QUALITY_FOLDED_CELLS 0  /* number of folded cells */
+/*=====================================================================
+ * Quality
+ *===================================================================*/
+/* Quality of the current grid (it must be initialised). Cell (i, j),
+ * i < ni-1, j < nj-1, has the corners (i,j), (i+1,j), (i+1,j+1), (i,j+1);
+ * per-cell arrays hold (ni-1)*(nj-1) values, cell (i, j) at i + (ni-1)*j.
+ * A cell is folded when one of its corners turns against the grid's
+ * orientation (left- and right-handed grids are both legal; the orientation
+ * is the sign of the total area). eg2d_solve fails with EG2D_ERR_FOLDED when
+ * the converged grid has a folded cell, naming the first one, unless
+ * EG2D_PARAM_FOLD_CHECK is 0; the grid is kept, so these metrics can then
+ * show where. Angles are in degrees. Ids are fixed, grouped with gaps. */
+#define EG2D_QUALITY_FOLDED_CELLS 0  /* number of folded cells; per cell 1 (folded) or 0 */
 #define EG2D_QUALITY_MIN_AREA     1  /* smallest cell area, signed by the grid's orientation:
-                                        negative for an inverted cell */
+                                        negative for an inverted cell; per cell: the area */
+#define EG2D_QUALITY_MAX_AREA     2  /* largest cell area; per cell: the area (as MIN_AREA) */
+#define EG2D_QUALITY_SKEWNESS    10  /* largest deviation of a corner angle from 90 degrees;
+                                        angles are signed by the orientation, so a folded
+                                        corner gives more than 90. Unit square 0, a rhombus
+                                        with 30 degree corners 60 */
+#define EG2D_QUALITY_ASPECT_RATIO 20 /* largest over cells of max(wi, wj) / min(wi, wj), where
+                                        wi is the mean of the cell's two edges along i, wj
+                                        along j (1 for a square or a rhombus) */
+#define EG2D_QUALITY_SMOOTHNESS_I 30 /* largest ratio (>= 1) of the i-widths wi of two cells
+                                        neighbouring in i (the stretching ratio); per cell: the
+                                        largest ratio to its i-neighbours (O-grid: across the cut) */
+#define EG2D_QUALITY_SMOOTHNESS_J 31 /* the same with wj, in j */
+/* Orthogonality at a side: at each boundary node (corners excluded; on an
+ * O-grid JMIN and JMAX are closed and every node counts once) the deviation
+ * from 90 degrees of the angle between the boundary's tangent (central
+ * difference) and the grid line leaving the node. The largest is
+ * ORTHO_MAX_JMIN + side, the mean ORTHO_MEAN_JMIN + side (side an
+ * EG2D_SIDE_*). Summaries only: no per-cell values. */
+#define EG2D_QUALITY_ORTHO_MAX_JMIN  40
+#define EG2D_QUALITY_ORTHO_MAX_IMAX  41
+#define EG2D_QUALITY_ORTHO_MAX_JMAX  42
+#define EG2D_QUALITY_ORTHO_MAX_IMIN  43
+#define EG2D_QUALITY_ORTHO_MEAN_JMIN 50
+#define EG2D_QUALITY_ORTHO_MEAN_IMAX 51
+#define EG2D_QUALITY_ORTHO_MEAN_JMAX 52
+#define EG2D_QUALITY_ORTHO_MEAN_IMIN 53
+/* The scalar summary of a metric. An orthogonality metric of a side the
+ * topology lacks (IMIN/IMAX of an O-grid) is EG2D_ERR_ARGUMENT. */
 EG2D_API int eg2d_get_quality(const eg2d_grid *grid, int metric, double *value);
+/* The per-cell values of a metric into values[(ni-1)*(nj-1)];
+ * EG2D_ERR_ARGUMENT for a metric without per-cell values (orthogonality). */
+EG2D_API int eg2d_get_cell_quality(const eg2d_grid *grid, int metric, double *values);
+
+/*=====================================================================
+ * Files
+ *===================================================================*/
+/* Writes the current grid (it must be initialised) to `path`. The file is
+ * written to a temporary in the same directory and renamed over `path` only
+ * when complete: a failed write never leaves a half-written file under
+ * `path` (an existing file there is kept). A file that cannot be written is
+ * EG2D_ERR_IO with the path and the system's reason.
+ *
+ * Plot3D (whole grid, "xyz" file). EG2D_FORMAT_PLOT3D writes the 2D form
+ * as a Fortran-unformatted sequential file (4-byte record markers before and
+ * after each record), little-endian, 8-byte reals:
+ *     record 1: ni nj                      (int32)
+ *     record 2: x(1..ni*nj) y(1..ni*nj)    (Fortran order)
+ * EG2D_FORMAT_PLOT3D_ASCII writes the same numbers as text. Variants are
+ * flags OR-ed into either id (they are not format ids of their own):
+ *   EG2D_PLOT3D_3D     the 3D form with one k-plane: "ni nj 1", then x, y and
+ *                      z = 0. Many tools (Pointwise's default, VTK without
+ *                      TwoDimensionalGeometry) expect this one; 2D readers
+ *                      (Construct2D's output, VTK with it) expect the 2D one.
+ *   EG2D_PLOT3D_MULTI  the multi-grid header: a record "1" (the number of
+ *                      grids) before the dimensions.
+ *   EG2D_PLOT3D_SINGLE 4-byte reals (binary only).
+ *   EG2D_PLOT3D_BIG_ENDIAN big-endian markers, integers and reals (binary only).
+ *   EG2D_PLOT3D_NO_MARKERS a C stream ("binary" rather than "unformatted" in
+ *                      Pointwise): the same numbers without record markers.
+ * e.g. eg2d_write(g, "grid.x", EG2D_FORMAT_PLOT3D | EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI).
+ *
+ * EG2D_FORMAT_VTS: VTK XML StructuredGrid (ASCII, 17 significant digits),
+ * points with z = 0 and every per-cell quality metric as cell data (arrays
+ * "folded", "area", "skewness", "aspect_ratio", "smoothness_i", "smoothness_j").
+ * EG2D_FORMAT_CGNS: one base (cell dimension 2, physical dimension 2), one
+ * structured zone "eg2d" with CoordinateX, CoordinateY. It is an optional
+ * part: libeg2d loads the plugin libeg2d_cgns.so (built when libcgns is
+ * found, installed next to libeg2d.so; EG2D_PLUGIN_DIR overrides where it is
+ * looked for) when this format is asked for, so that libeg2d itself never
+ * depends on libcgns; without the plugin the call is EG2D_ERR_UNSUPPORTED.
+ * EG2D_FORMAT_GMV: GMV ASCII ("gmvinput ascii", nodes with z = 0, quad
+ * cells, the per-cell metrics as cell variables), seed 002's format.
+ * EG2D_FORMAT_MATLAB: a Matlab/Octave script that sets xl(i,j), yl(i,j)
+ * (1-based, 17 digits) and plots the grid with the boundary in red, seed 002.
+ * EG2D_FORMAT_SVG: a picture for a browser: grid lines, the boundary drawn
+ * thicker, and cells coloured by the metric EG2D_PARAM_SVG_QUALITY when it
+ * is set (blue = best to red = worst of the grid, with a legend). */
+#define EG2D_FORMAT_PLOT3D       0
+#define EG2D_FORMAT_PLOT3D_ASCII 1
+#define EG2D_FORMAT_VTS          2
+#define EG2D_FORMAT_CGNS         3
+#define EG2D_FORMAT_GMV          4
+#define EG2D_FORMAT_MATLAB       5
+#define EG2D_FORMAT_SVG          6
+#define EG2D_PLOT3D_3D         0x100
+#define EG2D_PLOT3D_MULTI      0x200
+#define EG2D_PLOT3D_SINGLE     0x400
+#define EG2D_PLOT3D_BIG_ENDIAN 0x800
+#define EG2D_PLOT3D_NO_MARKERS 0x1000
+EG2D_API int eg2d_write(const eg2d_grid *grid, const char *path, int format);
+
+/* Reads grid `block` (0-based) of a Plot3D whole-grid file of any variant
+ * above, detecting which it holds: ASCII or Fortran-unformatted binary
+ * (either byte order, 4- or 8-byte reals) or C stream binary, 2D or 3D with one k-plane (z is
+ * ignored), single- or multi-grid. Gives the variant in *format (an
+ * EG2D_FORMAT_PLOT3D* id with its EG2D_PLOT3D_* flags), the number of grids
+ * in *nblocks and the block's size in *ni, *nj (each pointer may be NULL).
+ * x and y (ni*nj each, Fortran order) may both be NULL to ask the size
+ * first; the arrays can go to eg2d_set_coordinates as a start grid (from
+ * Construct2D, Pointwise, or eg2d). A file that is none of these, a 3D
+ * block with nk > 1 or a truncated file is EG2D_ERR_IO naming the path and
+ * what was found. Errors are reported by eg2d_last_error(NULL). */
+EG2D_API int eg2d_read_plot3d(const char *path, int block, int *format, int *nblocks, int *ni, int *nj,
+                              double *x, double *y);
+
+/* Point files: plain text, one point "x y" per line (spaces, tabs or a comma
+ * between), '#' starts a comment, blank lines are skipped. A line that is not
+ * two finite numbers is EG2D_ERR_IO naming the path, the line number and the
+ * text. eg2d_read_points gives the number of points in *n and, when x and y
+ * are not NULL, copies at most `capacity` of them (more is EG2D_ERR_ARGUMENT).
+ * Errors are reported by eg2d_last_error(NULL). */
+EG2D_API int eg2d_read_points(const char *path, int capacity, int *n, double *x, double *y);
+/* Sets a side from a point file (as eg2d_set_side); the file must hold
+ * exactly as many points as the side has (ni or nj), else EG2D_ERR_BOUNDARY. */
+EG2D_API int eg2d_set_side_from_file(eg2d_grid *grid, int side, const char *path);
 
 #ifdef __cplusplus
 }

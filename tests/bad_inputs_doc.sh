@@ -20,8 +20,9 @@ check)
     ;;
 update)
     tmp=$(mktemp)
-    awk -v b="$begin" -v e="$end" -v t="$generated" '
-        $0 == b { print; print t; skip = 1; next }
+    # The table goes through the environment: awk -v would expand its \n.
+    TABLE=$generated awk -v b="$begin" -v e="$end" '
+        $0 == b { print; print ENVIRON["TABLE"]; skip = 1; next }
         $0 == e { skip = 0 }
         !skip { print }' "$doc" > "$tmp"
     mv "$tmp" "$doc"

@@ -33,35 +33,56 @@ inline void require_finite(double v, const char *name) {
     if (!std::isfinite(v)) fail(Failure::Argument, format("%s = %g: must be finite", name, v));
 }
 
+// Runs body() and turns an exception into a status and a message.
+template <class Body>
+int capture(std::string &message, Body &&body) noexcept {
+    try {
+        body();
+        return EG2D_OK;
+    } catch (const Error &e) {
+        message = e.what();
+        return status_of(e.failure());
+    } catch (const std::bad_alloc &) {
+        message = "out of memory";
+        return EG2D_ERR_MEMORY;
+    } catch (const std::exception &e) {
+        message = std::string("internal error: ") + e.what();
+    } catch (...) {
+        message = "internal error: unknown exception";
+    }
+    return EG2D_ERR_ARGUMENT;
+}
+
 // Runs body(); records the message of a failure on the grid (or, for a NULL
 // grid, on the thread) as "function: message" and returns its code.
 template <class Body>
 int guard(const eg2d_grid *grid, const char *function, Body &&body) noexcept {
     std::string message;
-    int status = EG2D_OK;
-    try {
+    const int status = capture(message, [&] {
         if (!grid) fail(Failure::Argument, "grid is NULL");
         body();
-        return EG2D_OK;
-    } catch (const Error &e) {
-        status = status_of(e.failure());
-        message = e.what();
-    } catch (const std::bad_alloc &) {
-        status = EG2D_ERR_MEMORY;
-        message = "out of memory";
-    } catch (const std::exception &e) {
-        status = EG2D_ERR_ARGUMENT;
-        message = std::string("internal error: ") + e.what();
-    } catch (...) {
-        status = EG2D_ERR_ARGUMENT;
-        message = "internal error: unknown exception";
-    }
+    });
+    if (status == EG2D_OK) return status;
     try {
         const std::string text = std::string(function) + ": " + message;
         if (grid) grid->last_error = text;
         else set_thread_error(text);
     } catch (...) {
         // No memory for the message: the status code still says what happened.
+    }
+    return status;
+}
+
+// The same for a call that has no grid (file readers): the message goes to
+// the thread, for eg2d_last_error(NULL).
+template <class Body>
+int guard_without_grid(const char *function, Body &&body) noexcept {
+    std::string message;
+    const int status = capture(message, body);
+    if (status == EG2D_OK) return status;
+    try {
+        set_thread_error(std::string(function) + ": " + message);
+    } catch (...) {
     }
     return status;
 }

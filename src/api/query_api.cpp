@@ -1,5 +1,6 @@
 // Queries: size, coordinates, residual, iterations, quality.
 #include <algorithm>
+#include <vector>
 
 #include "api/handle.hpp"
 #include "quality/quality.hpp"
@@ -48,6 +49,21 @@ EG2D_API int eg2d_get_quality(const eg2d_grid *grid, int metric, double *value) 
         require(m != nullptr, format("metric = %d: no such quality metric", metric));
         grid->gen.require_initialized("quality");
         *value = m->summary(grid->gen.grid());
+    });
+}
+
+EG2D_API int eg2d_get_cell_quality(const eg2d_grid *grid, int metric, double *values) {
+    return guard(grid, "eg2d_get_cell_quality", [&] {
+        require_ptr(values, "values");
+        const QualityMetric *m = find_quality_metric(metric);
+        require(m != nullptr, format("metric = %d: no such quality metric", metric));
+        require(m->cells != nullptr,
+                format("metric = %d (%s): a boundary summary with no per-cell values", metric, m->name));
+        grid->gen.require_initialized("quality");
+        const Grid &g = grid->gen.grid();
+        std::vector<double> v(static_cast<std::size_t>(g.ni() - 1) * static_cast<std::size_t>(g.nj() - 1));
+        m->cells(g, v.data());
+        std::copy(v.begin(), v.end(), values);
     });
 }
 

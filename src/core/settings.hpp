@@ -11,6 +11,7 @@ struct Settings {
     double max_iterations = 100000;   // per eg2d_solve call
     double divergence_factor = 1e4;   // residual > factor * best of the run = divergence
     double fold_check = 1;            // 1: solve fails with Folded on a folded converged grid
+    double svg_quality = -1;          // EG2D_QUALITY_* colouring SVG cells, -1 none
 };
 
 }  // namespace eg2d

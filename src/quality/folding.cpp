@@ -5,36 +5,38 @@
 #include <algorithm>
 #include <limits>
 
+#include "quality/cell.hpp"
 #include "quality/quality.hpp"
 
 namespace eg2d {
 
-FoldSummary fold_summary(const Grid &g) {
-    const int ni = g.ni(), nj = g.nj();
-    const double *x = g.x.data(), *y = g.y.data();
-    auto k = [ni](int i, int j) { return static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * j; };
+namespace {
+bool is_folded(const Cell &c, int orientation) {
+    for (int m = 0; m < 4; ++m) {
+        const int n = (m + 1) % 4, p = (m + 3) % 4;
+        const double turn = (c.x[n] - c.x[m]) * (c.y[p] - c.y[m]) - (c.y[n] - c.y[m]) * (c.x[p] - c.x[m]);
+        if (turn * orientation < 0.0) return true;
+    }
+    return false;
+}
+}  // namespace
+
+int grid_orientation(const Grid &g) {
     double total = 0.0;
-    for (int j = 0; j < nj - 1; ++j)
-        for (int i = 0; i < ni - 1; ++i) {
-            const std::size_t a = k(i, j), b = k(i + 1, j), c = k(i + 1, j + 1), d = k(i, j + 1);
-            total += 0.5 * ((x[c] - x[a]) * (y[d] - y[b]) - (y[c] - y[a]) * (x[d] - x[b]));
-        }
+    for (int j = 0; j < g.nj() - 1; ++j)
+        for (int i = 0; i < g.ni() - 1; ++i) total += Cell::at(g, i, j).area();
+    return total < 0.0 ? -1 : 1;
+}
+
+FoldSummary fold_summary(const Grid &g) {
     FoldSummary s;
-    s.orientation = total < 0.0 ? -1 : 1;
+    s.orientation = grid_orientation(g);
     s.min_area = std::numeric_limits<double>::infinity();
-    for (int j = 0; j < nj - 1; ++j)
-        for (int i = 0; i < ni - 1; ++i) {
-            const std::size_t v[4] = {k(i, j), k(i + 1, j), k(i + 1, j + 1), k(i, j + 1)};
-            bool folded = false;
-            for (int m = 0; m < 4; ++m) {
-                const std::size_t p = v[m], nx = v[(m + 1) % 4], pv = v[(m + 3) % 4];
-                const double turn = (x[nx] - x[p]) * (y[pv] - y[p]) - (y[nx] - y[p]) * (x[pv] - x[p]);
-                if (turn * s.orientation < 0.0) folded = true;
-            }
-            const double area =
-                0.5 * ((x[v[2]] - x[v[0]]) * (y[v[3]] - y[v[1]]) - (y[v[2]] - y[v[0]]) * (x[v[3]] - x[v[1]]));
-            s.min_area = std::min(s.min_area, area * s.orientation);
-            if (folded) {
+    for (int j = 0; j < g.nj() - 1; ++j)
+        for (int i = 0; i < g.ni() - 1; ++i) {
+            const Cell c = Cell::at(g, i, j);
+            s.min_area = std::min(s.min_area, c.area() * s.orientation);
+            if (is_folded(c, s.orientation)) {
                 if (s.folded == 0) {
                     s.first_i = i;
                     s.first_j = j;
@@ -43,6 +45,12 @@ FoldSummary fold_summary(const Grid &g) {
             }
         }
     return s;
+}
+
+void cell_folded(const Grid &g, double *out) {
+    const int o = grid_orientation(g);
+    for (int j = 0; j < g.nj() - 1; ++j)
+        for (int i = 0; i < g.ni() - 1; ++i) out[cell_index(g, i, j)] = is_folded(Cell::at(g, i, j), o) ? 1.0 : 0.0;
 }
 
 }  // namespace eg2d

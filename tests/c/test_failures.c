@@ -188,6 +188,60 @@ static int r_self_intersecting(eg2d_grid *g) {
 }
 static int r_init_oom(eg2d_grid *g) { return eg2d_initialize(g, EG2D_INIT_TFI); }
 
+/* Files: `content` in a scratch file, then the call, then the file removed. */
+static char scratch[4096];
+static const char *scratch_file(const char *content) {
+    const char *dir = getenv("TMPDIR");
+    FILE *f;
+    int fd;
+    snprintf(scratch, sizeof scratch, "%s/eg2d-bad-input-XXXXXX", dir && *dir ? dir : "/tmp");
+    fd = mkstemp(scratch);
+    if (fd < 0 || !(f = fdopen(fd, "w"))) return "/nonexistent";
+    fputs(content, f);
+    fclose(f);
+    return scratch;
+}
+static int done_with_file(int rc) {
+    unlink(scratch);
+    return rc;
+}
+static int r_plot3d_missing(eg2d_grid *g) {
+    int ni;
+    (void)g;
+    return eg2d_read_plot3d("/nonexistent/grid.x", 0, NULL, NULL, &ni, NULL, NULL, NULL);
+}
+static int r_plot3d_truncated(eg2d_grid *g) {
+    int ni;
+    (void)g;
+    return done_with_file(eg2d_read_plot3d(scratch_file("3 3\n0 1 2\n"), 0, NULL, NULL, &ni, NULL, NULL, NULL));
+}
+static int r_plot3d_block(eg2d_grid *g) {
+    int ni;
+    (void)g;
+    return done_with_file(
+        eg2d_read_plot3d(scratch_file("3 3\n0 1 2 0 1 2 0 1 2\n0 0 0 1 1 1 2 2 2\n"), 1, NULL, NULL, &ni, NULL, NULL, NULL));
+}
+static int r_points_bad_line(eg2d_grid *g) {
+    int n;
+    (void)g;
+    return done_with_file(eg2d_read_points(scratch_file("0 0\n1 0.5 # fine\nabc 2\n"), 0, &n, NULL, NULL));
+}
+static int r_points_capacity(eg2d_grid *g) {
+    double x[2], y[2];
+    int n;
+    (void)g;
+    return done_with_file(eg2d_read_points(scratch_file("0 0\n1 0\n2 0\n"), 2, &n, x, y));
+}
+static int r_side_from_file(eg2d_grid *g) {
+    return done_with_file(eg2d_set_side_from_file(g, EG2D_SIDE_JMIN, scratch_file("0 0\n1 0\n2 0\n")));
+}
+static int r_write_no_dir(eg2d_grid *g) { return eg2d_write(g, "/nonexistent/grid.x", EG2D_FORMAT_PLOT3D); }
+static int r_write_format(eg2d_grid *g) { return eg2d_write(g, "/nonexistent/grid.x", 99); }
+static int r_cell_quality(eg2d_grid *g) {
+    double v[(N - 1) * (N - 1)];
+    return eg2d_get_cell_quality(g, EG2D_QUALITY_ORTHO_MAX_JMIN, v);
+}
+
 /*---------------------------------------------------------------------
  * The table
  *-------------------------------------------------------------------*/
@@ -300,6 +354,31 @@ static const bad_input rows[] = {
      "eg2d_get_coordinates: x and y are both NULL", 0},
     {"unknown quality metric", "eg2d_get_quality(g, 999, &v)", S_INIT, r_quality_999, EG2D_ERR_ARGUMENT,
      "eg2d_get_quality: metric = 999: no such quality metric", 0},
+    {"Plot3D file that does not exist", "eg2d_read_plot3d(\"/nonexistent/grid.x\", 0, ...)", S_NONE,
+     r_plot3d_missing, EG2D_ERR_IO,
+     "eg2d_read_plot3d: /nonexistent/grid.x: cannot open: No such file or directory", 0},
+    {"truncated Plot3D file", "eg2d_read_plot3d(path, 0, ...), \"3 3\\n0 1 2\\n\"", S_NONE,
+     r_plot3d_truncated, EG2D_ERR_IO,
+     "eg2d_read_plot3d: */eg2d-bad-input-*: not a Plot3D grid file: its 5 numbers fit no 2D/3D, single-/multi-grid "
+     "layout (truncated?)", 0},
+    {"Plot3D block the file does not have", "eg2d_read_plot3d(path, 1, ...), one block", S_NONE, r_plot3d_block,
+     EG2D_ERR_ARGUMENT, "eg2d_read_plot3d: block = 1: */eg2d-bad-input-* has 1 grid(s)", 0},
+    {"point file line that is not two numbers", "eg2d_read_points(path, 0, &n, NULL, NULL), line 3 \"abc 2\"",
+     S_NONE, r_points_bad_line, EG2D_ERR_IO,
+     "eg2d_read_points: */eg2d-bad-input-*:3: \"abc 2\": expected two numbers x y", 0},
+    {"more points than the capacity", "eg2d_read_points(path, 2, &n, x, y), 3 points", S_NONE, r_points_capacity,
+     EG2D_ERR_ARGUMENT, "eg2d_read_points: */eg2d-bad-input-* holds 3 points, more than capacity = 2", 0},
+    {"point file with the wrong number of points for the side", "eg2d_set_side_from_file(g, JMIN, path), 3 of 9",
+     S_FRESH, r_side_from_file, EG2D_ERR_BOUNDARY,
+     "eg2d_set_side_from_file: */eg2d-bad-input-* holds 3 points; side JMIN has 9", 0},
+    {"write into a directory that does not exist", "eg2d_write(g, \"/nonexistent/grid.x\", EG2D_FORMAT_PLOT3D)",
+     S_INIT, r_write_no_dir, EG2D_ERR_IO,
+     "eg2d_write: /nonexistent/grid.x: cannot create a file in its directory: No such file or directory", 0},
+    {"unknown file format", "eg2d_write(g, path, 99)", S_INIT, r_write_format, EG2D_ERR_ARGUMENT,
+     "eg2d_write: format = 99: no such file format", 0},
+    {"per-cell values of a summary-only metric", "eg2d_get_cell_quality(g, EG2D_QUALITY_ORTHO_MAX_JMIN, v)",
+     S_INIT, r_cell_quality, EG2D_ERR_ARGUMENT,
+     "eg2d_get_cell_quality: metric = 40 (ortho_max_jmin): a boundary summary with no per-cell values", 0},
     {"iteration limit reached", "eg2d_solve(g), max_iterations = 1", S_VALLEY, r_not_converged,
      EG2D_ERR_NOT_CONVERGED, "eg2d_solve: psor did not converge in 1 iterations: residual * > tolerance 1e-08",
      KEEPS_WORK},

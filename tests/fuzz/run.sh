@@ -46,7 +46,8 @@ for name in "${harnesses[@]}"; do
     else
         echo "fuzz: ok   $name: ${runs:-?} inputs in $seconds s, $cov, $(ls "$work" | wc -l) new corpus files"
         if [ "${EG2D_FUZZ_MERGE:-0}" = 1 ]; then
-            "$bin" -merge=1 "$src/corpus/$name" "$work" > "$artifacts/$name-merge.log" 2>&1 &&
+            # Edges only (no hit counts): a small corpus that keeps the coverage.
+            "$bin" -merge=1 -use_counters=0 "$src/corpus/$name" "$work" > "$artifacts/$name-merge.log" 2>&1 &&
                 echo "fuzz: merged into $src/corpus/$name ($(ls "$src/corpus/$name" | wc -l) files)"
         fi
     fi

@@ -27,4 +27,26 @@ cmake -S "$src/tests/install/consumer" -B "$work/consumer" -DCMAKE_PREFIX_PATH="
       -DEG2D_SWAN_SOURCE="$src/examples/c/swan.c" > "$work/consumer.log"
 cmake --build "$work/consumer" > "$work/consumer-build.log"
 "$work/consumer/swan_cmake"
+
+# The optional CGNS plugin is installed next to the library, which finds it
+# there (the core itself does not link libcgns).
+if [ -f "$build/src/libeg2d_cgns.so" ]; then
+  echo "== CGNS plugin from the installed library"
+  test -f "$libdir/libeg2d_cgns.so"
+  cat > "$work/cgns.c" <<'EOF_C'
+#include <stdio.h>
+#include "eg2d.h"
+int main(int argc, char **argv) {
+    eg2d_grid *g;
+    double x[9] = {0, 1, 2, 0, 1, 2, 0, 1, 2}, y[9] = {0, 0, 0, 1, 1, 1, 2, 2, 2};
+    int s = eg2d_create(3, 3, &g) || eg2d_set_coordinates(g, x, y) || eg2d_write(g, argv[1], EG2D_FORMAT_CGNS);
+    if (s) printf("%s\n", eg2d_last_error(g));
+    eg2d_destroy(g);
+    return s != 0 || argc != 2;
+}
+EOF_C
+  cc -std=c99 "$work/cgns.c" $(pkg-config --cflags --libs eg2d) -Wl,-rpath,"$libdir" -o "$work/cgns"
+  (unset EG2D_PLUGIN_DIR; "$work/cgns" "$work/grid.cgns")
+  test -s "$work/grid.cgns"
+fi
 echo "install consumers: 3 passed, 0 failed"

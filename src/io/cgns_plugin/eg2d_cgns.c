@@ -1,0 +1,59 @@
+/* libeg2d_cgns.so: the optional CGNS writer of eg2d (see ../cgns_plugin.h).
+ * A separate module so that only this file links libcgns. */
+#include <cgnslib.h>
+#include <stdio.h>
+
+#include "io/cgns_plugin.h"
+
+#if defined(__GNUC__)
+#define PLUGIN_API __attribute__((visibility("default")))
+#else
+#define PLUGIN_API
+#endif
+
+PLUGIN_API int eg2d_cgns_plugin_abi(void) { return EG2D_CGNS_PLUGIN_ABI; }
+
+static int failed(int fn, const char *what, char *message, size_t size) {
+    snprintf(message, size, "libcgns: %s: %s", what, cg_get_error());
+    if (fn >= 0) cg_close(fn);
+    return 1;
+}
+
+PLUGIN_API int eg2d_cgns_plugin_write(const char *path, int ni, int nj, const double *x, const double *y,
+                                      int nfields, const char *const *names, const double *const *values,
+                                      char *message, size_t message_size) {
+    int fn = -1, base, zone, coord, sol, field, k;
+    cgsize_t size[6];
+    if (cg_open(path, CG_MODE_WRITE, &fn)) return failed(-1, "cg_open", message, message_size);
+    if (cg_base_write(fn, "Base", 2, 2, &base)) return failed(fn, "cg_base_write", message, message_size);
+    /* The coordinates are lengths in the user's unknown unit. */
+    if (cg_goto(fn, base, "end") || cg_dataclass_write(NormalizedByUnknownDimensional))
+        return failed(fn, "cg_dataclass_write", message, message_size);
+    size[0] = ni;
+    size[1] = nj;
+    size[2] = ni - 1;
+    size[3] = nj - 1;
+    size[4] = 0;
+    size[5] = 0;
+    if (cg_zone_write(fn, base, "eg2d", size, Structured, &zone))
+        return failed(fn, "cg_zone_write", message, message_size);
+    if (cg_coord_write(fn, base, zone, RealDouble, "CoordinateX", x, &coord) ||
+        cg_coord_write(fn, base, zone, RealDouble, "CoordinateY", y, &coord))
+        return failed(fn, "cg_coord_write", message, message_size);
+    for (k = 1; k <= 2; ++k) {
+        /* Exponents of (mass, length, time, temperature, angle): a length. */
+        static const float length[5] = {0, 1, 0, 0, 0};
+        if (cg_goto(fn, base, "Zone_t", zone, "GridCoordinates_t", 1, "DataArray_t", k, "end") ||
+            cg_exponents_write(RealSingle, length))
+            return failed(fn, "cg_exponents_write", message, message_size);
+    }
+    if (nfields > 0) {
+        if (cg_sol_write(fn, base, zone, "Quality", CellCenter, &sol))
+            return failed(fn, "cg_sol_write", message, message_size);
+        for (k = 0; k < nfields; ++k)
+            if (cg_field_write(fn, base, zone, sol, RealDouble, names[k], values[k], &field))
+                return failed(fn, "cg_field_write", message, message_size);
+    }
+    if (cg_close(fn)) return failed(-1, "cg_close", message, message_size);
+    return 0;
+}

@@ -1,0 +1,41 @@
+#include "io/formats.hpp"
+
+#include "core/error.hpp"
+#include "eg2d.h"
+
+namespace eg2d {
+
+namespace {
+constexpr int kFormatMask = 0xff;
+constexpr int kPlot3dFlags = EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI | EG2D_PLOT3D_SINGLE | EG2D_PLOT3D_BIG_ENDIAN | EG2D_PLOT3D_NO_MARKERS;
+
+const FileFormat kFormats[] = {
+    {EG2D_FORMAT_PLOT3D, "plot3d", kPlot3dFlags, write_plot3d},
+    {EG2D_FORMAT_PLOT3D_ASCII, "plot3d-ascii", EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI, write_plot3d_ascii},
+    {EG2D_FORMAT_VTS, "vts", 0, write_vts},
+    {EG2D_FORMAT_CGNS, "cgns", 0, write_cgns},
+    {EG2D_FORMAT_GMV, "gmv", 0, write_gmv},
+    {EG2D_FORMAT_MATLAB, "matlab", 0, write_matlab},
+    {EG2D_FORMAT_SVG, "svg", 0, write_svg},
+};
+}  // namespace
+
+const FileFormat *find_format(int id) {
+    for (const FileFormat &f : kFormats)
+        if (f.id == id) return &f;
+    return nullptr;
+}
+
+void write_grid(const Grid &grid, const Settings &settings, const char *path, int id) {
+    const FileFormat *f = id >= 0 ? find_format(id & kFormatMask) : nullptr;
+    if (!f) fail(Failure::Argument, format("format = %d: no such file format", id));
+    const int flags = id & ~kFormatMask;
+    if (flags & ~f->allowed_flags)
+        fail(Failure::Argument, format("format = %#x: flags %#x do not apply to the %s format", id,
+                                             flags & ~f->allowed_flags, f->name));
+    OutputFile out(path);
+    f->write(WriteRequest{grid, settings, flags}, out);
+    out.commit();
+}
+
+}  // namespace eg2d

@@ -1,0 +1,38 @@
+// Grid files. Each format is a writer function in its own file and a line in
+// formats.cpp's table (format id -> writer); a format that accepts variant
+// flags (EG2D_PLOT3D_*, OR-ed into the id) lists them.
+#pragma once
+#include "core/settings.hpp"
+#include "grid/grid.hpp"
+#include "io/output_file.hpp"
+
+namespace eg2d {
+
+struct WriteRequest {
+    const Grid &grid;
+    const Settings &settings;
+    int flags;  // the EG2D_PLOT3D_* bits of the format argument
+};
+
+struct FileFormat {
+    int id;                 // EG2D_FORMAT_*
+    const char *name;
+    int allowed_flags;      // the flags this writer understands
+    void (*write)(const WriteRequest &request, OutputFile &out);
+};
+
+// nullptr if there is no format with that id.
+const FileFormat *find_format(int id);
+
+// Writes the grid to path in the format (id | flags); all-or-nothing.
+void write_grid(const Grid &grid, const Settings &settings, const char *path, int id);
+
+void write_plot3d(const WriteRequest &r, OutputFile &out);        // plot3d_write.cpp
+void write_plot3d_ascii(const WriteRequest &r, OutputFile &out);
+void write_vts(const WriteRequest &r, OutputFile &out);           // vts.cpp
+void write_cgns(const WriteRequest &r, OutputFile &out);          // cgns_loader.cpp
+void write_gmv(const WriteRequest &r, OutputFile &out);           // gmv.cpp
+void write_matlab(const WriteRequest &r, OutputFile &out);        // matlab.cpp
+void write_svg(const WriteRequest &r, OutputFile &out);           // svg.cpp
+
+}  // namespace eg2d

@@ -1,0 +1,60 @@
+#include "io/points.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+
+#include "core/error.hpp"
+
+namespace eg2d {
+
+namespace {
+bool separator(char c) { return c == ' ' || c == '\t' || c == ',' || c == '\r'; }
+
+// The next number from s (after separators); false if there is none.
+bool number(const char *&s, double &v) {
+    while (separator(*s)) ++s;
+    if (!*s) return false;
+    char *stop;
+    v = std::strtod(s, &stop);
+    if (stop == s) return false;
+    s = stop;
+    return true;
+}
+}  // namespace
+
+Points read_points(const std::string &path) {
+    std::ifstream in(path);
+    if (!in) fail(Failure::Io, format("%s: cannot open: %s", path.c_str(), std::strerror(errno)));
+    Points p;
+    std::string line;
+    long number_of_line = 0;
+    while (std::getline(in, line)) {
+        ++number_of_line;
+        const std::size_t hash = line.find('#');
+        const std::string text = line.substr(0, hash);
+        const char *s = text.c_str();
+        while (separator(*s)) ++s;
+        if (!*s) continue;
+        double x, y;
+        const char *start = s;
+        if (!number(s, x) || !number(s, y))
+            fail(Failure::Io, format("%s:%ld: \"%s\": expected two numbers x y", path.c_str(), number_of_line,
+                                     text.c_str()));
+        while (separator(*s)) ++s;
+        if (*s)
+            fail(Failure::Io, format("%s:%ld: \"%s\": unexpected \"%s\" after the two numbers x y", path.c_str(),
+                                     number_of_line, text.c_str(), s));
+        if (!std::isfinite(x) || !std::isfinite(y))
+            fail(Failure::Io, format("%s:%ld: \"%s\": the point is not finite", path.c_str(), number_of_line, start));
+        p.x.push_back(x);
+        p.y.push_back(y);
+    }
+    if (in.bad()) fail(Failure::Io, format("%s: read failed: %s", path.c_str(), std::strerror(errno)));
+    if (p.x.empty()) fail(Failure::Io, format("%s: no points in the file", path.c_str()));
+    return p;
+}
+
+}  // namespace eg2d

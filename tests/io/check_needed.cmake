@@ -1,0 +1,16 @@
+# The core library's dynamic dependencies are only the C++ runtime, libm and
+# libc (and the loader/libgcc_s they bring): no libcgns, no libdl.
+execute_process(COMMAND readelf -d ${LIB} OUTPUT_VARIABLE out RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "readelf -d ${LIB} failed")
+endif()
+string(REGEX MATCHALL "Shared library: \\[[^]]*\\]" needed "${out}")
+message(STATUS "${LIB} needs: ${needed}")
+foreach(n IN LISTS needed)
+  if(NOT n MATCHES "\\[(libstdc\\+\\+\\.so|libm\\.so|libc\\.so|libgcc_s\\.so|ld-linux)")
+    message(FATAL_ERROR "libeg2d depends on ${n}: the core may link only libstdc++ and libm")
+  endif()
+endforeach()
+if(NOT out MATCHES "libstdc")
+  message(FATAL_ERROR "no dependencies found in readelf output")
+endif()
