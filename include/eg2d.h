@@ -130,7 +130,16 @@ EG2D_API void eg2d_destroy(eg2d_grid *grid);
 /* Topologies. SINGLE: four sides, all fixed. O: periodic in i; JMIN is the
  * inner and JMAX the outer closed curve (first point == last point), columns
  * i = 0 and i = ni-1 are the same physical points (the branch cut) and are
- * solved for with the interior. C: reserved for the C-grid with a wake cut.
+ * solved for with the interior. C: a C-grid around a body with a wake cut
+ * (ni >= 7): JMIN runs from the outflow end of the lower wake to the trailing
+ * edge, around the body, and back along the upper wake to the outflow; JMAX
+ * is the far field, IMIN and IMAX the two outflow lines. The wake length is
+ * read from JMIN: the leading run of points i = 0..w with point i equal to
+ * point ni-1-i (to 1e-8 of JMIN's size) is the cut, w the trailing edge. The
+ * cut's inner nodes 0 < i < w are solved for with the interior (their
+ * neighbours across the cut are the upper half's row j = 1), so the two wake
+ * halves stay the same points and the grid stays smooth across the cut; the
+ * outflow point i = 0 and the trailing edge i = w stay fixed.
  * Changing the topology forgets the boundary and the grid. */
 #define EG2D_TOPO_SINGLE 0
 #define EG2D_TOPO_O      1
@@ -149,7 +158,8 @@ EG2D_API int eg2d_get_topology(const eg2d_grid *grid, int *topology);
 /* Sets one side from its points in increasing index. Corners shared with a
  * side already set must agree to 1e-8 of the boundary's size, or the call
  * fails with EG2D_ERR_BOUNDARY and sets nothing. On an O-grid only JMIN and
- * JMAX exist and each must be a closed curve. A side set after the grid was
+ * JMAX exist and each must be a closed curve. On a C-grid JMIN must hold the
+ * wake cut (see EG2D_TOPO_C). A side set after the grid was
  * initialised moves only the boundary: the interior is kept as a warm start. */
 EG2D_API int eg2d_set_side(eg2d_grid *grid, int side, const double *x, const double *y);
 
@@ -160,7 +170,13 @@ EG2D_API int eg2d_set_boundary(eg2d_grid *grid, const double *x, const double *y
 /*=====================================================================
  * Initial grid
  *===================================================================*/
-#define EG2D_INIT_TFI 0  /* linear transfinite interpolation, seed 001 eq 2.2 */
+#define EG2D_INIT_TFI     0  /* linear transfinite interpolation, seed 001 eq 2.2 */
+#define EG2D_INIT_HERMITE 1  /* TFI with Hermite blending in eta and the orthogonal
+                                projector (seed 001 eqs 2.4-2.6): grid lines leave JMIN
+                                and JMAX normal to them, with d r/d eta of length
+                                alpha * |r(i,nj-1) - r(i,0)| / (nj-1), alpha =
+                                EG2D_PARAM_HERMITE_SPACING; linear TFI in xi (none on an
+                                O-grid). Can fold on strongly curved sides. */
 
 /* Fills the interior from the boundary. Needs the whole boundary. */
 EG2D_API int eg2d_initialize(eg2d_grid *grid, int method);
@@ -182,14 +198,29 @@ EG2D_API int eg2d_set_system(eg2d_grid *grid, int system);
 #define EG2D_SOLVER_AF        2  /* approximate factorisation, false transients */
 #define EG2D_SOLVER_NESTED    3  /* coarse-to-fine, seed 000 */
 #define EG2D_SOLVER_MULTIGRID 4  /* FAS multigrid */
+/* What one iteration is, per solver:
+ *   PSOR    one lexicographic point SOR sweep (omega: EG2D_PARAM_RELAXATION).
+ *   AF      one pseudo-time step: a xi and an eta line sweep (see the AF
+ *           parameters below; EG2D_PARAM_RELAXATION does not apply).
+ *   NESTED  one point SOR sweep of the full grid; the first iteration after a
+ *           new start (initialisation, new coordinates, system, controls or
+ *           solver) first converges the equations on every 2^k-th line (k as
+ *           large as ni-1 and nj-1 allow), interpolates linearly to every
+ *           2^(k-1)-th line, and so on down to the full grid (seed 000). This
+ *           start replaces the interior (of a warm start only the coarsest
+ *           nodes are kept) unless it would fold cells. Any ni, nj work; with
+ *           odd ni-1 or nj-1 NESTED is PSOR. EG2D_PARAM_RELAXATION applies on
+ *           every level (automatic: the optimal factor of each level's size). */
 /* Selects a solver; EG2D_ERR_UNSUPPORTED for an id this library lacks. */
 EG2D_API int eg2d_set_solver(eg2d_grid *grid, int solver);
 EG2D_API int eg2d_get_solver(const eg2d_grid *grid, int *solver);
 /* A solver's short name ("psor"), or NULL if this library has no such solver. */
 EG2D_API const char *eg2d_solver_name(int solver);
 
-/* Relaxation factor omega in (0, 2); 0 = automatic (for point SOR the
- * optimal factor of seed 003, computed for the grid's size). */
+/* Relaxation factor omega in (0, 2); 0 = automatic. Automatic point SOR uses
+ * seed 003's optimal factor for Laplace; for Winslow it starts at the optimum
+ * of a grid half as fine and widens 2 - omega whenever the residual rises 10x
+ * above its best (the optimum itself diverges on some grids). */
 EG2D_API int eg2d_set_relaxation(eg2d_grid *grid, double omega);
 /* Stop when residual <= tolerance (default 1e-8), tolerance in (0, 1). */
 EG2D_API int eg2d_set_tolerance(eg2d_grid *grid, double tolerance);
@@ -199,7 +230,8 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
 /* Generic parameters, zstd-style: every setting has an id, bounds and a
  * default; the typed setters above are shorthands for these. Values are
  * doubles; an integer parameter takes only whole values. Ids are fixed and
- * grouped with gaps: 0-99 run, 100-199 solvers, 200-299 controls, 300-399 output. */
+ * grouped with gaps: 0-99 run, 100-199 solvers, 200-299 controls, 300-399 output,
+ * 400-499 geometry and initial grid. */
 #define EG2D_PARAM_RELAXATION         0  /* (0, 2), 0 = automatic           */
 #define EG2D_PARAM_TOLERANCE          1  /* (0, 1),  default 1e-8           */
 #define EG2D_PARAM_MAX_ITERATIONS     2  /* [1, 1e9], default 100000        */
@@ -207,13 +239,55 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
                                             the best of the run (and above 1e-2) is divergence */
 #define EG2D_PARAM_FOLD_CHECK         4  /* 1 (default): eg2d_solve returns EG2D_ERR_FOLDED when
                                             the converged grid has folded cells; 0: it does not */
+/* Controls (200-299), see "Grid control" below. */
+#define EG2D_PARAM_WALL_DECAY       200  /* [0.01, 10], default 0.3: decay rate a (per cell) of the
+                                            wall control, which acts as exp(-a (m-1)) at depth m */
+#define EG2D_PARAM_WALL_RELAXATION  201  /* (0, 1], default 0.1: under-relaxation of the wall
+                                            control's updates between iterations */
 #define EG2D_PARAM_SVG_QUALITY      300  /* output 300-399. EG2D_FORMAT_SVG colours cells by this
                                             EG2D_QUALITY_* metric (one with per-cell values);
                                             -1 (default): no colouring */
+#define EG2D_PARAM_HERMITE_SPACING  400  /* geometry and initial grid 400-499. (0, 10], default 1:
+                                            alpha of EG2D_INIT_HERMITE */
 EG2D_API int eg2d_set_parameter(eg2d_grid *grid, int param, double value);
 EG2D_API int eg2d_get_parameter(const eg2d_grid *grid, int param, double *value);
 /* Bounds and default of a parameter, without a grid. */
 EG2D_API int eg2d_parameter_bounds(int param, double *lower, double *upper, double *default_value);
+
+/* Solver parameters (100-199). */
+
+/* Approximate factorisation, EG2D_SOLVER_AF (seed 004 eqs 5-13): false
+ * transients r_tau = L(r), the Warming-Beam time rule with parameters a, b,
+ * and the implicit operator factored into a xi and an eta line operator (the
+ * mixed derivative is left explicit); the xi lines of an O-grid are cyclic,
+ * so the branch cut moves with the interior. One iteration = one time step =
+ * one xi and one eta line sweep. The pseudo-time step of node (i, j) is
+ * dtau / (2(alpha+gamma)) (Laplace: dtau/4), so dtau is dimensionless: at
+ * dtau = 1 and omega = 1 the explicit part is one Jacobi step. The steps run
+ * through a cycle of M steps spaced geometrically from dtau_min to dtau_max
+ * with repeated end points (dtau_1 = dtau_2, dtau_(M-1) = dtau_M), and the
+ * cycle repeats. Every default works untouched; the automatic values are
+ * dtau_max = 4 (n-1)^2 / pi^2 with n = max(ni, nj) (the step that resolves
+ * the smoothest mode) and the smallest M whose steps grow by at most 2x. */
+#define EG2D_PARAM_AF_DTAU_MIN      100  /* (0, 1e12], default 0.5                       */
+#define EG2D_PARAM_AF_DTAU_MAX      101  /* (0, 1e12], >= dtau_min; 0 = automatic (default) */
+#define EG2D_PARAM_AF_STEPS         102  /* M in [4, 1000]; 0 = automatic (default)       */
+#define EG2D_PARAM_AF_A             103  /* Warming-Beam a in (-1, 10], default 0         */
+#define EG2D_PARAM_AF_B             104  /* Warming-Beam b in (0, 10], default 1          */
+#define EG2D_PARAM_AF_RELAXATION    105  /* omega of seed 004 eq 7 in (0, 4); 0 = automatic
+                                            (default): omega = 2b, so omega/b = 2, the
+                                            Peaceman-Rachford choice. The generic
+                                            relaxation does not apply to AF. */
+
+/* The AF cycle: steps in [dtau_min, dtau_max] over M = steps per cycle.
+ * dtau_max = 0 and steps = 0 are automatic. Fails with EG2D_ERR_ARGUMENT
+ * (and changes nothing) for a value out of its range or dtau_min > dtau_max.
+ * Setting EG2D_PARAM_AF_DTAU_MIN/MAX one by one is checked the same way. */
+EG2D_API int eg2d_set_af_cycle(eg2d_grid *grid, double dtau_min, double dtau_max, int steps);
+/* The Warming-Beam time rule (seed 004 Table 1): Euler implicit a = 0, b = 1
+ * (default); three-point backward a = 1/2, b = 1; trapezoidal a = 0, b = 1/2.
+ * The explicit rules (b = 0) are unstable here (seed 004) and rejected. */
+EG2D_API int eg2d_set_af_time_rule(eg2d_grid *grid, double a, double b);
 
 /*=====================================================================
  * Running
@@ -234,6 +308,116 @@ EG2D_API int eg2d_iterate(eg2d_grid *grid, int iterations, double *residual);
  * after max_iterations, EG2D_ERR_DIVERGED, EG2D_ERR_INTERRUPTED. A converged
  * grid is checked for folded cells (EG2D_ERR_FOLDED, see PARAM_FOLD_CHECK). */
 EG2D_API int eg2d_solve(eg2d_grid *grid);
+
+/*=====================================================================
+ * Curves and point distributions (seed 001 sections 2.4-2.5)
+ *===================================================================*/
+/* A curve is a second opaque handle: a plane curve r(t), t in [0, 1], with
+ * its arc length. Curve calls have no grid: their errors are reported by
+ * eg2d_last_error(NULL) (per thread). A curve is immutable once made and may
+ * be shared by threads and grids; eg2d_set_side_curve copies its points.
+ *
+ * Arc length (seed 001 eq 2.11) is tabulated by 5-point Gauss-Legendre
+ * panels refined until halving a panel changes the length by less than
+ * 1e-14 of it, and inverted by safeguarded Newton iteration: the normalized
+ * arc length of every point given out is exact to about 1e-12 (1e-11 for
+ * callback curves, whose speed |r'(t)| comes from fourth-order differences,
+ * which assume r is smooth on [0, 1]). */
+typedef struct eg2d_curve eg2d_curve;
+typedef void (*eg2d_curve_fn)(void *user, double t, double *x, double *y);
+
+/* Straight segments through n >= 2 points. */
+EG2D_API int eg2d_curve_polyline(int n, const double *x, const double *y, eg2d_curve **curve);
+/* The cubic spline through n >= 2 points, parameterised by chord length:
+ * periodic when the last point repeats the first (a smooth closed curve),
+ * natural (zero curvature) ends otherwise. */
+EG2D_API int eg2d_curve_spline(int n, const double *x, const double *y, eg2d_curve **curve);
+/* A user curve: fn(user, t, &x, &y) for t in [0, 1]; it must be smooth on
+ * [0, 1] and is called only there, from the calling thread, during curve
+ * calls (not after eg2d_curve_destroy). A non-finite point fails the call. */
+EG2D_API int eg2d_curve_function(eg2d_curve_fn fn, void *user, eg2d_curve **curve);
+/* NACA 4-digit section "MPTT" ("0012", "2412"), chord 1 from the leading edge
+ * (0, 0) to the trailing edge (1, 0), running from the trailing edge along the
+ * lower surface to the leading edge and back along the upper surface
+ * (clockwise). flags: EG2D_NACA_CLOSED_TE for the sharp trailing edge
+ * (thickness coefficient -0.1036: a closed curve, as an O- or C-grid needs);
+ * 0 for the standard open one (-0.1015, thickness 0.0021 at x = 1 for 0012). */
+#define EG2D_NACA_CLOSED_TE 1
+EG2D_API int eg2d_curve_naca4(const char *digits, int flags, eg2d_curve **curve);
+/* An airfoil from a Selig or Lednicer coordinate file (the format is
+ * recognised from the second line), as a spline through its points oriented
+ * like eg2d_curve_naca4. EG2D_ERR_IO if the file cannot be read,
+ * EG2D_ERR_ARGUMENT (with the line number) if its contents are malformed. */
+EG2D_API int eg2d_curve_read_airfoil(const char *path, eg2d_curve **curve);
+/* Frees a curve; NULL is a no-op. */
+EG2D_API void eg2d_curve_destroy(eg2d_curve *curve);
+
+/* Total arc length. */
+EG2D_API int eg2d_curve_length(const eg2d_curve *curve, double *length);
+/* The point at normalized arc length s in [0, 1] (seed 001's x(s)). */
+EG2D_API int eg2d_curve_evaluate(const eg2d_curve *curve, double s, double *x, double *y);
+
+/* Distributions of n points on [0, 1], s_k = s(u_k), u_k = k/(n-1); s_0 = 0,
+ * s_{n-1} = 1. Spacings below are s_1 - s_0 (first) and s_{n-1} - s_{n-2} (last).
+ *  UNIFORM      s = u.
+ *  EXPONENTIAL  p1 = beta != 0, |beta| <= 700: s = (e^(beta u) - 1)/(e^beta - 1)
+ *               (seed 001 after eq 2.12); first spacing (e^(beta/(n-1)) - 1)/(e^beta - 1);
+ *               beta > 0 clusters at s = 0, beta < 0 at s = 1.
+ *  TANH_ONE     p1 = delta in (0, 700]: s = 1 + tanh(delta (u-1)/2)/tanh(delta/2)
+ *               (seed 001 eq 2.13); clusters at s = 0; first spacing
+ *               1 + tanh(delta (1/(n-1) - 1)/2)/tanh(delta/2), last 1 - s(1 - 1/(n-1)).
+ *  TANH_TWO     p1 = b in (0, 350], p2 = c in [0, 1]: s = (tanh(b (u-c)) - A)/(B - A),
+ *               A = tanh(-b c), B = tanh(b (1-c)) (seed 001 end of 2.5). The slope is
+ *               largest at u = c, so points thin out there and gather toward the
+ *               ends: c = 1 is TANH_ONE with delta = 2b (clusters at s = 0, the seed's
+ *               attraction point 1 - c), c = 0 clusters at s = 1, c = 1/2 at both.
+ *  VINOKUR      p1, p2 > 0: the first and last spacings, in the curve's length
+ *               units (eg2d_distribution: fractions of 1), met to 1e-11 relative:
+ *               Vinokur's two-sided tanh/tan function (J. Comput. Phys. 50, 1983)
+ *               with its end slopes corrected iteratively. p1 + p2 < length, n >= 3. */
+#define EG2D_DIST_UNIFORM     0
+#define EG2D_DIST_EXPONENTIAL 1
+#define EG2D_DIST_TANH_ONE    2
+#define EG2D_DIST_TANH_TWO    3
+#define EG2D_DIST_VINOKUR     4
+EG2D_API int eg2d_distribution(int distribution, int n, double p1, double p2, double *s);
+
+/* n >= 2 points of a curve at the normalized arc lengths of a distribution. */
+EG2D_API int eg2d_curve_points(const eg2d_curve *curve, int n, int distribution, double p1, double p2,
+                               double *x, double *y);
+
+/* Puts the side's points on a curve with a distribution (as
+ * eg2d_curve_points; the side's corner checks and rules are eg2d_set_side's).
+ * Direction (seed 001 figure 1.13): a side whose curve runs against the grid
+ * fails with EG2D_ERR_BOUNDARY and a message that says so, unless flags ask:
+ *  EG2D_CURVE_REVERSE  use the curve from its end to its start (s -> 1 - s);
+ *  EG2D_CURVE_ORIENT   reverse it when, and only when, it runs against the grid;
+ *  EG2D_CURVE_SLIDING  the side slides (single-block grids only, else
+ *                      EG2D_ERR_UNSUPPORTED): after every iteration of every
+ *                      solver, each node of the side except the corners moves
+ *                      along the curve to the foot of the perpendicular from its
+ *                      neighbour on the first interior line (Overture's
+ *                      slip-orthogonal condition), keeping its order (a node
+ *                      moves at most halfway to its neighbours' positions), so
+ *                      grid lines meet the side at right angles. Setting the
+ *                      side again (eg2d_set_side, eg2d_set_boundary,
+ *                      eg2d_set_coordinates, a topology) ends the sliding.
+ * Running against the grid means: its ends match the corners of an adjacent
+ * side already set the wrong way round; or, with no adjacent side set, it
+ * turns the other way than the opposite side (O- and C-grids: the signed area
+ * of the closed side; single block: the direction from first to last point). */
+#define EG2D_CURVE_REVERSE 1
+#define EG2D_CURVE_ORIENT  2
+#define EG2D_CURVE_SLIDING 4
+EG2D_API int eg2d_set_side_curve(eg2d_grid *grid, int side, const eg2d_curve *curve, int distribution,
+                                 double p1, double p2, int flags);
+
+/* The wall spacing for a target y+ on a body of the given chord at Reynolds
+ * number Re (based on chord), from the turbulent flat-plate estimate (as
+ * Construct2D offers): Cf = (2 log10(Re) - 0.65)^-2.3 (Schlichting,
+ * Boundary-Layer Theory, 1979, eq 21.16) and height = chord y+ / (Re sqrt(Cf/2)).
+ * y+ > 0, 1e3 <= Re <= 1e9, chord > 0. */
+EG2D_API int eg2d_first_cell_height(double yplus, double reynolds, double chord, double *height);
 
 /*=====================================================================
  * Queries
@@ -376,6 +560,110 @@ EG2D_API int eg2d_read_points(const char *path, int capacity, int *n, double *x,
 /* Sets a side from a point file (as eg2d_set_side); the file must hold
  * exactly as many points as the side has (ni or nj), else EG2D_ERR_BOUNDARY. */
 EG2D_API int eg2d_set_side_from_file(eg2d_grid *grid, int side, const char *path);
+
+/*=====================================================================
+ * Grid control
+ *
+ * Control terms turn the Winslow system into NUMERICS.md's full equation
+ *   alpha (r_xixi + Phi r_xi) - 2 beta r_xieta + gamma (r_etaeta + Psi r_eta)
+ *     + J^2 (P r_xi + Q r_eta) = 0
+ * (plus seed 002's parameter-space terms). A grid has at most one control of
+ * each kind below; different kinds add up. Controls are kept across
+ * boundary changes and re-derived from the new boundary. They need the
+ * Winslow system: eg2d_iterate/eg2d_solve with EG2D_SYSTEM_LAPLACE and any
+ * control set fail with EG2D_ERR_STATE and change nothing. Every control
+ * works with every solver and with the O-grid topology (there xi is
+ * periodic: distances in xi are taken the short way round the cut).
+ * Each call validates all its arguments first; a failed call changes nothing.
+ *===================================================================*/
+#define EG2D_XI  0  /* a xi = const line (i index), acts on P */
+#define EG2D_ETA 1  /* an eta = const line (j index), acts on Q */
+
+/* Thompson's attraction (NUMERICS.md "Source terms"), in index units:
+ *   P = -sum a sign(xi - line) exp(-decay |xi - line|)  (direction EG2D_XI)
+ *   Q = -sum a sign(eta - line) exp(-decay |eta - line|) (direction EG2D_ETA)
+ * A positive amplitude attracts lines of that family toward `line`, a
+ * negative one repels them. line in [0, ni-1] (resp. [0, nj-1]); decay >= 0;
+ * amplitude finite. Seed 004 eq 14 is direction EG2D_ETA with amplitude mu and
+ * decay kappa: (line 0, 100, 0.2) clusters eta-lines at the inner wall of an
+ * O-grid. Sources accumulate until eg2d_clear_sources. The strength of a given
+ * amplitude depends on the physical size of the cells (P enters times J^2). */
+EG2D_API int eg2d_add_line_source(eg2d_grid *grid, int direction, double line, double amplitude, double decay);
+/* Attraction of both families toward the point (xi, eta):
+ *   P -= a sign(xi - xi0) exp(-decay d), Q -= a sign(eta - eta0) exp(-decay d),
+ *   d = sqrt((xi - xi0)^2 + (eta - eta0)^2). */
+EG2D_API int eg2d_add_point_source(eg2d_grid *grid, double xi, double eta, double amplitude, double decay);
+/* Removes every line and point source. */
+EG2D_API int eg2d_clear_sources(eg2d_grid *grid);
+
+/* The user's own P and Q per node (ni*nj, Fortran order), as seed 000's
+ * p1/p2 arrays: the term J^2 (P r_xi + Q r_eta). A positive P pushes xi-lines
+ * toward larger xi. Either pointer may be NULL (that one is zero); both NULL
+ * removes the arrays. Values must be finite. The arrays are copied. */
+EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const double *Q);
+
+/* Orthogonality at the boundary.
+ * MIDDLECOFF_THOMAS: seed 000 section 4: Phi from the point distribution of
+ *   the eta = const boundaries, Psi from the xi = const ones (none on an
+ *   O-grid), interpolated linearly inward. It makes lines leave smooth
+ *   curved boundaries nearly orthogonally; on boundaries made of straight
+ *   segments and corners it is zero away from the corners (seed 000 fig. 7).
+ * WALL: a Sorenson (GRAPE)-type control, updated between iterations, that
+ *   makes the grid lines leave each wall side at 90 degrees with the
+ *   first-cell height of eg2d_set_wall_spacing; its influence decays into the
+ *   interior (EG2D_PARAM_WALL_DECAY) and its updates are under-relaxed
+ *   (EG2D_PARAM_WALL_RELAXATION). It does not use the wall's curvature and
+ *   works on walls with corners. At convergence the first interior node
+ *   sits on the wall normal at the requested height (normal = perpendicular
+ *   to the wall's central difference r(k+1) - r(k-1)). On a single block the
+ *   end nodes next to a corner shared with another wall side are left free.
+ *   While it is active, the automatic relaxation (EG2D_PARAM_RELAXATION 0)
+ *   is 1: over-relaxing its strong terms diverges at sharp trailing edges.
+ * NONE removes either. */
+#define EG2D_ORTHO_NONE              0
+#define EG2D_ORTHO_MIDDLECOFF_THOMAS 1
+#define EG2D_ORTHO_WALL              2
+EG2D_API int eg2d_set_orthogonality(eg2d_grid *grid, int method);
+/* Makes `side` (EG2D_SIDE_*, one the topology has) a wall for
+ * EG2D_ORTHO_WALL: height > 0 is the first-cell height (distance of the first
+ * interior node from the wall along the normal, in the boundary's length
+ * unit); 0 asks for orthogonality only; a negative height makes the side no
+ * wall again. While no side has been made a wall, EG2D_ORTHO_WALL treats
+ * every side of the topology as a wall with height 0. May be called before
+ * or after eg2d_set_orthogonality. */
+EG2D_API int eg2d_set_wall_spacing(eg2d_grid *grid, int side, double height);
+
+/* Adaptive control from a parameter-space grid (seed 002): s, t are an ni*nj
+ * grid on the unit square (Fortran order), unfolded: s_xi t_eta - s_eta t_xi
+ * of one sign at every unknown node (O-grid: s may jump by a constant at
+ * the cut, e.g. run from 0 to 1 round the grid). The physical grid inherits
+ * its distribution: where the parameter grid is dense, so is the result.
+ * Both NULL removes it. Arrays are copied. */
+EG2D_API int eg2d_set_parameter_grid(eg2d_grid *grid, const double *s, const double *t);
+
+/* Seed 002's clustering maps of [0, 1] onto itself, sampled at n >= 2
+ * uniform points u_k = k/(n-1) into u_out[k]; increasing, u(0) = 0, u(1) = 1,
+ * with slope strength/(e^strength - 1) at the attracting points:
+ *   LINE       dense at a in (0, 1)                      (Cluster_X_Near, strength 3)
+ *   TWO_LINES  dense at a and b, 0 < a < b < 1           (Cluster_Two_Lines, 3)
+ *   BOUNDARIES dense at 0 and 1, split at a in (0, 1)    (Bound_Clust, 4)
+ * strength > 0 (0 = the seed's value above); b is ignored unless TWO_LINES.
+ * No grid: failures are reported by eg2d_last_error(NULL). */
+#define EG2D_CLUSTER_LINE       0
+#define EG2D_CLUSTER_TWO_LINES  1
+#define EG2D_CLUSTER_BOUNDARIES 2
+EG2D_API int eg2d_clustering_map(int kind, double a, double b, double strength, int n, double *u_out);
+/* The tensor-product parameter grid s(i, j) = u[i], t(i, j) = v[j] (ni*nj
+ * arrays s, t) from two increasing distributions u (ni values), v (nj). */
+EG2D_API int eg2d_tensor_parameter_grid(int ni, int nj, const double *u, const double *v, double *s, double *t);
+
+/* Weight-function adaptivity (seed 001): w per node (ni*nj, Fortran order,
+ * finite and > 0); larger w = denser grid. Along each index direction the
+ * spacing follows 1/w: Phi = 2 (w_e - w_w)/(w_w + 2 w_c + w_e), Psi likewise,
+ * which a one-dimensional grid satisfies exactly as w ds = const with
+ * midpoint weights. For solution-adaptive regridding, set the new weights
+ * and solve again from the current grid. NULL removes it. */
+EG2D_API int eg2d_set_weight(eg2d_grid *grid, const double *w);
 
 #ifdef __cplusplus
 }

@@ -2,6 +2,7 @@
 // guard(), and guard() turns any exception into a status code and a message:
 // nothing is thrown across the C interface, nothing aborts.
 #pragma once
+#include <array>
 #include <cmath>
 #include <new>
 #include <string>
@@ -14,6 +15,9 @@ struct eg2d_grid {
     explicit eg2d_grid(int ni, int nj) : gen(ni, nj) {}
     eg2d::Generator gen;
     mutable std::string last_error;
+    // Wall sides for EG2D_ORTHO_WALL (height; < 0: not a wall), kept across
+    // eg2d_set_orthogonality calls.
+    std::array<double, 4> wall_height{{-1.0, -1.0, -1.0, -1.0}};
 };
 
 namespace eg2d {

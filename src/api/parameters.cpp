@@ -17,7 +17,19 @@ const ParameterInfo kParameters[] = {
     {EG2D_PARAM_DIVERGENCE_FACTOR, "divergence_factor", 10.0, 1e12, false, false, false, false,
      &Settings::divergence_factor},
     {EG2D_PARAM_FOLD_CHECK, "fold_check", 0.0, 1.0, false, false, true, false, &Settings::fold_check},
+    // Controls.
+    {EG2D_PARAM_WALL_DECAY, "wall_decay", 0.01, 10.0, false, false, false, false, &Settings::wall_decay},
+    {EG2D_PARAM_WALL_RELAXATION, "wall_relaxation", 0.0, 1.0, true, false, false, false,
+     &Settings::wall_relaxation},
+    {EG2D_PARAM_HERMITE_SPACING, "hermite_spacing", 0.0, 10.0, true, false, false, false, &Settings::hermite_spacing},
     {EG2D_PARAM_SVG_QUALITY, "svg_quality", -1.0, 99.0, false, false, true, false, &Settings::svg_quality},
+    // Approximate factorisation (src/solvers/af.cpp).
+    {EG2D_PARAM_AF_DTAU_MIN, "af_dtau_min", 0.0, 1e12, true, false, false, false, &Settings::af_dtau_min},
+    {EG2D_PARAM_AF_DTAU_MAX, "af_dtau_max", 0.0, 1e12, true, false, false, true, &Settings::af_dtau_max},
+    {EG2D_PARAM_AF_STEPS, "af_steps", 4.0, 1000.0, false, false, true, true, &Settings::af_steps},
+    {EG2D_PARAM_AF_A, "af_a", -1.0, 10.0, true, false, false, false, &Settings::af_a},
+    {EG2D_PARAM_AF_B, "af_b", 0.0, 10.0, true, false, false, false, &Settings::af_b},
+    {EG2D_PARAM_AF_RELAXATION, "af_relaxation", 0.0, 4.0, true, true, false, true, &Settings::af_relaxation},
 };
 }  // namespace
 
@@ -38,6 +50,12 @@ void check_parameter(const ParameterInfo &p, double v) {
                                        p.zero_means_auto ? " (or 0 for automatic)" : ""));
     if (p.integer && v != std::floor(v))
         fail(Failure::Argument, format("%s = %g: must be a whole number", p.name, v));
+}
+
+void check_settings(const Settings &s) {
+    if (s.af_dtau_max > 0.0 && s.af_dtau_min > s.af_dtau_max)
+        fail(Failure::Argument, format("af_dtau_min = %g > af_dtau_max = %g: the cycle needs min <= max",
+                                       s.af_dtau_min, s.af_dtau_max));
 }
 
 }  // namespace api

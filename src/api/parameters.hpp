@@ -20,6 +20,9 @@ struct ParameterInfo {
 const ParameterInfo *find_parameter(int id);
 // Throws Argument with the parameter's name and bounds when out of range.
 void check_parameter(const ParameterInfo &p, double value);
+// Throws Argument when settings that depend on each other disagree
+// (af_dtau_min > af_dtau_max).
+void check_settings(const Settings &settings);
 
 }  // namespace api
 }  // namespace eg2d

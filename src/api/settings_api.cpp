@@ -12,7 +12,10 @@ int set_param(eg2d_grid *grid, const char *function, int param, double value) {
         const ParameterInfo *p = find_parameter(param);
         require(p != nullptr, format("parameter %d: no such parameter", param));
         check_parameter(*p, value);
-        grid->gen.settings.*(p->field) = value;
+        Settings next = grid->gen.settings;
+        next.*(p->field) = value;
+        check_settings(next);
+        grid->gen.settings = next;
     });
 }
 }  // namespace
@@ -56,6 +59,31 @@ EG2D_API int eg2d_set_tolerance(eg2d_grid *grid, double tolerance) {
 
 EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations) {
     return set_param(grid, "eg2d_set_max_iterations", EG2D_PARAM_MAX_ITERATIONS, max_iterations);
+}
+
+EG2D_API int eg2d_set_af_cycle(eg2d_grid *grid, double dtau_min, double dtau_max, int steps) {
+    return guard(grid, "eg2d_set_af_cycle", [&] {
+        const struct { int id; double value; } in[] = {
+            {EG2D_PARAM_AF_DTAU_MIN, dtau_min}, {EG2D_PARAM_AF_DTAU_MAX, dtau_max}, {EG2D_PARAM_AF_STEPS, static_cast<double>(steps)}};
+        Settings next = grid->gen.settings;
+        for (const auto &v : in) {
+            const ParameterInfo *p = find_parameter(v.id);
+            check_parameter(*p, v.value);
+            next.*(p->field) = v.value;
+        }
+        check_settings(next);
+        grid->gen.settings = next;
+    });
+}
+
+EG2D_API int eg2d_set_af_time_rule(eg2d_grid *grid, double a, double b) {
+    return guard(grid, "eg2d_set_af_time_rule", [&] {
+        const ParameterInfo *pa = find_parameter(EG2D_PARAM_AF_A), *pb = find_parameter(EG2D_PARAM_AF_B);
+        check_parameter(*pa, a);
+        check_parameter(*pb, b);
+        grid->gen.settings.af_a = a;
+        grid->gen.settings.af_b = b;
+    });
 }
 
 EG2D_API int eg2d_set_parameter(eg2d_grid *grid, int param, double value) {

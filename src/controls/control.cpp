@@ -2,7 +2,8 @@
 
 namespace eg2d {
 
-ControlSet::ControlSet(const ControlSet &other) : fields_(other.fields_), stale_(other.stale_) {
+ControlSet::ControlSet(const ControlSet &other)
+    : static_(other.static_), fields_(other.fields_), stale_(other.stale_) {
     for (const auto &c : other.controls_) controls_.push_back(c->clone());
 }
 
@@ -14,19 +15,64 @@ ControlSet &ControlSet::operator=(const ControlSet &other) {
     return *this;
 }
 
+void ControlSet::put(std::unique_ptr<Control> c) {
+    if (c->kind() == ControlKind::Other) return add(std::move(c));
+    for (auto &old : controls_)
+        if (old->kind() == c->kind()) {
+            old = std::move(c);
+            stale_ = true;
+            return;
+        }
+    controls_.push_back(std::move(c));
+    stale_ = true;
+}
+
+void ControlSet::remove(ControlKind k) {
+    for (auto it = controls_.begin(); it != controls_.end(); ++it)
+        if ((*it)->kind() == k) {
+            controls_.erase(it);
+            stale_ = true;
+            return;
+        }
+}
+
+Control *ControlSet::find(ControlKind k) {
+    for (auto &c : controls_)
+        if (c->kind() == k) return c.get();
+    return nullptr;
+}
+
 bool ControlSet::has_dynamic() const {
     for (const auto &c : controls_)
         if (c->dynamic()) return true;
     return false;
 }
 
+void ControlSet::sum_dynamic(const Grid &grid) {
+    ControlFields next = static_;
+    for (const auto &c : controls_)
+        if (c->dynamic()) c->add_to(grid, next);
+    fields_ = std::move(next);  // same object: a Problem holding a reference sees it
+}
+
 const ControlFields &ControlSet::update(const Grid &grid, bool start_of_run) {
-    if (stale_ || start_of_run || has_dynamic()) {
+    if (stale_ || start_of_run) {
         ControlFields next;
-        for (const auto &c : controls_) c->add_to(grid, next);
-        fields_ = std::move(next);
+        for (const auto &c : controls_)
+            if (!c->dynamic()) c->add_to(grid, next);
+        static_ = std::move(next);
         stale_ = false;
     }
+    if (has_dynamic()) sum_dynamic(grid);
+    else fields_ = static_;
+    return fields_;
+}
+
+const ControlFields &ControlSet::advance(const Grid &grid, const Settings &settings) {
+    if (stale_) update(grid, true);
+    for (const auto &c : controls_)
+        if (c->dynamic()) c->advance(grid, static_, settings);
+    sum_dynamic(grid);
     return fields_;
 }
 

@@ -6,20 +6,30 @@
 #include <vector>
 
 #include "controls/control_fields.hpp"
+#include "core/settings.hpp"
 #include "grid/grid.hpp"
 
 namespace eg2d {
+
+// Which API call owns a control: a grid has at most one control of each kind
+// (line and point sources share one); Other is any number of unnamed terms.
+enum class ControlKind { Other, Sources, Arrays, Orthogonality, ParameterGrid, Weight };
 
 class Control {
 public:
     virtual ~Control() = default;
     virtual std::unique_ptr<Control> clone() const = 0;
-    // Adds this term to `fields` for the grid as it is now.
+    virtual ControlKind kind() const { return ControlKind::Other; }
+    // Adds this term to `fields` for the grid as it is now. Never changes the
+    // control's state: the residual and the run see the same fields.
     virtual void add_to(const Grid &grid, ControlFields &fields) const = 0;
-    // True for terms that depend on the interior grid and are recomputed
+    // True for terms that depend on the interior grid and are updated
     // between iterations (wall orthogonality); false for terms fixed by the
     // boundary or the user's input, computed once per run.
     virtual bool dynamic() const { return false; }
+    // Dynamic terms: one update of the state from the grid, given the sum of
+    // every static term (`others`). Called by the run before each iteration.
+    virtual void advance(const Grid &, const ControlFields & /*others*/, const Settings &) {}
 };
 
 // The controls of a grid and the fields they add up to.
@@ -31,19 +41,28 @@ public:
     ControlSet(ControlSet &&) = default;
     ControlSet &operator=(ControlSet &&) = default;
 
+    // Adds a term; put() replaces the control of the same kind, if any.
     void add(std::unique_ptr<Control> c) { controls_.push_back(std::move(c)); stale_ = true; }
-    void clear() { controls_.clear(); fields_.clear(); stale_ = true; }
+    void put(std::unique_ptr<Control> c);
+    void remove(ControlKind k);
+    Control *find(ControlKind k);
+    void clear() { controls_.clear(); fields_.clear(); static_.clear(); stale_ = true; }
     bool empty() const { return controls_.empty(); }
     bool has_dynamic() const;
 
-    // Recomputes the fields if anything changed (or always, for dynamic terms).
+    // Recomputes the fields if anything changed (or always at the start of a run).
     const ControlFields &update(const Grid &grid, bool start_of_run);
+    // One update of the dynamic terms, then the fields (same object as fields()).
+    const ControlFields &advance(const Grid &grid, const Settings &settings);
     const ControlFields &fields() const { return fields_; }
     void invalidate() { stale_ = true; }
 
 private:
+    void sum_dynamic(const Grid &grid);
+
     std::vector<std::unique_ptr<Control>> controls_;
-    ControlFields fields_;
+    ControlFields static_;  // the static terms alone
+    ControlFields fields_;  // everything
     bool stale_ = true;
 };
 

@@ -44,12 +44,20 @@ Generator::Generator(int ni, int nj)
     : grid_(ni, nj), solver_info_(find_solver(EG2D_SOLVER_PSOR)), solver_(solver_info_->make()) {}
 
 void Generator::set_topology(Topology t) {
-    if (t == Topology::C) fail(Failure::Unsupported, "the C-grid topology is not built into this library yet");
     Grid next(grid_);
     next.set_topology(t);
     grid_ = std::move(next);
+    motions_.clear();
     changed_start();
     controls_.invalidate();
+}
+
+void Generator::drop_motion(Side s) {
+    for (std::size_t k = 0; k < motions_.size(); ++k)
+        if (motions_[k]->side() == s) {
+            motions_.erase(motions_.begin() + static_cast<std::ptrdiff_t>(k));
+            return;
+        }
 }
 
 void Generator::changed_boundary() {
@@ -63,6 +71,7 @@ void Generator::changed_start() {
 
 void Generator::set_coordinates(const double *x, const double *y) {
     grid_.set_coordinates(x, y);
+    motions_.clear();  // the user's boundary is the boundary now
     changed_start();
     controls_.invalidate();
 }
@@ -74,9 +83,9 @@ void Generator::initialize(int method) {
         fail(Failure::State, format("the boundary is not complete: side %s not set", missing_sides(grid_).c_str()));
     check_extent(grid_);
     Grid next(grid_);
-    m->fill(next);
-    check_finite("initial x", next.x.data(), next.size());
-    check_finite("initial y", next.y.data(), next.size());
+    m->fill(next, settings);
+    check_coordinates("initial x", next.x.data(), next.size());
+    check_coordinates("initial y", next.y.data(), next.size());
     next.mark_initialized();
     grid_ = std::move(next);
     changed_start();
@@ -127,9 +136,22 @@ ResidualInfo Generator::residual() const {
 }
 
 Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
+    // The control terms are coefficients of the quasi-linear (Winslow/TTM)
+    // equation; Laplace has no place for them, and silently dropping the
+    // user's controls would hand back a grid they did not ask for.
+    if (system_ == System::Laplace && !controls_.empty())
+        fail(Failure::State, "control terms are set but the system is Laplace: controls need "
+                             "EG2D_SYSTEM_WINSLOW (or clear the controls)");
     ensure_ready();
     const ControlFields &fields = controls_.update(grid_, true);
-    Problem problem{grid_, system_, fields, settings};
+    // The automatic relaxation factor is an over-relaxation (seed 003's
+    // optimum for Laplace). While a wall control is updated between sweeps
+    // its strong first-order terms (rows that are not diagonally dominant
+    // next to a sharp convex corner, the NACA0012 trailing edge) make
+    // over-relaxation diverge: automatic means 1 then.
+    Settings run_settings = settings;
+    if (controls_.has_dynamic() && run_settings.relaxation == 0.0) run_settings.relaxation = 1.0;
+    Problem problem{grid_, system_, fields, run_settings};
     const double extent = grid_.extent();
     double r = eg2d::residual(system_, problem.level(), extent).value;
     double best = r;
@@ -137,8 +159,9 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
         if (stop_at_tolerance && r <= settings.tolerance) return RunEnd::Converged;
         saved_x_ = grid_.x;
         saved_y_ = grid_.y;
-        if (it > 0 && controls_.has_dynamic()) controls_.update(grid_, false);
+        if (controls_.has_dynamic()) controls_.advance(grid_, settings);
         solver_->iterate(problem);
+        for (const auto &m : motions_) m->apply(grid_);  // sliding sides follow the interior
         const ResidualInfo ri = eg2d::residual(system_, problem.level(), extent);
         if (!std::isfinite(ri.value) ||
             (ri.value > settings.divergence_factor * best && ri.value > kDivergenceFloor)) {
@@ -158,6 +181,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
         }
         ++iterations_;
         r = ri.value;
+        solver_->observe(r);
         best = std::min(best, r);
         if (monitor && monitor(iterations_, r))
             fail(Failure::Interrupted,

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "controls/control.hpp"
+#include "grid/boundary_motion.hpp"
 #include "core/settings.hpp"
 #include "grid/grid.hpp"
 #include "operator/operator.hpp"
@@ -25,8 +26,23 @@ public:
 
     // Each of these has the strong guarantee: on a throw nothing changed.
     void set_topology(Topology t);
-    void set_side(Side s, const double *x, const double *y) { grid_.set_side(s, x, y); changed_boundary(); }
-    void set_boundary(const double *x, const double *y) { grid_.set_boundary(x, y); changed_boundary(); }
+    // Setting a side's points ends any sliding of that side.
+    void set_side(Side s, const double *x, const double *y) {
+        grid_.set_side(s, x, y);
+        drop_motion(s);
+        changed_boundary();
+    }
+    void set_boundary(const double *x, const double *y) {
+        grid_.set_boundary(x, y);
+        motions_.clear();
+        changed_boundary();
+    }
+    // A side whose nodes slide (applied after every iteration); replaces any
+    // motion of the same side. Call after setting the side's points.
+    void set_motion(std::shared_ptr<const BoundaryMotion> m) {
+        drop_motion(m->side());
+        motions_.push_back(std::move(m));
+    }
     void set_coordinates(const double *x, const double *y);
     void initialize(int method);
     void set_system(System s);
@@ -55,6 +71,7 @@ public:
 
 private:
     void changed_boundary();
+    void drop_motion(Side s);
     void changed_start();
     void ensure_ready();
     enum class RunEnd { Done, Converged, Limit };
@@ -67,6 +84,7 @@ private:
     std::unique_ptr<Solver> solver_;
     int iterations_ = 0;
     std::vector<double> saved_x_, saved_y_;  // the last good grid of a run
+    std::vector<std::shared_ptr<const BoundaryMotion>> motions_;
 };
 
 }  // namespace eg2d

@@ -11,7 +11,19 @@ struct Settings {
     double max_iterations = 100000;   // per eg2d_solve call
     double divergence_factor = 1e4;   // residual > factor * best of the run = divergence
     double fold_check = 1;            // 1: solve fails with Folded on a folded converged grid
+    // Wall orthogonality (src/controls/wall.cpp).
+    double wall_decay = 0.3;          // a: the wall control decays as exp(-a (m-1)) at depth m
+    double wall_relaxation = 0.1;     // under-relaxation of its updates, (0, 1]
+    double hermite_spacing = 1.0;     // EG2D_INIT_HERMITE's alpha (seed 001 eq 2.6)
     double svg_quality = -1;          // EG2D_QUALITY_* colouring SVG cells, -1 none
+
+    // Approximate factorisation (seed 004 eqs 5-13); 0 = automatic where allowed.
+    double af_dtau_min = 0.5;         // smallest step of the cycle, in units of 1/(2(alpha+gamma))
+    double af_dtau_max = 0.0;         // largest step; 0: from the grid size
+    double af_steps = 0.0;            // steps per cycle M (end points repeated); 0: from the ratio
+    double af_a = 0.0;                // Warming-Beam a (Euler implicit a = 0, b = 1)
+    double af_b = 1.0;                // Warming-Beam b
+    double af_relaxation = 0.0;       // omega of eq 7; 0: automatic
 };
 
 }  // namespace eg2d

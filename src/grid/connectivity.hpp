@@ -19,6 +19,13 @@ struct Stencil {
 class Connectivity {
 public:
     Connectivity(int ni, int nj, Topology topology) : ni_(ni), nj_(nj), topology_(topology) {}
+    // C-grid with a wake cut: JMIN nodes i = 0..wake run along the lower wake
+    // from the outflow to the trailing edge (i = wake), and node (i, 0) is the
+    // same point as (ni-1-i, 0) on the upper wake. Nodes (i, 0), 0 < i < wake,
+    // are unknowns whose south neighbours lie across the cut in row j = 1 of
+    // the upper half; the upper copies are kept equal by sync_node.
+    // wake = 0: the cut is not known yet (no unknowns on it).
+    Connectivity(int ni, int nj, Topology topology, int wake);
 
     int ni() const { return ni_; }
     int nj() const { return nj_; }
@@ -38,6 +45,18 @@ public:
     const std::vector<Node> &extra_unknowns() const { return extra_; }
     // Number of distinct columns in i (ni-1 on a periodic grid).
     int i_period() const { return ni_ - 1; }
+    // The connectivity of the grid coarsened by si in i and sj in j (every
+    // si-th column, every sj-th row), for multigrid: a C-grid keeps its cut
+    // when the trailing edge falls on a coarse column (wake % si == 0), else
+    // the coarse cut is fixed (wake 0).
+    Connectivity coarsened(int si, int sj) const {
+        const int wake = (topology_ == Topology::C && wake_ % si == 0) ? wake_ / si : 0;
+        return Connectivity((ni_ - 1) / si + 1, (nj_ - 1) / sj + 1, topology_, wake);
+    }
+    // C-grid: the trailing-edge index on JMIN (0 for the other topologies).
+    int wake() const { return wake_; }
+    // C-grid: is (i, 0) a wake node solved for (0 < i < wake)?
+    bool on_cut(int i, int j) const { return j == 0 && i > 0 && i < wake_; }
 
     Stencil stencil(int i, int j) const {
         int iw = i - 1, ie = i + 1;
@@ -47,6 +66,13 @@ public:
         }
         const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(ni_) * j;
         const std::ptrdiff_t up = row + ni_, down = row - ni_;
+        if (on_cut(i, j)) {
+            // Across the wake cut: "row -1" of the lower half is row 1 of the
+            // upper half, read in reversed i (column i-1 there is ni-i, ...).
+            const std::ptrdiff_t m = ni_ - 1;
+            return Stencil{row + i, row + ie, row + iw, up + i, up + (m - i),
+                           up + ie, up + iw, up + (m - ie), up + (m - iw)};
+        }
         return Stencil{row + i, row + ie, row + iw, up + i, down + i,
                        up + ie, up + iw, down + ie, down + iw};
     }
@@ -56,6 +82,8 @@ public:
         if (periodic_i() && i == 0) {
             const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(ni_) * j;
             f[row + ni_ - 1] = f[row];
+        } else if (on_cut(i, j)) {
+            f[ni_ - 1 - i] = f[i];
         }
     }
     // The same for a whole field.
@@ -64,6 +92,7 @@ public:
 private:
     int ni_, nj_;
     Topology topology_;
+    int wake_ = 0;
     std::vector<Node> extra_;
 };
 

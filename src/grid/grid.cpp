@@ -12,8 +12,6 @@ namespace eg2d {
 namespace {
 // Relative tolerance on the domain size for corners that must coincide.
 constexpr double kCornerTolerance = 1e-8;
-// Largest accepted |coordinate|: (2e75)^4 is still far below DBL_MAX.
-constexpr double kMaxCoordinate = 1e75;
 
 // Index of the p-th point of side s (increasing index along the side).
 std::size_t side_index(int ni, int nj, Side s, int p) {
@@ -37,6 +35,18 @@ std::vector<double> allocate(std::size_t n) {
 }
 }  // namespace
 
+std::size_t side_node(const Grid &g, Side s, int p, int depth) {
+    const int ni = g.ni(), nj = g.nj();
+    int i = 0, j = 0;
+    switch (s) {
+    case Side::JMin: i = p; j = depth; break;
+    case Side::JMax: i = p; j = nj - 1 - depth; break;
+    case Side::IMin: i = depth; j = p; break;
+    case Side::IMax: i = ni - 1 - depth; j = p; break;
+    }
+    return static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * static_cast<std::size_t>(j);
+}
+
 const char *side_name(Side s) {
     switch (s) {
     case Side::JMin: return "JMIN";
@@ -47,15 +57,13 @@ const char *side_name(Side s) {
     return "?";
 }
 
-void check_finite(const char *what, const double *v, std::size_t n) {
+void check_coordinates(const char *what, const double *v, std::size_t n) {
     for (std::size_t k = 0; k < n; ++k) {
         if (!std::isfinite(v[k]))
             fail(Failure::Argument, format("%s[%zu] = %g: coordinates must be finite", what, k, v[k]));
-        // The operator squares and multiplies coordinate differences (J^2 is a
-        // 4th power): beyond this magnitude they overflow to Inf (found by fuzz_api).
         if (std::fabs(v[k]) > kMaxCoordinate)
             fail(Failure::Argument, format("%s[%zu] = %g: coordinates must be within +-%g (the metric terms "
-                                           "would overflow); scale the domain", what, k, v[k], kMaxCoordinate));
+                                           "grow as their fourth power)", what, k, v[k], kMaxCoordinate));
     }
 }
 
@@ -76,6 +84,8 @@ Grid::Grid(int ni, int nj) : ni_(ni), nj_(nj), connectivity_(ni, nj, Topology::S
 void Grid::set_topology(Topology t) {
     if (t == Topology::O && ni_ < 4)
         fail(Failure::Argument, format("ni = %d: an O-grid needs at least 4", ni_));
+    if (t == Topology::C && ni_ < 7)
+        fail(Failure::Argument, format("ni = %d: a C-grid needs at least 7 (wake, airfoil, wake)", ni_));
     connectivity_ = Connectivity(ni_, nj_, t);
     sides_set_ = 0;
     initialized_ = false;
@@ -162,17 +172,45 @@ void Grid::check_corners(Side s, const double *px, const double *py) const {
     }
 }
 
+int Grid::detect_wake(const double *px, const double *py) const {
+    // The wake cut is the leading run of JMIN points that coincide with their
+    // mirror images i <-> ni-1-i; its last point is the trailing edge.
+    double xmin = px[0], xmax = px[0], ymin = py[0], ymax = py[0];
+    for (int p = 1; p < ni_; ++p) {
+        xmin = std::min(xmin, px[p]); xmax = std::max(xmax, px[p]);
+        ymin = std::min(ymin, py[p]); ymax = std::max(ymax, py[p]);
+    }
+    const double tol = kCornerTolerance * std::hypot(xmax - xmin, ymax - ymin);
+    auto same = [&](int i) { return std::hypot(px[i] - px[ni_ - 1 - i], py[i] - py[ni_ - 1 - i]) <= tol; };
+    if (!same(0))
+        fail(Failure::Boundary,
+             format("C-grid side JMIN: its first point (%.17g, %.17g) and last point (%.17g, %.17g) must coincide "
+                    "(the outflow end of the wake cut)", px[0], py[0], px[ni_ - 1], py[ni_ - 1]));
+    int wake = 0;
+    while (wake + 1 < (ni_ - 1) / 2 && same(wake + 1)) ++wake;
+    if (wake < 1)
+        fail(Failure::Boundary,
+             format("C-grid side JMIN: points 1 and %d, (%.17g, %.17g) and (%.17g, %.17g), differ: the wake cut needs "
+                    "at least its outflow point and the trailing edge on both halves", ni_ - 2, px[1], py[1],
+                    px[ni_ - 2], py[ni_ - 2]));
+    if (wake + 1 >= (ni_ - 1) / 2)
+        fail(Failure::Boundary, format("C-grid side JMIN: points 0..%d all coincide with their mirror images: "
+                                       "no body between the wake halves", wake));
+    return wake;
+}
+
 void Grid::set_side(Side s, const double *px, const double *py) {
     if (!has_side(s))
         fail(Failure::Argument, format("side %s: an %s has only the sides JMIN (inner) and JMAX (outer); "
                                        "IMIN/IMAX is its periodic cut", side_name(s), topology_name(topology())));
     const int n = side_length(s);
-    check_finite(s == Side::JMin ? "JMIN x" : s == Side::IMax ? "IMAX x" : s == Side::JMax ? "JMAX x" : "IMIN x",
+    check_coordinates(s == Side::JMin ? "JMIN x" : s == Side::IMax ? "IMAX x" : s == Side::JMax ? "JMAX x" : "IMIN x",
                  px, static_cast<std::size_t>(n));
-    check_finite(s == Side::JMin ? "JMIN y" : s == Side::IMax ? "IMAX y" : s == Side::JMax ? "JMAX y" : "IMIN y",
+    check_coordinates(s == Side::JMin ? "JMIN y" : s == Side::IMax ? "IMAX y" : s == Side::JMax ? "JMAX y" : "IMIN y",
                  py, static_cast<std::size_t>(n));
     if (connectivity_.periodic_i()) check_closed(s, px, py, n);
     else check_corners(s, px, py);
+    const int wake = (topology() == Topology::C && s == Side::JMin) ? detect_wake(px, py) : -1;
     for (int p = 0; p < n; ++p) {
         const std::size_t k = side_index(ni_, nj_, s, p);
         x[k] = px[p];
@@ -182,6 +220,13 @@ void Grid::set_side(Side s, const double *px, const double *py) {
         const std::size_t k0 = side_index(ni_, nj_, s, 0), k1 = side_index(ni_, nj_, s, n - 1);
         x[k1] = x[k0];
         y[k1] = y[k0];
+    }
+    if (wake >= 0) {  // the upper wake holds the lower wake's points exactly
+        for (int i = 0; i <= wake; ++i) {
+            x[static_cast<std::size_t>(ni_ - 1 - i)] = x[static_cast<std::size_t>(i)];
+            y[static_cast<std::size_t>(ni_ - 1 - i)] = y[static_cast<std::size_t>(i)];
+        }
+        connectivity_ = Connectivity(ni_, nj_, Topology::C, wake);
     }
     sides_set_ |= 1u << static_cast<int>(s);
 }
@@ -209,8 +254,8 @@ void Grid::set_boundary(const double *px, const double *py) {
 }
 
 void Grid::set_coordinates(const double *px, const double *py) {
-    check_finite("x", px, size());
-    check_finite("y", py, size());
+    check_coordinates("x", px, size());
+    check_coordinates("y", py, size());
     Grid trial(*this);
     trial.sides_set_ = 0;
     if (connectivity_.periodic_i()) {

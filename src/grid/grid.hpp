@@ -51,6 +51,8 @@ public:
 private:
     void check_corners(Side s, const double *px, const double *py) const;
     void check_closed(Side s, const double *px, const double *py, int n) const;
+    // C-grid: the trailing-edge index of a JMIN side (throws Boundary).
+    int detect_wake(const double *px, const double *py) const;
 
     int ni_, nj_;
     Connectivity connectivity_;
@@ -58,7 +60,16 @@ private:
     bool initialized_ = false;
 };
 
-// Checks every value is finite; names the array and the first bad index.
-void check_finite(const char *what, const double *v, std::size_t n);
+// Array index of the p-th node of side s (increasing index along the side),
+// or of the node `depth` lines into the domain from it.
+std::size_t side_node(const Grid &g, Side s, int p, int depth = 0);
+
+// Largest coordinate magnitude accepted: J^2 grows as the fourth power of the
+// coordinates, so much larger values would overflow the metric terms.
+constexpr double kMaxCoordinate = 1e30;
+
+// Checks every value is finite and within +-kMaxCoordinate; names the array
+// and the first bad index.
+void check_coordinates(const char *what, const double *v, std::size_t n);
 
 }  // namespace eg2d

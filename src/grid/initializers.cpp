@@ -7,6 +7,7 @@ namespace eg2d {
 namespace {
 const InitMethod kMethods[] = {
     {EG2D_INIT_TFI, "tfi", tfi_linear},
+    {EG2D_INIT_HERMITE, "hermite", tfi_hermite},
 };
 }
 

@@ -1,6 +1,7 @@
 // Initial-grid methods, selected by their EG2D_INIT_* id. Adding one is adding
 // a file with its function and a line in initializers.cpp.
 #pragma once
+#include "core/settings.hpp"
 #include "grid/grid.hpp"
 
 namespace eg2d {
@@ -10,12 +11,13 @@ struct InitMethod {
     const char *name;
     // Fills the interior (and the O-grid cut) of a grid whose boundary is
     // complete. May throw; callers run it on a copy.
-    void (*fill)(Grid &grid);
+    void (*fill)(Grid &grid, const Settings &settings);
 };
 
 // nullptr if no method has that id.
 const InitMethod *find_init_method(int id);
 
-void tfi_linear(Grid &grid);  // tfi.cpp
+void tfi_linear(Grid &grid, const Settings &settings);   // tfi.cpp
+void tfi_hermite(Grid &grid, const Settings &settings);  // tfi_hermite.cpp
 
 }  // namespace eg2d

@@ -4,7 +4,7 @@
 
 namespace eg2d {
 
-void tfi_linear(Grid &g) {
+void tfi_linear(Grid &g, const Settings &) {
     const int ni = g.ni(), nj = g.nj();
     auto at = [ni](int i, int j) { return static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * j; };
     for (double *f : {g.x.data(), g.y.data()}) {

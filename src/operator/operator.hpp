@@ -62,15 +62,19 @@ inline Metrics node_metrics(const Level &L, const Stencil &s) {
     return m;
 }
 
-inline NodeEquation node_equation(System system, const Level &L, const Stencil &s) {
+// `metrics`, if given, receives the coefficients used (Laplace: alpha = gamma
+// = 1, beta = C = 0), for line solvers that need both.
+inline NodeEquation node_equation(System system, const Level &L, const Stencil &s, Metrics *metrics = nullptr) {
     const double *x = L.x, *y = L.y;
     NodeEquation eq;
     if (system == System::Laplace) {
         eq.rx = x[s.e] + x[s.w] + x[s.n] + x[s.s] - 4.0 * x[s.c];
         eq.ry = y[s.e] + y[s.w] + y[s.n] + y[s.s] - 4.0 * y[s.c];
         eq.diag = 4.0;
+        if (metrics) *metrics = Metrics{1.0, 0.0, 1.0, 1.0, 0.0, 0.0};
     } else {
         const Metrics m = node_metrics(L, s);
+        if (metrics) *metrics = m;
         const double xxixi = x[s.e] - 2.0 * x[s.c] + x[s.w], yxixi = y[s.e] - 2.0 * y[s.c] + y[s.w];
         const double xetaeta = x[s.n] - 2.0 * x[s.c] + x[s.s], yetaeta = y[s.n] - 2.0 * y[s.c] + y[s.s];
         const double xxieta = 0.25 * (x[s.ne] - x[s.se] - x[s.nw] + x[s.sw]);

@@ -26,16 +26,7 @@ OrthogonalitySummary boundary_orthogonality(const Grid &g, Side side) {
     const int n = along_i ? ni : nj;
     const bool closed = along_i && g.connectivity().periodic_i();
     // Node m of the side, and the node one step into the domain from it.
-    auto node = [&](int m, int inward) -> std::size_t {
-        int i = 0, j = 0;
-        switch (side) {
-        case Side::JMin: i = m; j = inward; break;
-        case Side::JMax: i = m; j = nj - 1 - inward; break;
-        case Side::IMin: i = inward; j = m; break;
-        case Side::IMax: i = ni - 1 - inward; j = m; break;
-        }
-        return static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * j;
-    };
+    auto node = [&](int m, int inward) { return side_node(g, side, m, inward); };
     OrthogonalitySummary s;
     const int first = closed ? 0 : 1, last = closed ? n - 2 : n - 2;  // closed: node n-1 is node 0
     int count = 0;

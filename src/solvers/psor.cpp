@@ -3,6 +3,7 @@
 // coefficients are frozen at each node's current neighbours (Picard).
 #include <cmath>
 
+#include "solvers/auto_relaxation.hpp"
 #include "solvers/solver.hpp"
 
 namespace eg2d {
@@ -13,27 +14,34 @@ double optimal_sor_omega(int n1, int n2) {
     return 4.0 / (2.0 + std::sqrt(4.0 - c * c));
 }
 
+void sor_sweep(System system, const Level &L, double omega) {
+    const Connectivity &conn = *L.conn;
+    auto relax = [&](int i, int j) {
+        const Stencil s = conn.stencil(i, j);
+        const NodeEquation eq = node_equation(system, L, s);
+        L.x[s.c] += omega * eq.rx / eq.diag;
+        L.y[s.c] += omega * eq.ry / eq.diag;
+        conn.sync_node(L.x, i, j);
+        conn.sync_node(L.y, i, j);
+    };
+    for (int j = conn.j_begin(); j < conn.j_end(); ++j)
+        for (int i = conn.i_begin(); i < conn.i_end(); ++i) relax(i, j);
+    for (const Connectivity::Node &n : conn.extra_unknowns()) relax(n.i, n.j);
+}
+
 namespace {
 
 class PointSor final : public Solver {
 public:
     void iterate(Problem &p) override {
         const Level L = p.level();
-        const Connectivity &conn = *L.conn;
-        const double omega =
-            p.settings.relaxation > 0.0 ? p.settings.relaxation : optimal_sor_omega(conn.ni(), conn.nj());
-        auto relax = [&](int i, int j) {
-            const Stencil s = conn.stencil(i, j);
-            const NodeEquation eq = node_equation(p.system, L, s);
-            L.x[s.c] += omega * eq.rx / eq.diag;
-            L.y[s.c] += omega * eq.ry / eq.diag;
-            conn.sync_node(L.x, i, j);
-            conn.sync_node(L.y, i, j);
-        };
-        for (int j = conn.j_begin(); j < conn.j_end(); ++j)
-            for (int i = conn.i_begin(); i < conn.i_end(); ++i) relax(i, j);
-        for (const Connectivity::Node &n : conn.extra_unknowns()) relax(n.i, n.j);
+        sor_sweep(p.system, L, relaxation_.omega(p.settings, p.system, L.conn->ni(), L.conn->nj()));
     }
+    void observe(double residual) override { relaxation_.observe(residual); }
+    void reset() override { relaxation_.reset(); }
+
+private:
+    AutoRelaxation relaxation_;
 };
 
 }  // namespace

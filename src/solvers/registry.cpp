@@ -6,10 +6,14 @@
 namespace eg2d {
 
 std::unique_ptr<Solver> make_psor();
+std::unique_ptr<Solver> make_af();
+std::unique_ptr<Solver> make_nested();
 
 namespace {
 const SolverInfo kSolvers[] = {
     {EG2D_SOLVER_PSOR, "psor", make_psor},
+    {EG2D_SOLVER_AF, "af", make_af},
+    {EG2D_SOLVER_NESTED, "nested", make_nested},
 };
 }
 

@@ -37,6 +37,8 @@ public:
     // Called when the problem changed shape (topology, size, a new start):
     // drop any cached hierarchy or time-step cycle.
     virtual void reset() {}
+    // The residual of the grid after each iteration, for solvers that adapt a setting to the convergence they see.
+    virtual void observe(double /*residual*/) {}
 };
 
 struct SolverInfo {
@@ -47,6 +49,10 @@ struct SolverInfo {
 
 // nullptr if this library has no solver with that id.
 const SolverInfo *find_solver(int id);
+
+// One lexicographic point SOR sweep over the unknowns of a level (psor.cpp);
+// the point solver and the coarse-to-fine solver share it.
+void sor_sweep(System system, const Level &L, double omega);
 
 // Seed 003's optimal SOR factor for Laplace on an N1 x N2 grid.
 double optimal_sor_omega(int n1, int n2);

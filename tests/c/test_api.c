@@ -121,6 +121,9 @@ static void test_set_side_errors(void **state) {
     y[3] = INFINITY;
     assert_int_equal(eg2d_set_side(g, EG2D_SIDE_JMIN, x, y), EG2D_ERR_ARGUMENT);
     assert_contains(eg2d_last_error(g), "JMIN y[3] = inf");
+    y[3] = -1e200; /* finite, but its fourth power would overflow the metric terms */
+    assert_int_equal(eg2d_set_side(g, EG2D_SIDE_JMIN, x, y), EG2D_ERR_ARGUMENT);
+    assert_contains(eg2d_last_error(g), "JMIN y[3] = -1e+200: coordinates must be within +-1e+30");
     y[3] = 0;
     assert_int_equal(eg2d_set_side(g, EG2D_SIDE_JMIN, x, y), EG2D_OK);
     /* IMAX starting at (1.2, 0) instead of (1, 0). */

@@ -391,8 +391,8 @@ static const bad_input rows[] = {
      KEEPS_WORK},
     {"coordinates of 1e200 (the metric terms would overflow)", "eg2d_set_side(g, JMIN, x, y), x[1] = 1.25e199",
      S_FRESH, r_huge_coords, EG2D_ERR_ARGUMENT,
-     "eg2d_set_side: JMIN x[1] = 1.25e+199: coordinates must be within +-1e+75 (the metric terms would overflow); "
-     "scale the domain",
+     "eg2d_set_side: JMIN x[1] = 1.25e+199: coordinates must be within +-1e+30 (the metric terms grow as their "
+     "fourth power)",
      0},
     {"a domain of size 1e-100 (the residual would underflow)", "eg2d_solve(g), square of side 1e-100", S_TINY,
      r_solve, EG2D_ERR_BOUNDARY,

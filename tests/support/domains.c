@@ -102,3 +102,27 @@ int domain_set_annulus(eg2d_grid *g, double ri, double ro) {
     free(y);
     return status;
 }
+
+typedef struct { double cx, radius; } far_circle;
+
+static void far_circle_fn(void *user, double t, double *x, double *y) {
+    const far_circle *c = (const far_circle *)user;
+    *x = c->cx + c->radius * cos(2 * EG2D_TEST_PI * t);
+    *y = -c->radius * sin(2 * EG2D_TEST_PI * t);
+}
+
+int domain_set_airfoil_o(eg2d_grid *g, const char *digits, double radius) {
+    far_circle fc;
+    eg2d_curve *foil = NULL, *far = NULL;
+    int status;
+    fc.cx = 0.5;
+    fc.radius = radius;
+    if ((status = eg2d_set_topology(g, EG2D_TOPO_O))) return status;
+    if ((status = eg2d_curve_naca4(digits, EG2D_NACA_CLOSED_TE, &foil))) return status;
+    status = eg2d_curve_function(far_circle_fn, &fc, &far);
+    if (!status) status = eg2d_set_side_curve(g, EG2D_SIDE_JMIN, foil, EG2D_DIST_UNIFORM, 0, 0, 0);
+    if (!status) status = eg2d_set_side_curve(g, EG2D_SIDE_JMAX, far, EG2D_DIST_UNIFORM, 0, 0, 0);
+    eg2d_curve_destroy(foil);
+    eg2d_curve_destroy(far);
+    return status;
+}

@@ -18,6 +18,12 @@ int domain_set(eg2d_grid *grid, const char *name);
  * counter-clockwise from theta = 0). Sets the topology and both sides. */
 int domain_set_annulus(eg2d_grid *grid, double r_inner, double r_outer);
 
+/* A NACA 4-digit section ("0012") with a sharp trailing edge as an O-grid:
+ * JMIN the section by arc length (from the trailing edge along the lower
+ * surface), JMAX the circle of the given radius about (0.5, 0), both
+ * clockwise from the trailing-edge side. Sets the topology and both sides. */
+int domain_set_airfoil_o(eg2d_grid *grid, const char *digits, double radius);
+
 /* Names of the simply connected domains, NULL-terminated. */
 extern const char *const domain_names[];
 

@@ -1,0 +1,263 @@
+// Wall orthogonality with a first-cell height: a Sorenson (GRAPE) /
+// Steger-Sorenson-type control, updated during the iteration.
+//
+// For each wall side and each wall node w, the node c one cell inward should
+// sit at T = r_w + h n (n the unit normal into the domain, perpendicular to
+// the wall's central tangent; h the requested height, or for height 0 the
+// current normal height, so only the angle is imposed). Before each
+// iteration we ask which control coefficients (C_xi, C_eta) would make the
+// discrete equation at c hold with c at T and its neighbours where they are:
+//   [r_xi r_eta] (C_xi, C_eta)^T = -(alpha r_xixi - 2 beta r_xieta + gamma r_etaeta) - C_others,
+// all evaluated on the 3x3 stencil with its centre at T. This is Sorenson's
+// idea of solving the wall-limit equation for P, Q with r_eta prescribed,
+// taken one cell in, where the discrete equation actually lives; at a fixed
+// point of solver and control the node is exactly at T. The coefficients
+// are scaled by the metric of the wall-normal direction (gamma for eta =
+// const walls, alpha for xi = const walls), so the normal part is a psi
+// (r_etaeta + psi r_eta: the spacing ratio of consecutive cells is
+// (1 - psi/2) / (1 + psi/2)), independent of the domain's size.
+//
+// Robustness (as in GRAPE and Hilgenstock's updates): the coefficients are
+// under-relaxed (EG2D_PARAM_WALL_RELAXATION), the normal one is limited to
+// |psi| <= 1.5 (cells at most 7 times their neighbour, central differences
+// monotone), the tangential one to |phi| <= 1; the value found at the first
+// interior row decays as exp(-a (m - 1)) at depth m (a = EG2D_PARAM_WALL_DECAY).
+// Nothing uses the wall's curvature, so straight walls with corners (seed
+// 000's channels, where Middlecoff-Thomas degenerates) are no special case.
+#include <algorithm>
+#include <cmath>
+
+#include "controls/controls.hpp"
+#include "operator/operator.hpp"
+
+namespace eg2d {
+
+namespace {
+constexpr double kPsiLimit = 3.0;
+constexpr double kPhiLimit = 1.0;
+constexpr double kWidenLimit = 4.0;
+constexpr double kMinGain = 1e-3;   // the smallest gain an oscillating node is damped to
+constexpr double kStepLimit = 0.02;  // largest change of a coefficient per update: a ramp from the start grid
+constexpr double kDecayCutoff = 1e-4;  // depths where exp(-a (m-1)) is below this get nothing
+
+bool j_side(int side) { return side == 0 || side == 2; }  // JMIN, JMAX: eta = const walls
+
+// Node (i, j) at along-wall index k and depth m from a side.
+struct Place {
+    int i, j;
+};
+Place place(const Grid &g, int side, int k, int m) {
+    switch (side) {
+    case 0: return {k, m};
+    case 2: return {k, g.nj() - 1 - m};
+    case 3: return {m, k};
+    default: return {g.ni() - 1 - m, k};
+    }
+}
+int wall_length(const Grid &g, int side) { return j_side(side) ? g.ni() : g.nj(); }
+int depth_count(const Grid &g, int side) { return j_side(side) ? g.nj() : g.ni(); }
+
+// +1 if the grid is right-handed (J > 0), from the boundary alone.
+double orientation(const Grid &g) {
+    const int ni = g.ni(), nj = g.nj();
+    double area = 0.0;
+    auto edge = [&](std::size_t a, std::size_t b) { area += g.x[a] * g.y[b] - g.x[b] * g.y[a]; };
+    auto at = [ni](int i, int j) { return static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * j; };
+    if (g.topology() == Topology::O) {
+        for (int i = 0; i + 1 < ni; ++i) edge(at(i, 0), at(i + 1, 0));
+        // A counter-clockwise inner curve has the domain on its right: with
+        // eta outward, J = r_xi x r_eta < 0.
+        return area >= 0.0 ? -1.0 : 1.0;
+    }
+    for (int i = 0; i + 1 < ni; ++i) edge(at(i, 0), at(i + 1, 0));
+    for (int j = 0; j + 1 < nj; ++j) edge(at(ni - 1, j), at(ni - 1, j + 1));
+    for (int i = ni - 1; i > 0; --i) edge(at(i, nj - 1), at(i - 1, nj - 1));
+    for (int j = nj - 1; j > 0; --j) edge(at(0, j), at(0, j - 1));
+    return area >= 0.0 ? 1.0 : -1.0;
+}
+
+class WallControl final : public Control {
+public:
+    explicit WallControl(const std::array<double, 4> &h) : height_(h) {}
+    std::unique_ptr<Control> clone() const override { return std::make_unique<WallControl>(*this); }
+    ControlKind kind() const override { return ControlKind::Orthogonality; }
+    bool dynamic() const override { return true; }
+
+    void add_to(const Grid &g, ControlFields &fields) const override {
+        for (int side = 0; side < 4; ++side) add_side(g, side, fields);
+    }
+
+    void advance(const Grid &g, const ControlFields &others, const Settings &settings) override {
+        decay_ = settings.wall_decay;
+        const double omega = settings.wall_relaxation;
+        const double orient = orientation(g);
+        for (int side = 0; side < 4; ++side) {
+            if (!active(g, side)) {
+                phi_[side].clear();
+                psi_[side].clear();
+                gain_[side].clear();
+                lastp_[side].clear();
+                lastq_[side].clear();
+                continue;
+            }
+            const int n = wall_length(g, side);
+            phi_[side].resize(static_cast<std::size_t>(n), 0.0);
+            psi_[side].resize(static_cast<std::size_t>(n), 0.0);
+            gain_[side].resize(static_cast<std::size_t>(n), 1.0);
+            lastp_[side].resize(static_cast<std::size_t>(n), 0.0);
+            lastq_[side].resize(static_cast<std::size_t>(n), 0.0);
+            // The other walls' current contributions count as "others" too.
+            ControlFields rest = others;
+            for (int o = 0; o < 4; ++o)
+                if (o != side) add_side(g, o, rest);
+            const double sign = (side == 0 || side == 1) ? orient : -orient;
+            for (int k = 0; k < n; ++k) {
+                double phi, psi;
+                if (target(g, side, k, sign, rest, phi, psi)) {
+                    double &p = phi_[side][k], &q = psi_[side][k], &gain = gain_[side][k];
+                    // A node whose update flips direction is overshooting (a
+                    // solver that converges much per iteration answers a change
+                    // at once): halve its gain; let it recover slowly otherwise.
+                    const double dp = phi - p, dq = psi - q;
+                    double &lp = lastp_[side][k], &lq = lastq_[side][k];
+                    const bool turned = dp * lp < 0.0 || dq * lq < 0.0;
+                    gain = turned ? std::max(0.5 * gain, kMinGain) : std::min(1.1 * gain, 1.0);
+                    lp = dp;
+                    lq = dq;
+                    p += std::clamp(gain * omega * dp, -kStepLimit, kStepLimit);
+                    q += std::clamp(gain * omega * dq, -kStepLimit, kStepLimit);
+                }
+            }
+        }
+    }
+
+private:
+    bool active(const Grid &g, int side) const {
+        return height_[side] >= 0.0 && g.has_side(static_cast<Side>(side)) && depth_count(g, side) >= 3;
+    }
+    bool periodic(const Grid &g, int side) const { return j_side(side) && g.topology() == Topology::O; }
+    // Along-wall indices whose depth-1 node is an unknown of this side: on a
+    // single block not the end nodes, and not the ends' neighbours when the
+    // side across that corner is a wall too (both would claim that node).
+    int k_begin(const Grid &g, int side) const {
+        if (periodic(g, side)) return 0;
+        const int across = j_side(side) ? 3 : 0;  // the side at k = 0
+        return active(g, across) ? 2 : 1;
+    }
+    int k_end(const Grid &g, int side) const {
+        if (periodic(g, side)) return g.ni() - 1;
+        const int across = j_side(side) ? 1 : 2;  // the side at k = n-1
+        return wall_length(g, side) - (active(g, across) ? 2 : 1);
+    }
+
+    // The coefficients that put the depth-1 node at its target.
+    bool target(const Grid &g, int side, int k, double sign, const ControlFields &rest, double &phi,
+                double &psi) const {
+        if (k < k_begin(g, side) || k >= k_end(g, side)) return false;
+        const Connectivity &conn = g.connectivity();
+        const int n = wall_length(g, side);
+        auto wrap = [&](int kk) {
+            if (periodic(g, side)) return (kk + (n - 1)) % (n - 1);
+            return kk;
+        };
+        const Place pw = place(g, side, k, 0), pm = place(g, side, wrap(k - 1), 0),
+                    pp = place(g, side, wrap(k + 1), 0), pc = place(g, side, k, 1);
+        const std::size_t ni = static_cast<std::size_t>(g.ni());
+        const std::size_t kw = pw.i + ni * pw.j, km = pm.i + ni * pm.j, kp = pp.i + ni * pp.j;
+        double tx = g.x[kp] - g.x[km], ty = g.y[kp] - g.y[km];
+        const double tl = std::hypot(tx, ty);
+        if (!(tl > 0.0)) return false;
+        tx /= tl;
+        ty /= tl;
+        const double nx = -ty * sign, ny = tx * sign;
+        const Stencil s = conn.stencil(pc.i, pc.j);
+        double h = height_[side];
+        if (h == 0.0) {  // orthogonality only: keep the current normal height
+            h = (g.x[s.c] - g.x[kw]) * nx + (g.y[s.c] - g.y[kw]) * ny;
+            if (!(h > 0.0)) h = std::hypot(g.x[s.c] - g.x[kw], g.y[s.c] - g.y[kw]);
+            if (!(h > 0.0)) return false;
+        }
+        // The 3x3 stencil with its centre at the target.
+        const std::ptrdiff_t idx[9] = {s.c, s.e, s.w, s.n, s.s, s.ne, s.nw, s.se, s.sw};
+        double lx[9], ly[9];
+        for (int q = 0; q < 9; ++q) {
+            lx[q] = g.x[idx[q]];
+            ly[q] = g.y[idx[q]];
+        }
+        lx[0] = g.x[kw] + h * nx;
+        ly[0] = g.y[kw] + h * ny;
+        Level L;
+        L.x = lx;
+        L.y = ly;
+        const Stencil ls{0, 1, 2, 3, 4, 5, 6, 7, 8};
+        const NodeEquation eq = node_equation(System::Winslow, L, ls);
+        const Metrics m = node_metrics(L, ls);
+        const double xxi = 0.5 * (lx[1] - lx[2]), yxi = 0.5 * (ly[1] - ly[2]);
+        const double xeta = 0.5 * (lx[3] - lx[4]), yeta = 0.5 * (ly[3] - ly[4]);
+        // The other terms' C_xi, C_eta at this node, at the target.
+        auto other = [&](Term a, Term b, Term c, Term d) {
+            double v = 0.0;
+            if (const double *f = rest.data(a)) v += m.alpha * f[s.c];
+            if (const double *f = rest.data(b)) v += m.beta * f[s.c];
+            if (const double *f = rest.data(c)) v += m.gamma * f[s.c];
+            if (const double *f = rest.data(d)) v += m.jac2 * f[s.c];
+            return v;
+        };
+        const double oxi = other(Term::AXi, Term::BXi, Term::CXi, Term::DXi);
+        const double oeta = other(Term::AEta, Term::BEta, Term::CEta, Term::DEta);
+        const double rx = -eq.rx - oxi * xxi - oeta * xeta, ry = -eq.ry - oxi * yxi - oeta * yeta;
+        const double det = xxi * yeta - xeta * yxi;
+        const double scale = j_side(side) ? m.gamma : m.alpha;
+        if (!(std::fabs(det) > 1e-12 * (m.alpha + m.gamma)) || !(scale > 0.0)) return false;
+        const double cxi = (rx * yeta - xeta * ry) / det, ceta = (xxi * ry - yxi * rx) / det;
+        // Along-wall (tangential) and wall-normal parts.
+        phi = (j_side(side) ? cxi : ceta) / scale;
+        psi = (j_side(side) ? ceta : cxi) / scale;
+        // The limits apply to the coefficients relative to the diagonal
+        // 2 (alpha + gamma): where the along-wall metric is the larger (the
+        // rounded cap round a sharp trailing edge) the node needs more.
+        const double widen = std::min((m.alpha + m.gamma) / scale, kWidenLimit);
+        phi = std::clamp(phi, -kPhiLimit * widen, kPhiLimit * widen);
+        psi = std::clamp(psi, -kPsiLimit * widen, kPsiLimit * widen);
+        if (height_[side] == 0.0) psi = 0.0;  // the normal position is left to the equation
+        if (!std::isfinite(phi) || !std::isfinite(psi)) return false;
+        return true;
+    }
+
+    void add_side(const Grid &g, int side, ControlFields &fields) const {
+        if (!active(g, side) || phi_[side].empty() || decay_ < 0.0) return;
+        const std::size_t size = g.size();
+        const Connectivity &conn = g.connectivity();
+        // eta = const walls: tangential -> c_xi, normal -> c_eta; xi = const: a_eta, a_xi.
+        std::vector<double> &T = fields.at(j_side(side) ? Term::CXi : Term::AEta, size);
+        std::vector<double> &N = fields.at(j_side(side) ? Term::CEta : Term::AXi, size);
+        const int depth = depth_count(g, side);
+        for (int m = 1; m < depth - 1; ++m) {
+            const double f = std::exp(-decay_ * (m - 1));
+            if (f < kDecayCutoff) break;
+            for (int k = k_begin(g, side); k < k_end(g, side); ++k) {
+                const Place p = place(g, side, k, m);
+                const std::size_t c = static_cast<std::size_t>(p.i) + static_cast<std::size_t>(g.ni()) * p.j;
+                T[c] += f * phi_[side][k];
+                N[c] += f * psi_[side][k];
+                conn.sync_node(T.data(), p.i, p.j);
+                conn.sync_node(N.data(), p.i, p.j);
+            }
+        }
+    }
+
+    std::array<double, 4> height_;
+    // The state: tangential (phi) and normal (psi) coefficients at depth 1,
+    // per along-wall index, and the decay they were made with.
+    std::array<std::vector<double>, 4> phi_, psi_;
+    // Per node: the gain on the relaxation and the last update's direction.
+    std::array<std::vector<double>, 4> gain_, lastp_, lastq_;
+    double decay_ = 0.0;
+};
+}  // namespace
+
+std::unique_ptr<Control> make_wall_control(const std::array<double, 4> &height) {
+    return std::make_unique<WallControl>(height);
+}
+
+}  // namespace eg2d

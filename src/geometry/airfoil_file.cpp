@@ -1,0 +1,97 @@
+// Airfoil coordinate files in the two formats of the UIUC airfoil database:
+//  Selig:    a name line, then x y pairs from the trailing edge over the upper
+//            surface to the leading edge and back along the lower surface;
+//  Lednicer: a name line, a line "NU NL" (point counts, both > 1), then the
+//            upper surface from leading to trailing edge, then the lower one.
+// Both become one spline from the trailing edge along the lower surface to
+// the leading edge and back along the upper (the orientation of make_naca4).
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "geometry/curve.hpp"
+
+namespace eg2d {
+
+namespace {
+
+struct Pair { double x, y; };
+
+// Parses "x y" (blank or comma separated); false for a line without two numbers.
+bool parse_pair(const std::string &line, Pair &p) {
+    const char *s = line.c_str();
+    char *end;
+    errno = 0;
+    p.x = std::strtod(s, &end);
+    if (end == s) return false;
+    s = end;
+    while (*s == ' ' || *s == '\t' || *s == ',') ++s;
+    p.y = std::strtod(s, &end);
+    if (end == s) return false;
+    for (s = end; *s; ++s)
+        if (!std::isspace(static_cast<unsigned char>(*s))) return false;
+    return errno == 0;
+}
+
+bool blank(const std::string &line) {
+    for (char c : line)
+        if (!std::isspace(static_cast<unsigned char>(c))) return false;
+    return true;
+}
+
+}  // namespace
+
+std::shared_ptr<Curve> read_airfoil(const char *path) {
+    std::FILE *f = std::fopen(path, "r");
+    if (!f) fail(Failure::Io, format("cannot open airfoil file \"%s\": %s", path, std::strerror(errno)));
+    std::vector<std::string> lines;
+    std::string line;
+    int c;
+    while ((c = std::fgetc(f)) != EOF) {
+        if (c == '\n') { lines.push_back(line); line.clear(); }
+        else if (c != '\r') line.push_back(static_cast<char>(c));
+    }
+    if (!line.empty()) lines.push_back(line);
+    std::fclose(f);
+    // Line 0 is the name. Collect the numeric lines with their line numbers.
+    std::vector<Pair> pts;
+    std::vector<std::size_t> at;
+    for (std::size_t k = 1; k < lines.size(); ++k) {
+        if (blank(lines[k])) continue;
+        Pair p;
+        if (!parse_pair(lines[k], p))
+            fail(Failure::Argument,
+                 format("airfoil file \"%s\", line %zu: \"%s\" is not a pair of numbers", path, k + 1, lines[k].c_str()));
+        if (!std::isfinite(p.x) || !std::isfinite(p.y))
+            fail(Failure::Argument, format("airfoil file \"%s\", line %zu: non-finite coordinate", path, k + 1));
+        pts.push_back(p);
+        at.push_back(k + 1);
+    }
+    if (pts.size() < 4) fail(Failure::Argument, format("airfoil file \"%s\": %zu points, need at least 4", path, pts.size()));
+    std::vector<double> x, y;
+    const Pair head = pts[0];
+    const bool lednicer = head.x > 1.5 && head.y > 1.5 && head.x == std::floor(head.x) && head.y == std::floor(head.y);
+    if (lednicer) {
+        const std::size_t nu = static_cast<std::size_t>(head.x), nl = static_cast<std::size_t>(head.y);
+        if (nu + nl != pts.size() - 1)
+            fail(Failure::Argument, format("Lednicer file \"%s\" (line %zu): announces %zu + %zu points but has %zu",
+                                           path, at[0], nu, nl, pts.size() - 1));
+        for (std::size_t k = nu + nl; k > nu; --k) { x.push_back(pts[k].x); y.push_back(pts[k].y); }  // lower, TE -> LE
+        for (std::size_t k = 1; k <= nu; ++k) {  // upper, LE -> TE (its LE point is the lower's)
+            if (k == 1 && pts[k].x == x.back() && pts[k].y == y.back()) continue;
+            x.push_back(pts[k].x);
+            y.push_back(pts[k].y);
+        }
+    } else {  // Selig: reverse, so the lower surface comes first
+        for (std::size_t k = pts.size(); k-- > 0;) { x.push_back(pts[k].x); y.push_back(pts[k].y); }
+    }
+    return make_spline(x.data(), y.data(), static_cast<int>(x.size()), true);
+}
+
+}  // namespace eg2d

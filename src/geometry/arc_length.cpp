@@ -1,0 +1,119 @@
+// Arc-length reparameterisation, seed 001 eq 2.11: the integral by adaptive
+// Gauss-Legendre panels, its inverse by Newton's method (as the seed says)
+// safeguarded by bisection on the panel that holds the answer.
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "geometry/curve.hpp"
+
+namespace eg2d {
+
+namespace {
+// 5-point Gauss-Legendre nodes and weights on [-1, 1].
+const double kNode[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
+                         0.9061798459386640};
+const double kWeight[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+                           0.2369268850561891};
+constexpr int kInitialPanels = 16;  // per smooth piece, before refinement
+constexpr int kMaxDepth = 30;
+constexpr double kRelativeTolerance = 1e-14;
+}  // namespace
+
+double ArcLength::speed(double t, std::size_t piece) const {
+    double dx, dy;
+    curve_->derivative(t, knots_[piece], knots_[piece + 1], dx, dy);
+    const double v = std::hypot(dx, dy);
+    if (!std::isfinite(v)) fail(Failure::Argument, format("the curve's derivative at t = %.17g is not finite", t));
+    return v;
+}
+
+double ArcLength::integrate(double a, double b, std::size_t piece) const {
+    const double m = 0.5 * (a + b), h = 0.5 * (b - a);
+    double sum = 0.0;
+    for (int k = 0; k < 5; ++k) sum += kWeight[k] * speed(m + h * kNode[k], piece);
+    return h * sum;
+}
+
+void ArcLength::refine(double a, double b, double whole, std::size_t piece, int depth, double tol) {
+    const double m = 0.5 * (a + b);
+    const double left = integrate(a, m, piece), right = integrate(m, b, piece);
+    if (depth >= kMaxDepth || std::fabs(left + right - whole) <= tol) {
+        t_.push_back(m);
+        piece_.push_back(piece);
+        cumulative_.push_back(cumulative_.back() + left);
+        t_.push_back(b);
+        piece_.push_back(piece);
+        cumulative_.push_back(cumulative_.back() + right);
+        return;
+    }
+    refine(a, m, left, piece, depth + 1, tol);
+    refine(m, b, right, piece, depth + 1, tol);
+}
+
+ArcLength::ArcLength(std::shared_ptr<const Curve> curve) : curve_(std::move(curve)) {
+    knots_.push_back(0.0);
+    std::vector<double> b = curve_->breaks();
+    std::sort(b.begin(), b.end());
+    for (double t : b)
+        if (t > knots_.back() && t < 1.0) knots_.push_back(t);
+    knots_.push_back(1.0);
+    // A first estimate of the length sets the absolute tolerance of the panels.
+    double estimate = 0.0;
+    for (std::size_t p = 0; p + 1 < knots_.size(); ++p)
+        for (int k = 0; k < kInitialPanels; ++k) {
+            const double a = knots_[p] + (knots_[p + 1] - knots_[p]) * k / kInitialPanels;
+            const double c = knots_[p] + (knots_[p + 1] - knots_[p]) * (k + 1) / kInitialPanels;
+            estimate += integrate(a, c, p);
+        }
+    if (!(estimate > 0.0) || !std::isfinite(estimate))
+        fail(Failure::Argument, format("the curve has length %g: need a finite, positive length", estimate));
+    const double tol = kRelativeTolerance * estimate;
+    t_.assign(1, 0.0);
+    piece_.assign(1, 0);
+    cumulative_.assign(1, 0.0);
+    for (std::size_t p = 0; p + 1 < knots_.size(); ++p)
+        for (int k = 0; k < kInitialPanels; ++k) {
+            const double a = knots_[p] + (knots_[p + 1] - knots_[p]) * k / kInitialPanels;
+            const double c = k + 1 == kInitialPanels ? knots_[p + 1]
+                                                     : knots_[p] + (knots_[p + 1] - knots_[p]) * (k + 1) / kInitialPanels;
+            refine(a, c, integrate(a, c, p), p, 0, tol);
+        }
+    double x, y;
+    for (double t : {0.0, 0.5, 1.0}) {
+        curve_->eval(t, x, y);
+        if (!std::isfinite(x) || !std::isfinite(y))
+            fail(Failure::Argument, format("the curve's point at t = %g is (%g, %g): must be finite", t, x, y));
+    }
+}
+
+double ArcLength::parameter(double s) const {
+    if (s <= 0.0) return 0.0;
+    if (s >= 1.0) return 1.0;
+    const double target = s * length();
+    // Panel k holds the answer: cumulative_[k] <= target < cumulative_[k+1].
+    const std::size_t k =
+        static_cast<std::size_t>(std::upper_bound(cumulative_.begin(), cumulative_.end(), target) -
+                                 cumulative_.begin()) - 1;
+    if (k + 1 >= t_.size()) return 1.0;
+    double lo = t_[k], hi = t_[k + 1];
+    const std::size_t piece = piece_[k + 1];
+    const double base = cumulative_[k], a = t_[k];
+    double t = lo + (hi - lo) * (target - base) / (cumulative_[k + 1] - base);
+    for (int it = 0; it < 60; ++it) {
+        const double f = base + integrate(a, t, piece) - target;
+        if (f > 0) hi = t; else lo = t;
+        if (std::fabs(f) <= 1e-15 * length()) break;
+        double next = t - f / speed(t, piece);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket
+        if (next == t) break;
+        t = next;
+    }
+    return t;
+}
+
+void ArcLength::point(double s, double &x, double &y) const {
+    curve_->eval(parameter(s), x, y);
+}
+
+}  // namespace eg2d

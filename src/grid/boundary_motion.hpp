@@ -1,0 +1,16 @@
+// A boundary whose nodes move during the run (a sliding side). The Generator
+// applies every motion after each solver iteration, so all solvers get it.
+#pragma once
+#include "grid/grid.hpp"
+
+namespace eg2d {
+
+class BoundaryMotion {
+public:
+    virtual ~BoundaryMotion() = default;
+    virtual Side side() const = 0;
+    // Moves the side's nodes (never the corners) from the grid as it is.
+    virtual void apply(Grid &grid) const = 0;
+};
+
+}  // namespace eg2d
