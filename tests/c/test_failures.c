@@ -8,6 +8,7 @@
  * The table is also docs/BAD_INPUTS.md: `test_failures --table` prints it and
  * the ctest bad_inputs_doc checks the committed page against it. A new bad
  * input is one row (and, if it needs one, a small run function). */
+#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <setjmp.h>
@@ -187,6 +188,14 @@ static int r_self_intersecting(eg2d_grid *g) {
     return eg2d_solve(g);
 }
 static int r_init_oom(eg2d_grid *g) { return eg2d_initialize(g, EG2D_INIT_TFI); }
+static int r_huge_weight(eg2d_grid *g) {
+    double w[N * N];
+    int k;
+    for (k = 0; k < N * N; ++k) w[k] = 1;
+    w[40] = DBL_MAX;
+    eg2d_set_weight(g, w);
+    return eg2d_iterate(g, 3, NULL);
+}
 
 /* Files: `content` in a scratch file, then the call, then the file removed. */
 static char scratch[4096];
@@ -418,6 +427,8 @@ static const bad_input rows[] = {
      "", KEEPS_WORK},
     {"a duplicate point in a side", "eg2d_solve(g), JMIN point 4 = point 3", S_DUPLICATE, r_solve, EG2D_OK, "",
      KEEPS_WORK},
+    {"a weight of DBL_MAX (the control's sums overflowed before)", "eg2d_iterate(g, 3, NULL), w[40] = DBL_MAX",
+     S_INIT, r_huge_weight, EG2D_OK, "", KEEPS_WORK},
     {"an allocation during a call fails (1000 x 1000, 4 MB margin)", "eg2d_initialize(g, EG2D_INIT_TFI)", S_BIG,
      r_init_oom, EG2D_ERR_MEMORY, "eg2d_initialize: out of memory", MEMORY_LIMIT},
 };

@@ -2,7 +2,8 @@
  * (sizes, topology, sides and whole grids built from a square or a circle
  * and then broken: NaN, Inf, huge and tiny values, duplicate points,
  * zero-length, reversed, shifted and self-intersecting sides; systems,
- * solvers, every parameter, iterate/solve, queries). A monitor caps the
+ * solvers, every parameter, sources, orthogonality, weights, parameter
+ * grids, AF settings, sides on curves, iterate/solve, queries). A monitor caps the
  * iterations of one input at 300 so each input is fast.
  *
  * Besides the sanitizers, the harness asserts the API's promises and aborts
@@ -39,10 +40,22 @@ static void promise(int ok, const char *what) {
     }
 }
 
+/* Every parameter id the library has (found once; new ones join by themselves). */
+#define MAX_PARAMS 64
+static int param_ids[MAX_PARAMS], nparams = -1;
+
+static void find_parameters(void) {
+    int id;
+    double lo, hi, def;
+    nparams = 0;
+    for (id = 0; id < 1000 && nparams < MAX_PARAMS; ++id)
+        if (eg2d_parameter_bounds(id, &lo, &hi, &def) == EG2D_OK) param_ids[nparams++] = id;
+}
+
 /* What a caller can observe without running anything. */
 typedef struct {
     int ni, nj, topology, solver, iterations, rc_coords;
-    double params[5];
+    double params[MAX_PARAMS];
     double x[MAXN * MAXN], y[MAXN * MAXN];
 } observed;
 
@@ -53,7 +66,7 @@ static void observe(const eg2d_grid *g, observed *o) {
     eg2d_get_topology(g, &o->topology);
     eg2d_get_solver(g, &o->solver);
     eg2d_get_iterations(g, &o->iterations);
-    for (k = 0; k < 5; ++k) eg2d_get_parameter(g, k, &o->params[k]);
+    for (k = 0; k < nparams; ++k) eg2d_get_parameter(g, param_ids[k], &o->params[k]);
     o->rc_coords = eg2d_get_coordinates(g, o->x, o->y);
     if (o->rc_coords == EG2D_OK)
         for (k = 0; k < o->ni * o->nj; ++k) promise(isfinite(o->x[k]) && isfinite(o->y[k]), "finite coordinates");
@@ -151,6 +164,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     eg2d_grid *g = NULL;
     int ni = make_size(&in), nj = make_size(&in), calls, rc;
     const int trace = getenv("EG2D_FUZZ_TRACE") != NULL; /* prints each call: for reading a crash */
+    static double p[MAXN * MAXN], q[MAXN * MAXN];
+
+    if (nparams < 0) find_parameters();
 
     rc = eg2d_create(ni, nj, &g);
     promise(rc == EG2D_OK || rc == EG2D_ERR_ARGUMENT, "eg2d_create status");
@@ -167,7 +183,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         const char *name = "";
         eg2d_get_topology(g, &topology);
         observe(g, &before);
-        switch (fuzz_below(&in, 18)) {
+        switch (fuzz_below(&in, 30)) {
         case 0: name = "eg2d_set_topology"; rc = eg2d_set_topology(g, fuzz_int(&in)); break;
         case 1:
         case 2:
@@ -208,7 +224,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         case 10: name = "eg2d_set_tolerance"; rc = eg2d_set_tolerance(g, fuzz_double(&in)); break;
         case 11: name = "eg2d_set_max_iterations"; rc = eg2d_set_max_iterations(g, fuzz_int(&in)); break;
         case 12:
-            v = fuzz_u8(&in) < 200 ? fuzz_below(&in, 6) : fuzz_int(&in);
+            v = fuzz_u8(&in) < 220 ? param_ids[fuzz_below(&in, nparams)] : fuzz_int(&in);
             name = "eg2d_set_parameter";
             rc = eg2d_set_parameter(g, v, fuzz_double(&in));
             break;
@@ -234,6 +250,70 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
                 promise(d <= t, "a successful solve is within the tolerance");
             }
             break;
+        /* Control functions (sources, orthogonality, adaptivity) and AF settings. */
+        case 18:
+            name = "eg2d_add_line_source";
+            v = fuzz_int(&in);
+            d = fuzz_double(&in);
+            t = fuzz_double(&in);
+            rc = eg2d_add_line_source(g, v, d, t, fuzz_double(&in));
+            break;
+        case 19:
+            name = "eg2d_add_point_source";
+            d = fuzz_double(&in);
+            t = fuzz_double(&in);
+            rc = eg2d_add_point_source(g, d, t, fuzz_double(&in), fuzz_double(&in));
+            break;
+        case 20: name = "eg2d_clear_sources"; rc = eg2d_clear_sources(g); break;
+        case 21:
+            make_grid(&in, ni, nj, p, q);
+            name = "eg2d_set_source_arrays";
+            v = fuzz_u8(&in);
+            rc = eg2d_set_source_arrays(g, v & 1 ? p : NULL, v & 2 ? q : NULL);
+            break;
+        case 22: name = "eg2d_set_orthogonality"; rc = eg2d_set_orthogonality(g, fuzz_int(&in)); break;
+        case 23:
+            name = "eg2d_set_wall_spacing";
+            v = fuzz_u8(&in) < 200 ? fuzz_below(&in, 4) : fuzz_int(&in);
+            rc = eg2d_set_wall_spacing(g, v, fuzz_double(&in));
+            break;
+        case 24:
+            make_grid(&in, ni, nj, p, q);
+            for (k = 0; k < ni * nj; ++k) p[k] = 1 + fabs(p[k] - q[k]); /* positive mostly */
+            name = "eg2d_set_weight";
+            rc = eg2d_set_weight(g, fuzz_u8(&in) == 255 ? NULL : p);
+            break;
+        case 25:
+            make_grid(&in, ni, nj, p, q);
+            name = "eg2d_set_parameter_grid";
+            rc = eg2d_set_parameter_grid(g, fuzz_u8(&in) == 255 ? NULL : p, q);
+            break;
+        case 26:
+            name = "eg2d_set_af_cycle";
+            d = fuzz_double(&in);
+            t = fuzz_double(&in);
+            rc = eg2d_set_af_cycle(g, d, t, fuzz_int(&in));
+            break;
+        case 27:
+            name = "eg2d_set_af_time_rule";
+            d = fuzz_double(&in);
+            rc = eg2d_set_af_time_rule(g, d, fuzz_double(&in));
+            break;
+        case 28: {
+            /* A side on a curve through broken side points, any distribution and flags. */
+            const int side = fuzz_below(&in, 4), n = (side == 0 || side == 2) ? ni : nj;
+            eg2d_curve *c = NULL;
+            make_side(&in, side, n, topology == EG2D_TOPO_O, x, y);
+            k = fuzz_u8(&in) & 1 ? eg2d_curve_spline(n, x, y, &c) : eg2d_curve_polyline(n, x, y, &c);
+            promise(k == EG2D_OK ? c != NULL : c == NULL, "a curve or NULL");
+            name = "eg2d_set_side_curve";
+            v = fuzz_u8(&in) < 200 ? fuzz_below(&in, 5) : fuzz_int(&in);
+            d = fuzz_double(&in);
+            t = fuzz_double(&in);
+            rc = c ? eg2d_set_side_curve(g, side, c, v, d, t, fuzz_below(&in, 8)) : EG2D_OK;
+            eg2d_curve_destroy(c);
+            break;
+        }
         default:
             /* Queries with any ids; they change nothing. */
             v = fuzz_int(&in);
