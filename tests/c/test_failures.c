@@ -531,6 +531,10 @@ static int good_sequence(eg2d_grid *g, observed *o) {
     for (k = 0; k < 300; ++k)
         if (eg2d_parameter_bounds(k, &lo, &hi, &def) == EG2D_OK && eg2d_set_parameter(g, k, def) != EG2D_OK)
             return failed("resetting parameter %d: %s", k, eg2d_last_error(g));
+    /* Controls the row may have set are the user's settings, not damage. */
+    if (eg2d_set_weight(g, NULL) || eg2d_clear_sources(g) || eg2d_set_source_arrays(g, NULL, NULL) ||
+        eg2d_set_parameter_grid(g, NULL, NULL) || eg2d_set_orthogonality(g, EG2D_ORTHO_NONE))
+        return failed("clearing the controls failed: %s", eg2d_last_error(g));
     if (eg2d_set_system(g, EG2D_SYSTEM_WINSLOW) || eg2d_set_solver(g, EG2D_SOLVER_PSOR) ||
         eg2d_set_monitor(g, NULL, NULL) || eg2d_set_topology(g, EG2D_TOPO_SINGLE) || domain_set(g, "quad") ||
         eg2d_initialize(g, EG2D_INIT_TFI))
