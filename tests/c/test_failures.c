@@ -188,6 +188,19 @@ static int r_self_intersecting(eg2d_grid *g) {
     return eg2d_solve(g);
 }
 static int r_init_oom(eg2d_grid *g) { return eg2d_initialize(g, EG2D_INIT_TFI); }
+static int r_subnormal_curve(eg2d_grid *g) {
+    double x[13], y[13];
+    eg2d_curve *c = NULL;
+    int p, rc;
+    (void)g;
+    for (p = 0; p < 13; ++p) { /* JMAX of a square of side 1.235e-314, as fuzz_api made it */
+        x[p] = 1.2350678622161905e-314 * ((double)p / 12);
+        y[p] = 1.2350678622161905e-314;
+    }
+    rc = eg2d_curve_polyline(13, x, y, &c);
+    eg2d_curve_destroy(c);
+    return rc;
+}
 static int r_huge_weight(eg2d_grid *g) {
     double w[N * N];
     int k;
@@ -427,6 +440,11 @@ static const bad_input rows[] = {
      "", KEEPS_WORK},
     {"a duplicate point in a side", "eg2d_solve(g), JMIN point 4 = point 3", S_DUPLICATE, r_solve, EG2D_OK, "",
      KEEPS_WORK},
+    {"a curve 1.2e-314 long (subnormal: the arc-length panels never converged, a hang before)",
+     "eg2d_curve_polyline(13, x, y, &c)", S_NONE, r_subnormal_curve, EG2D_ERR_ARGUMENT,
+     "eg2d_curve_polyline: the curve's arc length does not converge to 1e-14 of its length within 65536 panels: "
+     "the curve is not smooth, or too small (length *)",
+     0},
     {"a weight of DBL_MAX (the control's sums overflowed before)", "eg2d_iterate(g, 3, NULL), w[40] = DBL_MAX",
      S_INIT, r_huge_weight, EG2D_OK, "", KEEPS_WORK},
     {"an allocation during a call fails (1000 x 1000, 4 MB margin)", "eg2d_initialize(g, EG2D_INIT_TFI)", S_BIG,

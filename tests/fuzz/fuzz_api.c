@@ -304,6 +304,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
             const int side = fuzz_below(&in, 4), n = (side == 0 || side == 2) ? ni : nj;
             eg2d_curve *c = NULL;
             make_side(&in, side, n, topology == EG2D_TOPO_O, x, y);
+            if (trace)
+                for (k = 0; k < n; ++k) fprintf(stderr, "  curve point %d: (%.17g, %.17g)\n", k, x[k], y[k]);
             k = fuzz_u8(&in) & 1 ? eg2d_curve_spline(n, x, y, &c) : eg2d_curve_polyline(n, x, y, &c);
             promise(k == EG2D_OK ? c != NULL : c == NULL, "a curve or NULL");
             name = "eg2d_set_side_curve";
