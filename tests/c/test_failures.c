@@ -201,6 +201,17 @@ static int r_subnormal_curve(eg2d_grid *g) {
     eg2d_curve_destroy(c);
     return rc;
 }
+static int r_huge_parameter_grid(eg2d_grid *g) {
+    double ps[N * N], pt[N * N];
+    int k;
+    for (k = 0; k < N * N; ++k) {
+        ps[k] = (double)(k % N) / (N - 1);
+        pt[k] = (double)(k / N) / (N - 1);
+    }
+    pt[N * N - 1] = DBL_MAX; /* a corner: the fold check does not see it */
+    eg2d_set_parameter_grid(g, ps, pt);
+    return eg2d_solve(g);
+}
 static int r_huge_weight(eg2d_grid *g) {
     double w[N * N];
     int k;
@@ -445,6 +456,11 @@ static const bad_input rows[] = {
      "eg2d_curve_polyline: the curve's arc length does not converge to 1e-14 of its length within 65536 panels: "
      "the curve is not smooth, or too small (length *)",
      0},
+    {"a parameter-grid value of DBL_MAX (the residual was NaN before)", "eg2d_solve(g), t[80] = DBL_MAX",
+     S_INIT, r_huge_parameter_grid, EG2D_ERR_ARGUMENT,
+     "eg2d_solve: the equations are not finite at node (7, 7) of the grid as it is: a control value (source, "
+     "source array, weight, parameter grid) is too large",
+     KEEPS_WORK},
     {"a weight of DBL_MAX (the control's sums overflowed before)", "eg2d_iterate(g, 3, NULL), w[40] = DBL_MAX",
      S_INIT, r_huge_weight, EG2D_OK, "", KEEPS_WORK},
     {"an allocation during a call fails (1000 x 1000, 4 MB margin)", "eg2d_initialize(g, EG2D_INIT_TFI)", S_BIG,

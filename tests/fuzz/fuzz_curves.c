@@ -59,10 +59,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         rc = eg2d_curve_naca4(fuzz_u8(&in) == 255 ? NULL : digits, flags, &c);
         check("eg2d_curve_naca4", rc);
     } else {
-        const int count = fuzz_u8(&in) < 240 ? n : fuzz_int(&in);
-        rc = fuzz_u8(&in) & 1 ? eg2d_curve_spline(count < 0 || count > n ? n : count, x, y, &c)
-                              : eg2d_curve_polyline(count < 0 || count > n ? n : count, x, y, &c);
-        check(kind ? "eg2d_curve_spline" : "eg2d_curve_polyline", rc);
+        const int count = fuzz_u8(&in) < 240 ? n : fuzz_int(&in), spline = fuzz_u8(&in) & 1;
+        rc = spline ? eg2d_curve_spline(count < 0 || count > n ? n : count, x, y, &c)
+                    : eg2d_curve_polyline(count < 0 || count > n ? n : count, x, y, &c);
+        check(spline ? "eg2d_curve_spline" : "eg2d_curve_polyline", rc);
     }
     if ((rc == EG2D_OK) != (c != NULL)) abort();
     if (c) {
