@@ -212,6 +212,15 @@ static int r_huge_parameter_grid(eg2d_grid *g) {
     eg2d_set_parameter_grid(g, ps, pt);
     return eg2d_solve(g);
 }
+static int r_tanh_subnormal(eg2d_grid *g) {
+    double s[N];
+    int k, rc;
+    (void)g;
+    rc = eg2d_distribution(EG2D_DIST_TANH_ONE, N, 4.9406564584124654e-324, 0, s);
+    for (k = 0; rc == EG2D_OK && k < N; ++k)
+        if (s[k] != (double)k / (N - 1)) return -1; /* the uniform limit, not NaN */
+    return rc;
+}
 static int r_huge_weight(eg2d_grid *g) {
     double w[N * N];
     int k;
@@ -461,6 +470,9 @@ static const bad_input rows[] = {
      "eg2d_solve: the equations are not finite at node (7, 7) of the grid as it is: a control value (source, "
      "source array, weight, parameter grid) is too large",
      KEEPS_WORK},
+    {"a tanh distribution with a subnormal delta (NaN points before)",
+     "eg2d_distribution(EG2D_DIST_TANH_ONE, 9, 5e-324, 0, s): the uniform points", S_NONE, r_tanh_subnormal, EG2D_OK,
+     "", 0},
     {"a weight of DBL_MAX (the control's sums overflowed before)", "eg2d_iterate(g, 3, NULL), w[40] = DBL_MAX",
      S_INIT, r_huge_weight, EG2D_OK, "", KEEPS_WORK},
     {"an allocation during a call fails (1000 x 1000, 4 MB margin)", "eg2d_initialize(g, EG2D_INIT_TFI)", S_BIG,
