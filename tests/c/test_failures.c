@@ -221,6 +221,11 @@ static int r_tanh_subnormal(eg2d_grid *g) {
         if (s[k] != (double)k / (N - 1)) return -1; /* the uniform limit, not NaN */
     return rc;
 }
+static int r_yplus_underflow(eg2d_grid *g) {
+    double h;
+    (void)g;
+    return eg2d_first_cell_height(4.9406564584124654e-324, 1e6, 1, &h);
+}
 static int r_huge_weight(eg2d_grid *g) {
     double w[N * N];
     int k;
@@ -473,6 +478,9 @@ static const bad_input rows[] = {
     {"a tanh distribution with a subnormal delta (NaN points before)",
      "eg2d_distribution(EG2D_DIST_TANH_ONE, 9, 5e-324, 0, s): the uniform points", S_NONE, r_tanh_subnormal, EG2D_OK,
      "", 0},
+    {"a y+ so small the wall height underflows to 0", "eg2d_first_cell_height(5e-324, 1e6, 1, &h)", S_NONE,
+     r_yplus_underflow, EG2D_ERR_ARGUMENT,
+     "eg2d_first_cell_height: y+ = 4.94066e-324, chord = 1: the height 0 is not a positive finite number", 0},
     {"a weight of DBL_MAX (the control's sums overflowed before)", "eg2d_iterate(g, 3, NULL), w[40] = DBL_MAX",
      S_INIT, r_huge_weight, EG2D_OK, "", KEEPS_WORK},
     {"an allocation during a call fails (1000 x 1000, 4 MB margin)", "eg2d_initialize(g, EG2D_INIT_TFI)", S_BIG,
