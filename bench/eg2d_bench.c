@@ -1,7 +1,7 @@
 /* eg2d_bench: iterations, time and residual of every solver of the library
  * on the benchmark cases of issue 3, as a markdown table and as JSON.
  *
- *   eg2d_bench [--cases swan,valley,annulus,naca0012] [--sizes 65,129,257,513,1025]
+ *   eg2d_bench [--cases swan,valley,annulus,naca0012,naca0012-c] [--sizes 65,129,257,513,1025]
  *              [--solvers psor,af,...] [--system winslow|laplace]
  *              [--tolerance 1e-10] [--cap SECONDS] [--repeats N] [--json FILE]
  *   eg2d_bench --seed004     seed 004 Table 2: an 87x31 O-grid, E < 5e-5 and 1e-10
@@ -52,12 +52,17 @@ static int set_annulus_source(eg2d_grid *g) {
 }
 static int quarter(int n) { return n / 4 + 1; }
 static int set_naca0012(eg2d_grid *g) { return domain_set_airfoil_o(g, "0012", 10.0); }
+static int set_naca0012_c(eg2d_grid *g) {
+    int ni, nj, status = eg2d_get_size(g, &ni, &nj);
+    return status ? status : domain_set_airfoil_c(g, "0012", ni / 4, 5.0);
+}
 
 static const bench_case cases[] = {
     {"swan", square, set_swan},       /* seed 003 A4 */
     {"valley", square, set_valley},   /* seed 003 A1 */
     {"annulus", half, set_annulus},   /* O-grid, 1 <= r <= 3, n x (n/2+1) */
     {"naca0012", quarter, set_naca0012}, /* O-grid, sharp-TE NACA0012 in r = 10, n x (n/4+1) */
+    {"naca0012-c", quarter, set_naca0012_c}, /* C-grid, n/4 wake points a side to x = 6, r = 5, n x (n/4+1) */
     /* The annulus with seed 004 eq 14's line attraction toward the inner wall
      * (mu = 100, kappa = 0.2): iterations against "annulus" are the cost of sources. */
     {"annulus-source", half, set_annulus_source},

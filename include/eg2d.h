@@ -260,15 +260,23 @@ EG2D_API int eg2d_parameter_bounds(int param, double *lower, double *upper, doub
  * transients r_tau = L(r), the Warming-Beam time rule with parameters a, b,
  * and the implicit operator factored into a xi and an eta line operator (the
  * mixed derivative is left explicit); the xi lines of an O-grid are cyclic,
- * so the branch cut moves with the interior. One iteration = one time step =
- * one xi and one eta line sweep. The pseudo-time step of node (i, j) is
- * dtau / (2(alpha+gamma)) (Laplace: dtau/4), so dtau is dimensionless: at
- * dtau = 1 and omega = 1 the explicit part is one Jacobi step. The steps run
+ * so the branch cut moves with the interior, and a C-grid's wake cut is a xi
+ * line whose nodes the eta lines run through. One iteration = one time step =
+ * one xi and one eta line sweep. The pseudo-time step is one number for
+ * the whole grid, dtau / D, with D the geometric mean over the unknown nodes
+ * of 2(alpha+gamma) (Laplace: D = 4), so dtau is dimensionless: at dtau = 1
+ * and omega = 1 the explicit part is one Jacobi step at a node of average
+ * cells. (A step per node, dtau / (2(alpha+gamma)), diverges on airfoil
+ * O-grids: the small wall cells then move as far in index space as the far
+ * field while their lagged coefficients are far off.) The steps run
  * through a cycle of M steps spaced geometrically from dtau_min to dtau_max
  * with repeated end points (dtau_1 = dtau_2, dtau_(M-1) = dtau_M), and the
  * cycle repeats. Every default works untouched; the automatic values are
  * dtau_max = 4 (n-1)^2 / pi^2 with n = max(ni, nj) (the step that resolves
- * the smoothest mode) and the smallest M whose steps grow by at most 2x. */
+ * the smoothest mode) and the smallest M whose steps grow by at most 2x;
+ * whenever the residual rises 100x above the best of the run, the automatic
+ * dtau_max is divided by 4 and the cycle restarts (large steps can be
+ * unstable with controls that follow the grid, such as wall orthogonality). */
 #define EG2D_PARAM_AF_DTAU_MIN      100  /* (0, 1e12], default 0.5                       */
 #define EG2D_PARAM_AF_DTAU_MAX      101  /* (0, 1e12], >= dtau_min; 0 = automatic (default) */
 #define EG2D_PARAM_AF_STEPS         102  /* M in [4, 1000]; 0 = automatic (default)       */

@@ -10,14 +10,28 @@
 //   [1 - dt (gamma d_etaeta + C_eta d_eta)] dr  = dr*,        r^(n+1) = r^n + dr
 //
 // with a~ = a/(1+a) (eq 8) and the coefficients frozen at r^n (lagged, as in
-// the seed). The step dt is taken node by node as tau / (2(alpha+gamma))
-// (Laplace: tau/4), so tau is dimensionless and the same cycle fits every
-// grid scale; tau runs through the cycle of af_cycle() (seed 004: geometric
+// the seed). The step dt is one number for the whole grid, as in eq 10:
+// tau / D with D the geometric mean over the unknowns of 2(alpha+gamma)
+// (Laplace: 4), so tau is dimensionless and the same cycle fits every grid
+// scale. (A step per node, tau / (2(alpha+gamma)), folds the NACA0012 O-grid
+// from a TFI start: the small wall cells, where Winslow's grid moves farthest
+// from the TFI grid relative to its spacing, then take as large a step in
+// index space as the far field, the lagged coefficients there are far off,
+// and the first cycle's large steps push row 1 through the wall at the
+// leading and trailing edges. The same steps on the coefficients frozen at the
+// start converge: the failure is the lagging, not the factorisation. With one
+// dt each node moves at the rate of the true transient, slowly where its cells
+// are small.) tau runs through the cycle of af_cycle() (seed 004: geometric
 // with repeated end points). The xi factor is cyclic on an O-grid (solved by
 // Sherman-Morrison), so the branch cut moves implicitly with the interior
-// (seed 004 figure 2). One iteration = one step = the two line sweeps.
+// (seed 004 figure 2); a C-grid's wake cut is likewise implicit: the cut is a
+// xi line of its own and each eta line runs through it from the lower half
+// into the upper (relaxed point by point instead, the cut took 195, 362 and
+// 1561 steps on the NACA0012 C-grid at 65, 129, 257 points around; solved
+// with the lines, 91, 172 and 421). One iteration = one step = the two line sweeps.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "solvers/solver.hpp"
@@ -30,17 +44,27 @@ constexpr double kPi = 3.14159265358979323846;
 // Automatic cycle: the largest step resolves the smoothest mode of the longest
 // grid line (its eigenvalue is about (pi/n)^2 in units of the diagonal); the
 // steps grow by at most this ratio. Measured on the seed 003 domains, the
-// annulus and an 87x31 O-grid (bench --seed004): ratio 2 beats 3 and 4 on the
-// skewed dome (141 vs 237 vs 357 iterations at 65^2) and ties elsewhere; the
-// steps ascend through the cycle because large steps first diverge from a TFI
-// start on the dome (Winslow's lagged coefficients).
+// annulus and an 87x31 O-grid (bench --seed004), with a step per node: ratio
+// 2 beats 3 and 4 on the skewed dome (141 vs 237 vs 357 iterations at 65^2)
+// and ties elsewhere; the steps ascend through the cycle because large steps
+// first diverge from a TFI start on the dome (Winslow's lagged coefficients).
 constexpr double kStepRatio = 2.0;
 
-// The steps tau of one cycle for an ni x nj grid, automatic values filled in.
-std::vector<double> af_cycle(const Settings &st, int ni, int nj) {
+// The automatic largest step is divided by kTopShrink whenever the residual
+// rises kRiseFactor times above its best (AutoRelaxation's rule for SOR).
+// Large steps with lagged coefficients can be unstable: seed 000's channel 3
+// with wall orthogonality (a control that follows the grid) diverged at step
+// 169. The residual of a healthy cycle rises up to ~20x during its largest
+// steps (NACA0012 C-grid 257x65), so 10x shrank the cycle needlessly (the
+// C-grid then stalled); 100x leaves the test cases' counts as they were.
+constexpr double kTopShrink = 4.0, kRiseFactor = 100.0;
+
+// The steps tau of one cycle for an ni x nj grid, automatic values filled in;
+// `top` scales the automatic largest step.
+std::vector<double> af_cycle(const Settings &st, int ni, int nj, double top) {
     const double n = std::max(ni, nj) - 1.0;
     const double tmin = st.af_dtau_min;
-    const double tmax = st.af_dtau_max > 0.0 ? st.af_dtau_max : std::max(tmin, 4.0 * n * n / (kPi * kPi));
+    const double tmax = st.af_dtau_max > 0.0 ? st.af_dtau_max : std::max(tmin, top * 4.0 * n * n / (kPi * kPi));
     int steps = static_cast<int>(st.af_steps);
     if (steps <= 0) {
         const int distinct = tmax > tmin ? static_cast<int>(std::ceil(std::log(tmax / tmin) / std::log(kStepRatio))) + 1 : 1;
@@ -62,8 +86,22 @@ double af_relaxation(const Settings &st) { return st.af_relaxation > 0.0 ? st.af
 
 class ApproximateFactorisation final : public Solver {
 public:
+    void observe(double residual) override {
+        if (!(residual == residual)) return;  // NaN: the run loop handles divergence
+        if (residual > kRiseFactor * best_) {
+            top_ /= kTopShrink;
+            best_ = residual;
+            step_ = 0;  // the new cycle from its smallest step
+        } else if (residual < best_) {
+            best_ = residual;
+        }
+    }
+
     void reset() override {
         step_ = 0;
+        top_ = 1.0;
+        best_ = std::numeric_limits<double>::infinity();
+        scale_ = 0.0;
         prev_x_.clear();
         prev_y_.clear();
     }
@@ -73,7 +111,7 @@ public:
         const Connectivity &conn = *L.conn;
         const int ni = conn.ni(), nj = conn.nj();
         const std::size_t size = static_cast<std::size_t>(ni) * nj;
-        const std::vector<double> cycle = af_cycle(p.settings, ni, nj);
+        const std::vector<double> cycle = af_cycle(p.settings, ni, nj, top_);
         const double tau = cycle[static_cast<std::size_t>(step_) % cycle.size()];
         const double a = p.settings.af_a, b = p.settings.af_b;
         const double a_tilde = a / (1.0 + a), gain = af_relaxation(p.settings) / b;
@@ -88,39 +126,55 @@ public:
         // The xi factor, line by line (eq 11); the eta coefficients are kept for eq 12.
         const int ib = conn.i_begin(), ie = conn.i_end(), n = ie - ib;
         row_lo_.resize(n); row_di_.resize(n); row_up_.resize(n); row_c_.resize(n);
-        for (int j = conn.j_begin(); j < conn.j_end(); ++j) {
-            for (int i = ib; i < ie; ++i) {
-                const Stencil s = conn.stencil(i, j);
-                Metrics m;
-                const NodeEquation eq = node_equation(p.system, L, s, &m);
-                const double alpha = m.alpha, gamma = m.gamma, cxi = m.cxi, ceta = m.ceta;
-                const double dt = tau / eq.diag;
-                const int r = i - ib;
-                row_lo_[r] = -dt * (alpha - 0.5 * cxi);
-                row_di_[r] = 1.0 + 2.0 * dt * alpha;
-                row_up_[r] = -dt * (alpha + 0.5 * cxi);
-                lo_[s.c] = -dt * (gamma - 0.5 * ceta);
-                di_[s.c] = 1.0 + 2.0 * dt * gamma;
-                up_[s.c] = -dt * (gamma + 0.5 * ceta);
-                dx_[s.c] = dt * gain * eq.rx;
-                dy_[s.c] = dt * gain * eq.ry;
-                if (three_level) {
-                    dx_[s.c] += a_tilde * prev_x_[s.c];
-                    dy_[s.c] += a_tilde * prev_y_[s.c];
-                }
+        if (!(scale_ > 0.0)) scale_ = diagonal_scale(p.system, L);
+        const double dt = tau / scale_;
+        double log_sum = 0.0;  // for the next step's scale: one pass over the nodes, not two
+        // Node (i, j) as entry r of its xi line; its eta coefficients and right-hand side in place.
+        auto assemble = [&](int i, int j, int r) {
+            const Stencil s = conn.stencil(i, j);
+            Metrics m;
+            const NodeEquation eq = node_equation(p.system, L, s, &m);
+            const double alpha = m.alpha, gamma = m.gamma, cxi = m.cxi, ceta = m.ceta;
+            row_lo_[r] = -dt * (alpha - 0.5 * cxi);
+            row_di_[r] = 1.0 + 2.0 * dt * alpha;
+            row_up_[r] = -dt * (alpha + 0.5 * cxi);
+            lo_[s.c] = -dt * (gamma - 0.5 * ceta);
+            di_[s.c] = 1.0 + 2.0 * dt * gamma;
+            up_[s.c] = -dt * (gamma + 0.5 * ceta);
+            dx_[s.c] = dt * gain * eq.rx;
+            dy_[s.c] = dt * gain * eq.ry;
+            if (three_level) {
+                dx_[s.c] += a_tilde * prev_x_[s.c];
+                dy_[s.c] += a_tilde * prev_y_[s.c];
             }
+            return eq.diag;
+        };
+        for (int j = conn.j_begin(); j < conn.j_end(); ++j) {
+            for (int i = ib; i < ie; ++i) log_sum += std::log(assemble(i, j, i - ib));
             double *rx = dx_.data() + static_cast<std::size_t>(ni) * j + ib;
             double *ry = dy_.data() + static_cast<std::size_t>(ni) * j + ib;
             solve_row(conn.periodic_i(), n, rx);
             solve_row(conn.periodic_i(), n, ry);
         }
+        // A C-grid's wake cut is a xi line too, between the outflow and the
+        // trailing edge (both fixed): its nodes are solved with the interior,
+        // as seed 004 does with the O-grid's branch cut, not relaxed after it.
+        const int wake = conn.wake();  // 0 unless a C-grid
+        if (wake > 1) {
+            for (int i = 1; i < wake; ++i) assemble(i, 0, i - 1);
+            solve_row(false, wake - 1, dx_.data() + 1);
+            solve_row(false, wake - 1, dy_.data() + 1);
+        }
 
         // The eta factor (eq 12): all columns at once, row after row, so
-        // memory is walked in storage order (Thomas algorithm in place).
+        // memory is walked in storage order (Thomas algorithm in place). The
+        // C-grid's wake columns i and ni-1-i are one eta line through the cut
+        // (solve_wake_line); the others run from row 1 to row nj-2.
         const int jb = conn.j_begin(), je = conn.j_end();
+        const int i0 = wake > 1 ? wake : ib, i1 = wake > 1 ? ni - wake : ie;
         for (int j = jb; j < je; ++j) {
             const std::size_t row = static_cast<std::size_t>(ni) * j;
-            for (int i = ib; i < ie; ++i) {
+            for (int i = i0; i < i1; ++i) {
                 const std::size_t k = row + i;
                 double m = di_[k];
                 if (j > jb) {
@@ -136,12 +190,13 @@ public:
         }
         for (int j = je - 2; j >= jb; --j) {
             const std::size_t row = static_cast<std::size_t>(ni) * j;
-            for (int i = ib; i < ie; ++i) {
+            for (int i = i0; i < i1; ++i) {
                 const std::size_t k = row + i;
                 dx_[k] -= up_[k] * dx_[k + ni];
                 dy_[k] -= up_[k] * dy_[k + ni];
             }
         }
+        for (int i = 1; i < wake; ++i) solve_wake_line(conn, i);
 
         // eq 13, and the cut column follows column 0.
         for (int j = jb; j < je; ++j)
@@ -152,13 +207,15 @@ public:
                 conn.sync_node(L.x, i, j);
                 conn.sync_node(L.y, i, j);
             }
-        // Unknowns off the rectangle (a C-grid's cut) take a point step.
+        // The wake cut's nodes, and their copies on the upper wake.
         for (const Connectivity::Node &nd : conn.extra_unknowns()) {
-            const Stencil s = conn.stencil(nd.i, nd.j);
-            const NodeEquation eq = node_equation(p.system, L, s);
-            L.x[s.c] += eq.rx / eq.diag;
-            L.y[s.c] += eq.ry / eq.diag;
+            const std::size_t k = static_cast<std::size_t>(ni) * nd.j + nd.i;
+            L.x[k] += dx_[k];
+            L.y[k] += dy_[k];
+            conn.sync_node(L.x, nd.i, nd.j);
+            conn.sync_node(L.y, nd.i, nd.j);
         }
+        scale_ = std::exp(log_sum / (static_cast<double>(n) * (conn.j_end() - conn.j_begin())));
         if (a_tilde != 0.0) {
             prev_x_.swap(dx_);
             prev_y_.swap(dy_);
@@ -167,6 +224,39 @@ public:
     }
 
 private:
+    // The eta factor on the C-grid's line through wake node (i, 0): up
+    // column m = ni-1-i from row nj-2 to row 1 (the upper half, where eta
+    // points the other way: north is the previous node, south the next),
+    // the cut node (its south neighbour is (m, 1)), and column i from row 1
+    // to row nj-2.
+    void solve_wake_line(const Connectivity &conn, int i) {
+        const std::size_t ni = static_cast<std::size_t>(conn.ni());
+        const int nj = conn.nj(), half = nj - 2, len = 2 * half + 1;
+        const std::size_t m = ni - 1 - static_cast<std::size_t>(i);
+        line_k_.resize(len);
+        line_a_.resize(len); line_b_.resize(len); line_c_.resize(len);
+        line_x_.resize(len); line_y_.resize(len);
+        for (int t = 0; t < len; ++t) {
+            const bool upper = t < half;
+            const std::size_t k = upper ? m + ni * static_cast<std::size_t>(half - t)
+                                        : static_cast<std::size_t>(i) + ni * static_cast<std::size_t>(t - half);
+            line_k_[t] = k;
+            line_a_[t] = upper ? up_[k] : lo_[k];
+            line_b_[t] = di_[k];
+            line_c_[t] = upper ? lo_[k] : up_[k];
+            line_x_[t] = dx_[k];
+            line_y_[t] = dy_[k];
+        }
+        line_s_.assign(line_c_.begin(), line_c_.end());
+        solve_tridiagonal(len, line_a_.data(), line_b_.data(), line_s_.data(), line_x_.data());
+        line_s_.assign(line_c_.begin(), line_c_.end());
+        solve_tridiagonal(len, line_a_.data(), line_b_.data(), line_s_.data(), line_y_.data());
+        for (int t = 0; t < len; ++t) {
+            dx_[line_k_[t]] = line_x_[t];
+            dy_[line_k_[t]] = line_y_[t];
+        }
+    }
+
     // Solves the xi factor of one row for one right-hand side (in place).
     void solve_row(bool periodic, int n, double *rhs) {
         if (!periodic) {
@@ -177,10 +267,28 @@ private:
         }
     }
 
+    // D of the step dt = tau / D: the geometric mean over the unknowns of
+    // 2(alpha+gamma) (the scale of L's diagonal, insensitive to the few
+    // largest cells), from the previous step's coefficients (0: not known).
+    static double diagonal_scale(System system, const Level &L) {
+        const Connectivity &conn = *L.conn;
+        double log_sum = 0.0;
+        for (int j = conn.j_begin(); j < conn.j_end(); ++j)
+            for (int i = conn.i_begin(); i < conn.i_end(); ++i)
+                log_sum += std::log(node_equation(system, L, conn.stencil(i, j)).diag);
+        const double count = static_cast<double>(conn.i_end() - conn.i_begin()) * (conn.j_end() - conn.j_begin());
+        return std::exp(log_sum / count);
+    }
+
     long step_ = 0;
+    double scale_ = 0.0;
+    double top_ = 1.0;  // scales the automatic dtau_max (observe)
+    double best_ = std::numeric_limits<double>::infinity();
     std::vector<double> prev_x_, prev_y_;      // r^n - r^(n-1), for a != 0
     std::vector<double> dx_, dy_, lo_, di_, up_;  // corrections and the eta factor
     std::vector<double> row_lo_, row_di_, row_up_, row_c_, work_;
+    std::vector<double> line_a_, line_b_, line_c_, line_s_, line_x_, line_y_;  // a C-grid's wake line
+    std::vector<std::size_t> line_k_;
 };
 
 }  // namespace

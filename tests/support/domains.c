@@ -126,3 +126,48 @@ int domain_set_airfoil_o(eg2d_grid *g, const char *digits, double radius) {
     eg2d_curve_destroy(far);
     return status;
 }
+
+int domain_set_airfoil_c(eg2d_grid *g, const char *digits, int wake, double radius) {
+    int ni, nj, na, i, j, status;
+    double *x, *y;
+    eg2d_curve *foil = NULL;
+    if ((status = eg2d_get_size(g, &ni, &nj))) return status;
+    na = ni - 2 * wake;
+    if (wake < 2 || na < 5) return EG2D_ERR_ARGUMENT;
+    if ((status = eg2d_set_topology(g, EG2D_TOPO_C))) return status;
+    x = malloc(sizeof(double) * (size_t)(ni + nj));
+    y = malloc(sizeof(double) * (size_t)(ni + nj));
+    if (!x || !y) {
+        free(x);
+        free(y);
+        return EG2D_ERR_MEMORY;
+    }
+    status = eg2d_curve_naca4(digits, EG2D_NACA_CLOSED_TE, &foil);
+    if (!status) status = eg2d_curve_points(foil, na, EG2D_DIST_UNIFORM, 0, 0, x + wake, y + wake);
+    eg2d_curve_destroy(foil);
+    for (i = 0; i < wake; ++i) { /* the wake, uniform from the outflow x = 1 + radius to the TE */
+        x[i] = x[ni - 1 - i] = 1 + radius * (double)(wake - i) / wake;
+        y[i] = y[ni - 1 - i] = 0;
+    }
+    if (!status) status = eg2d_set_side(g, EG2D_SIDE_JMIN, x, y);
+    for (i = 0; i < ni; ++i) { /* the far field: the same x on the wake, a half circle about the TE between */
+        if (i <= wake || i >= ni - 1 - wake) {
+            y[i] = i <= wake ? -radius : radius;
+        } else {
+            const double a = -EG2D_TEST_PI / 2 - EG2D_TEST_PI * (double)(i - wake) / (na - 1);
+            x[i] = 1 + radius * cos(a);
+            y[i] = radius * sin(a);
+        }
+    }
+    if (!status) status = eg2d_set_side(g, EG2D_SIDE_JMAX, x, y);
+    for (j = 0; j < nj; ++j) { /* the outflow lines */
+        x[j] = 1 + radius;
+        y[j] = -radius * (double)j / (nj - 1);
+    }
+    if (!status) status = eg2d_set_side(g, EG2D_SIDE_IMIN, x, y);
+    for (j = 0; j < nj; ++j) y[j] = -y[j];
+    if (!status) status = eg2d_set_side(g, EG2D_SIDE_IMAX, x, y);
+    free(x);
+    free(y);
+    return status;
+}

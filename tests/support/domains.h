@@ -24,6 +24,13 @@ int domain_set_annulus(eg2d_grid *grid, double r_inner, double r_outer);
  * clockwise from the trailing-edge side. Sets the topology and both sides. */
 int domain_set_airfoil_o(eg2d_grid *grid, const char *digits, double radius);
 
+/* The same section as a C-grid: JMIN the lower wake (`wake` points from the
+ * outflow x = 1 + radius to the trailing edge, uniform), the section, the
+ * upper wake; JMAX the lines y = -radius and y = radius over the wake and the
+ * half circle of that radius about the trailing edge between; IMIN and IMAX
+ * the outflow lines. ni - 2 wake points lie on the section. */
+int domain_set_airfoil_c(eg2d_grid *grid, const char *digits, int wake, double radius);
+
 /* Names of the simply connected domains, NULL-terminated. */
 extern const char *const domain_names[];
 
