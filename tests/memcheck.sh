@@ -18,7 +18,8 @@ tests = json.load(sys.stdin)["tests"]
 print("|".join(re.escape(t["name"]) for t in tests
                if os.path.realpath(t.get("command", [""])[0]).startswith(build + os.sep)))' "$build")
 rm -f "$build"/Testing/Temporary/MemoryChecker.*.log
-ctest --test-dir "$build" -T memcheck -R "^($compiled)\$" --output-on-failure \
+# Two at a time by default (EG2D_MEMCHECK_JOBS): valgrind runs one thread.
+ctest --test-dir "$build" -T memcheck -R "^($compiled)\$" --output-on-failure -j "${EG2D_MEMCHECK_JOBS:-2}" \
       --overwrite MemoryCheckCommand="$valgrind" \
       --overwrite MemoryCheckCommandOptions="$opts" \
       --overwrite MemoryCheckSuppressionFile=""
