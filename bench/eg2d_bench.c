@@ -1,19 +1,33 @@
 /* eg2d_bench: iterations, time and residual of every solver of the library
  * on the benchmark cases of issue 3, as a markdown table and as JSON.
  *
- *   eg2d_bench [--cases swan,valley,annulus,naca0012,naca0012-c] [--sizes 65,129,257,513,1025]
- *              [--solvers psor,af,...] [--system winslow|laplace]
+ *   eg2d_bench [--cases swan,valley,...] [--sizes 65,129,257,513,1025]
+ *              [--solvers psor,psor:1,af,...] [--system winslow|laplace]
  *              [--tolerance 1e-10] [--cap SECONDS] [--repeats N] [--json FILE]
+ *   eg2d_bench --compare [--repeats N] [--json FILE]
+ *              swan 129^2 point Gauss-Seidel (PSOR, omega = 1) against
+ *              multigrid in one run; swan 1025^2 multigrid against the point
+ *              Gauss-Seidel extrapolated from its sweeps at 65^2 and 129^2
  *   eg2d_bench --seed004     seed 004 Table 2: an 87x31 O-grid, E < 5e-5 and 1e-10
  *
- * Every run: TFI start, eg2d_solve to the residual (NUMERICS.md). A run that
- * passes --cap seconds (default 60) is stopped by the monitor and reported
- * as "capped" with the iterations it did. With --repeats N the time is the
- * median of N runs. The mean convergence factor per iteration is
- * (r_end / r_start)^(1/iterations); for the multilevel solvers (nested,
- * multigrid) it is the figure of merit. Solvers are found NLopt-style: every
- * id 0..99 with eg2d_solver_name(id) != NULL. Timings belong here, never in
- * the tests. */
+ * Cases (cases.c): swan, valley, annulus, annulus-source, naca0012,
+ * naca0012-c, naca0012-stretched. A solver name may carry ":omega" (psor:1
+ * is point Gauss-Seidel): eg2d_set_relaxation(omega) for that column.
+ *
+ * Every run: TFI start, eg2d_solve to the residual (NUMERICS.md), on this
+ * one thread. Printed: wall seconds and the CPU seconds of this thread (the
+ * machine may be shared: CPU time is the cost); iterations per CPU second;
+ * the mean factor per iteration after the first, (r_end / r_1)^(1/(it-1))
+ * (multigrid's first cycle is its full-multigrid start); work units, 1 WU =
+ * the CPU time of one eg2d_get_residual on the same grid (a fine-grid
+ * residual evaluation), measured after the run. A run whose CPU time passes
+ * --cap seconds (default 60; or its wall time 5x that) is stopped by the
+ * monitor and reported as "capped" with the iterations it did. With
+ * --repeats N the times are medians of N runs. JSON has -1 where a value
+ * is not finite (or undefined). A run that reaches the
+ * residual with folded cells is reported as "folded". Solvers are found
+ * NLopt-style: every id 0..99 with eg2d_solver_name(id) != NULL. Timings
+ * belong here, never in the tests. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
@@ -21,67 +35,30 @@
 #include <string.h>
 #include <time.h>
 
-#include "domains.h"
-#include "eg2d.h"
+#include "bench.h"
 
 #define MAX_ITEMS 32
 
-static double now(void) {
+static double clock_of(clockid_t id) {
     struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
+    clock_gettime(id, &t);
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
-
-/*--------------------------------------------------------------------------
- * Cases. Each sets the boundary of a grid of the size it chooses.
- *------------------------------------------------------------------------*/
-typedef struct {
-    const char *name;
-    int (*size_nj)(int n); /* nj for the size n (ni = n) */
-    int (*set)(eg2d_grid *g);
-} bench_case;
-
-static int square(int n) { return n; }
-static int half(int n) { return n / 2 + 1; }
-static int set_swan(eg2d_grid *g) { return domain_set(g, "swan"); }
-static int set_valley(eg2d_grid *g) { return domain_set(g, "valley"); }
-static int set_annulus(eg2d_grid *g) { return domain_set_annulus(g, 1.0, 3.0); }
-static int set_annulus_source(eg2d_grid *g) {
-    const int status = domain_set_annulus(g, 1.0, 3.0);
-    return status != EG2D_OK ? status : eg2d_add_line_source(g, EG2D_ETA, 0.0, 100.0, 0.2);
-}
-static int quarter(int n) { return n / 4 + 1; }
-static int set_naca0012(eg2d_grid *g) { return domain_set_airfoil_o(g, "0012", 10.0); }
-static int set_naca0012_c(eg2d_grid *g) {
-    int ni, nj, status = eg2d_get_size(g, &ni, &nj);
-    return status ? status : domain_set_airfoil_c(g, "0012", ni / 4, 5.0);
-}
-
-static const bench_case cases[] = {
-    {"swan", square, set_swan},       /* seed 003 A4 */
-    {"valley", square, set_valley},   /* seed 003 A1 */
-    {"annulus", half, set_annulus},   /* O-grid, 1 <= r <= 3, n x (n/2+1) */
-    {"naca0012", quarter, set_naca0012}, /* O-grid, sharp-TE NACA0012 in r = 10, n x (n/4+1) */
-    {"naca0012-c", quarter, set_naca0012_c}, /* C-grid, n/4 wake points a side to x = 6, r = 5, n x (n/4+1) */
-    /* The annulus with seed 004 eq 14's line attraction toward the inner wall
-     * (mu = 100, kappa = 0.2): iterations against "annulus" are the cost of sources. */
-    {"annulus-source", half, set_annulus_source},
-};
-#define N_CASES (sizeof cases / sizeof cases[0])
+double bench_wall(void) { return clock_of(CLOCK_MONOTONIC); }
+double bench_cpu(void) { return clock_of(CLOCK_THREAD_CPUTIME_ID); }
 
 /*--------------------------------------------------------------------------
  * One run.
  *------------------------------------------------------------------------*/
 typedef struct {
-    double start, cap;
+    double cpu0, wall0, cap, r1;
     int capped;
 } watch;
 
 static int stop_at_cap(void *user, int iteration, double residual) {
     watch *w = user;
-    (void)iteration;
-    (void)residual;
-    if (now() - w->start > w->cap) {
+    if (iteration == 1) w->r1 = residual;
+    if (bench_cpu() - w->cpu0 > w->cap || bench_wall() - w->wall0 > 5 * w->cap) {
         w->capped = 1;
         return 1;
     }
@@ -90,35 +67,61 @@ static int stop_at_cap(void *user, int iteration, double residual) {
 
 typedef struct {
     int iterations;
-    double seconds, r0, residual;
-    const char *status; /* "ok", "capped", "diverged", ... */
+    double wall, cpu, r0, r1, residual;
+    double residual_cpu;              /* CPU seconds of one eg2d_get_residual: 1 WU */
+    double wall_spacing, aspect_ratio; /* of the final grid */
+    const char *status;               /* "ok", "capped", "diverged", ... */
     char message[200];
 } result;
 
-static result run_once(const bench_case *c, int n, int solver, int system, double tol, double cap) {
+/* The CPU seconds of one residual evaluation: the mean of at least 3 and at
+ * least 0.02 s of them (the clock's resolution is far below that). */
+static double residual_seconds(const eg2d_grid *g) {
+    const double c0 = bench_cpu();
+    double r, c;
+    int k = 0;
+    do {
+        eg2d_get_residual(g, &r);
+        ++k;
+        c = bench_cpu() - c0;
+    } while (k < 3 || c < 0.02);
+    return c / k;
+}
+
+static result run_once(const bench_case *c, int n, int solver, double omega, int system, double tol, double cap) {
     result res;
     eg2d_grid *g = NULL;
     watch w;
+    double folded;
     int status;
     memset(&res, 0, sizeof res);
     res.status = "error";
     if (eg2d_create(n, c->size_nj(n), &g) != EG2D_OK || c->set(g) != EG2D_OK || eg2d_set_solver(g, solver) ||
         eg2d_set_system(g, system) || eg2d_set_tolerance(g, tol) || eg2d_set_max_iterations(g, 1000000000) ||
-        eg2d_set_parameter(g, EG2D_PARAM_FOLD_CHECK, 0) || eg2d_initialize(g, EG2D_INIT_TFI) ||
-        eg2d_get_residual(g, &res.r0)) {
+        eg2d_set_relaxation(g, omega) || eg2d_set_parameter(g, EG2D_PARAM_FOLD_CHECK, 0) ||
+        eg2d_initialize(g, EG2D_INIT_TFI) || eg2d_get_residual(g, &res.r0)) {
         snprintf(res.message, sizeof res.message, "%s", g ? eg2d_last_error(g) : eg2d_last_error(NULL));
         eg2d_destroy(g);
         return res;
     }
     w.cap = cap;
     w.capped = 0;
+    w.r1 = NAN;
     eg2d_set_monitor(g, stop_at_cap, &w);
-    w.start = now();
+    w.wall0 = bench_wall();
+    w.cpu0 = bench_cpu();
     status = eg2d_solve(g);
-    res.seconds = now() - w.start;
+    res.cpu = bench_cpu() - w.cpu0;
+    res.wall = bench_wall() - w.wall0;
+    res.r1 = w.r1;
     eg2d_get_iterations(g, &res.iterations);
     eg2d_get_residual(g, &res.residual);
-    if (status == EG2D_OK) res.status = "ok";
+    res.residual_cpu = residual_seconds(g);
+    res.wall_spacing = bench_wall_spacing(g);
+    if (eg2d_get_quality(g, EG2D_QUALITY_ASPECT_RATIO, &res.aspect_ratio)) res.aspect_ratio = NAN;
+    /* the bench turns the library's fold check off to time every run to its
+     * end, so a run that converged to a folded grid is flagged here */
+    if (status == EG2D_OK) res.status = eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &folded) || folded > 0 ? "folded" : "ok";
     else if (status == EG2D_ERR_INTERRUPTED && w.capped) res.status = "capped";
     else if (status == EG2D_ERR_DIVERGED) res.status = "diverged";
     else res.status = "failed";
@@ -132,135 +135,112 @@ static int cmp_double(const void *a, const void *b) {
     return (x > y) - (x < y);
 }
 
+/* Median times of `repeats` runs; a capped or failed run is not repeated. */
+static result run_median(const bench_case *c, int n, int solver, double omega, int system, double tol, double cap,
+                         int repeats) {
+    double wall[99], cpu[99], wu[99];
+    result res;
+    int r;
+    for (r = 0; r < repeats; ++r) {
+        res = run_once(c, n, solver, omega, system, tol, cap);
+        wall[r] = res.wall;
+        cpu[r] = res.cpu;
+        wu[r] = res.residual_cpu;
+        if (strcmp(res.status, "ok")) return res;
+    }
+    qsort(wall, (size_t)repeats, sizeof wall[0], cmp_double);
+    qsort(cpu, (size_t)repeats, sizeof cpu[0], cmp_double);
+    qsort(wu, (size_t)repeats, sizeof wu[0], cmp_double);
+    res.wall = wall[repeats / 2];
+    res.cpu = cpu[repeats / 2];
+    res.residual_cpu = wu[repeats / 2];
+    return res;
+}
+
 /*--------------------------------------------------------------------------
- * Seed 004 Table 2: an 87 x 31 O-grid around an irregular body, every scheme
- * stopped when E, the mean change of a node in one iteration, is below 5e-5.
+ * Output.
  *------------------------------------------------------------------------*/
-typedef struct {
-    eg2d_grid *g;
-    double *x, *y, e;
-    size_t n;
-    int e_iterations;  /* the first iteration with E < 5e-5 */
-    double e_residual; /* the residual there */
-} change_watch;
+static FILE *json;
+static int json_first = 1;
 
-static int watch_change(void *user, int iteration, double residual) {
-    change_watch *c = user;
-    double *x = c->x + c->n, *y = c->y + c->n, sum = 0;
-    size_t k;
-    eg2d_get_coordinates(c->g, x, y);
-    for (k = 0; k < c->n; ++k) sum += hypot(x[k] - c->x[k], y[k] - c->y[k]);
-    memcpy(c->x, x, sizeof(double) * c->n);
-    memcpy(c->y, y, sizeof(double) * c->n);
-    c->e = sum / (double)c->n;
-    if (c->e < 5e-5 && c->e_iterations < 0) {
-        c->e_iterations = iteration;
-        c->e_residual = residual;
-    }
-    return 0;
+static double factor_after_first(const result *r) {
+    return r->iterations > 1 && r->r1 > 0 && r->residual > 0 ? pow(r->residual / r->r1, 1.0 / (r->iterations - 1))
+                                                            : NAN;
 }
 
-/* The body r = 1 + 0.25 cos 2t + 0.15 sin 3t + 0.08 cos 5t inside the circle r = 8. */
-static int set_blob(eg2d_grid *g, int ni) {
-    double *x = malloc(sizeof(double) * (size_t)ni * 2), *y = x + ni;
-    int i, status;
-    for (i = 0; i < ni; ++i) {
-        const double t = 2 * 3.14159265358979323846 * i / (ni - 1);
-        const double r = 1 + 0.25 * cos(2 * t) + 0.15 * sin(3 * t) + 0.08 * cos(5 * t);
-        x[i] = r * cos(t);
-        y[i] = r * sin(t);
-    }
-    x[ni - 1] = x[0];
-    y[ni - 1] = y[0];
-    status = eg2d_set_topology(g, EG2D_TOPO_O);
-    if (!status) status = eg2d_set_side(g, EG2D_SIDE_JMIN, x, y);
-    for (i = 0; i < ni; ++i) {
-        const double t = 2 * 3.14159265358979323846 * i / (ni - 1);
-        x[i] = 8 * cos(t);
-        y[i] = 8 * sin(t);
-    }
-    x[ni - 1] = x[0];
-    y[ni - 1] = y[0];
-    if (!status) status = eg2d_set_side(g, EG2D_SIDE_JMAX, x, y);
-    free(x);
-    return status;
+static void print_header(void) {
+    printf("| case | size | solver | iterations | wall s | CPU s | final residual | iterations/CPU s "
+           "| factor/iteration | WU/iteration | WU | wall spacing | max aspect ratio | status |\n");
+    printf("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
 }
 
-typedef struct {
-    int e_iterations, iterations; /* to E < 5e-5; to the residual 1e-10 (-1: never) */
-    double e_residual;
-} seed004_result;
-
-static seed004_result seed004_run(int solver, double omega) {
-    const int ni = 87, nj = 31;
-    seed004_result out = {-1, -1, 0};
-    change_watch c;
-    if (eg2d_create(ni, nj, &c.g) || set_blob(c.g, ni) || eg2d_set_solver(c.g, solver) ||
-        eg2d_initialize(c.g, EG2D_INIT_TFI)) {
-        eg2d_destroy(c.g);
-        return out;
-    }
-    if (omega > 0) {
-        if (solver == EG2D_SOLVER_AF) eg2d_set_parameter(c.g, EG2D_PARAM_AF_RELAXATION, omega);
-        else eg2d_set_relaxation(c.g, omega);
-    }
-    c.n = (size_t)ni * nj;
-    c.x = malloc(sizeof(double) * c.n * 2);
-    c.y = malloc(sizeof(double) * c.n * 2);
-    c.e_iterations = -1;
-    eg2d_get_coordinates(c.g, c.x, c.y);
-    eg2d_set_monitor(c.g, watch_change, &c);
-    eg2d_set_tolerance(c.g, 1e-10);
-    eg2d_set_max_iterations(c.g, 20000);
-    if (eg2d_solve(c.g) == EG2D_OK) eg2d_get_iterations(c.g, &out.iterations);
-    out.e_iterations = c.e_iterations;
-    out.e_residual = c.e_residual;
-    free(c.x);
-    free(c.y);
-    eg2d_destroy(c.g);
-    return out;
-}
-
-static void seed004_row(const char *name, const char *label, double omega, seed004_result r) {
-    printf("| %s | %s", name, label);
-    if (omega > 0) printf(" %.2f", omega);
-    printf(" | %d | %.2e | %d |\n", r.e_iterations, r.e_residual, r.iterations);
-}
-
-static void seed004(void) {
-    int id;
-    printf("Seed 004 Table 2 case: Winslow, 87x31 O-grid (irregular body inside r = 8), TFI start.\n"
-           "E = mean node move of one iteration (seed 004's stop: E < 5e-5); best omega scanned\n"
-           "(point solvers 1.00..1.98 by 0.02, AF 0.1..3.0 by 0.1).\n\n");
-    printf("| solver | omega | iterations to E < 5e-5 | residual there | iterations to residual 1e-10 |\n");
-    printf("|---|---|---:|---:|---:|\n");
-    for (id = 0; id < 100; ++id) {
-        const char *name = eg2d_solver_name(id);
-        seed004_result r, best_e = {-1, -1, 0}, best_r = {-1, -1, 0};
-        double w_e = 0, w_r = 0;
-        int k;
-        if (!name) continue;
-        seed004_row(name, "automatic", 0, seed004_run(id, 0));
-        for (k = 0; k < 50; ++k) {
-            const double w = id == EG2D_SOLVER_AF ? 0.1 * (k + 1) : 1.0 + 0.02 * k;
-            if (id == EG2D_SOLVER_AF && w > 3.0) break;
-            r = seed004_run(id, w);
-            if (r.e_iterations > 0 && (best_e.e_iterations < 0 || r.e_iterations < best_e.e_iterations)) {
-                best_e = r;
-                w_e = w;
-            }
-            if (r.iterations > 0 && (best_r.iterations < 0 || r.iterations < best_r.iterations)) {
-                best_r = r;
-                w_r = w;
-            }
-        }
-        seed004_row(name, "best for E", w_e, best_e);
-        seed004_row(name, "best for 1e-10", w_r, best_r);
-    }
+static void print_row(const char *case_name, int ni, int nj, const char *solver, const result *r) {
+    const double factor = factor_after_first(r);
+    const double wu = r->residual_cpu > 0 ? r->cpu / r->residual_cpu : NAN;
+    const double rate = r->cpu > 0 ? r->iterations / r->cpu : 0.0;
+    printf("| %s | %dx%d | %s | %d | %.3f | %.3f | %.2e | %.1f | %.4f | %.1f | %.0f | %.2e | %.3g | %s |\n",
+           case_name, ni, nj, solver, r->iterations, r->wall, r->cpu, r->residual, rate, factor,
+           r->iterations > 0 ? wu / r->iterations : NAN, wu, r->wall_spacing, r->aspect_ratio, r->status);
+    if (r->message[0] && strcmp(r->status, "capped")) fprintf(stderr, "  %s\n", r->message);
+    fflush(stdout);
+    if (!json) return;
+    fprintf(json,
+            "%s\n  {\"case\": \"%s\", \"ni\": %d, \"nj\": %d, \"solver\": \"%s\", \"iterations\": %d, "
+            "\"wall_seconds\": %.6f, \"cpu_seconds\": %.6f, \"start_residual\": %.6e, \"final_residual\": %.6e, "
+            "\"iterations_per_cpu_second\": %.3f, \"factor_per_iteration\": %.6f, \"residual_cpu_seconds\": %.6e, "
+            "\"work_units\": %.2f, \"wall_spacing\": %.6e, \"max_aspect_ratio\": %.6e, \"status\": \"%s\"}",
+            json_first ? "" : ",", case_name, ni, nj, solver, r->iterations, r->wall, r->cpu, r->r0, r->residual,
+            rate, isfinite(factor) ? factor : -1.0, r->residual_cpu, isfinite(wu) ? wu : -1.0,
+            isfinite(r->wall_spacing) ? r->wall_spacing : -1.0, isfinite(r->aspect_ratio) ? r->aspect_ratio : -1.0,
+            r->status);
+    json_first = 0;
 }
 
 /*--------------------------------------------------------------------------
- * Options and output.
+ * --compare: issue 3's two speed targets, measured in one run.
+ *------------------------------------------------------------------------*/
+static void compare(int repeats) {
+    const bench_case *swan = bench_find_case("swan");
+    const int W = EG2D_SYSTEM_WINSLOW;
+    result gs65, gs129, mg129, gs1025, mg1025;
+    double p, sweeps, gs_cpu;
+    printf("Winslow, TFI start, residual 1e-10, swan (seed 003 A4); CPU s of this thread, median of %d\n\n", repeats);
+    print_header();
+    gs65 = run_median(swan, 65, EG2D_SOLVER_PSOR, 1.0, W, 1e-10, 600, 1);
+    print_row("swan", 65, 65, "psor:1", &gs65);
+    gs129 = run_median(swan, 129, EG2D_SOLVER_PSOR, 1.0, W, 1e-10, 600, repeats);
+    print_row("swan", 129, 129, "psor:1", &gs129);
+    mg129 = run_median(swan, 129, EG2D_SOLVER_MULTIGRID, 0.0, W, 1e-10, 600, repeats);
+    print_row("swan", 129, 129, "multigrid", &mg129);
+    /* point Gauss-Seidel at 1025^2 takes hours: its cost per sweep is measured
+     * over a few CPU seconds, its sweep count extrapolated below */
+    gs1025 = run_once(swan, 1025, EG2D_SOLVER_PSOR, 1.0, W, 1e-10, 3.0);
+    print_row("swan", 1025, 1025, "psor:1", &gs1025);
+    mg1025 = run_median(swan, 1025, EG2D_SOLVER_MULTIGRID, 0.0, W, 1e-10, 600, repeats);
+    print_row("swan", 1025, 1025, "multigrid", &mg1025);
+    printf("\nswan 129^2, side by side: multigrid %.0fx faster than point Gauss-Seidel (PSOR, omega = 1) "
+           "in CPU time, %.0fx in wall time (%d sweeps against %d cycles)\n",
+           gs129.cpu / mg129.cpu, gs129.wall / mg129.wall, gs129.iterations, mg129.iterations);
+    /* sweeps grow as n^p: p from 65^2 -> 129^2 (about 2: 4x per doubling) */
+    p = log2((double)gs129.iterations / gs65.iterations);
+    sweeps = gs129.iterations * pow(1024.0 / 128.0, p);
+    gs_cpu = sweeps * gs1025.cpu / gs1025.iterations;
+    printf("swan 1025^2: multigrid %.2f s CPU, %.2f s wall, %d cycles; point Gauss-Seidel extrapolated: "
+           "%.0f sweeps (n^%.2f from 65^2 and 129^2) x %.4f CPU s per sweep (measured at 1025^2) = %.0f s, "
+           "%.0fx the multigrid\n",
+           mg1025.cpu, mg1025.wall, mg1025.iterations, sweeps, p, gs1025.cpu / gs1025.iterations, gs_cpu,
+           gs_cpu / mg1025.cpu);
+    if (json)
+        fprintf(json,
+                "\n], \"compare\": {\"speedup_129_cpu\": %.2f, \"speedup_129_wall\": %.2f, "
+                "\"gs_sweeps_exponent\": %.4f, \"gs_1025_sweeps_extrapolated\": %.0f, "
+                "\"gs_1025_cpu_seconds_extrapolated\": %.1f, \"mg_1025_cpu_seconds\": %.4f, "
+                "\"speedup_1025_cpu_extrapolated\": %.0f",
+                gs129.cpu / mg129.cpu, gs129.wall / mg129.wall, p, sweeps, gs_cpu, mg1025.cpu, gs_cpu / mg1025.cpu);
+}
+
+/*--------------------------------------------------------------------------
+ * Options.
  *------------------------------------------------------------------------*/
 static int split(char *list, const char **items) {
     int n = 0;
@@ -272,9 +252,22 @@ static int split(char *list, const char **items) {
     return n;
 }
 
+/* "name" or "name:omega" -> the solver id (-1 if none) and omega (0: automatic). */
+static int parse_solver(const char *spec, double *omega) {
+    const char *colon = strchr(spec, ':');
+    const size_t len = colon ? (size_t)(colon - spec) : strlen(spec);
+    int id;
+    *omega = colon ? atof(colon + 1) : 0.0;
+    for (id = 0; id < 100; ++id)
+        if (eg2d_solver_name(id) && strlen(eg2d_solver_name(id)) == len && !strncmp(eg2d_solver_name(id), spec, len))
+            return id;
+    return -1;
+}
+
 static void usage(void) {
-    fprintf(stderr, "usage: eg2d_bench [--cases LIST] [--sizes LIST] [--solvers LIST] [--system winslow|laplace]\n"
-                    "                  [--tolerance T] [--cap SECONDS] [--repeats N] [--json FILE] [--seed004]\n");
+    fprintf(stderr, "usage: eg2d_bench [--cases LIST] [--sizes LIST] [--solvers LIST (name or name:omega)]\n"
+                    "                  [--system winslow|laplace] [--tolerance T] [--cap CPU-SECONDS]\n"
+                    "                  [--repeats N] [--json FILE] [--compare | --seed004]\n");
 }
 
 int main(int argc, char **argv) {
@@ -282,14 +275,17 @@ int main(int argc, char **argv) {
     char cases_arg[256] = "swan,valley,annulus", sizes_arg[256] = "65,129,257,513,1025", solvers_arg[512] = "";
     const char *json_path = NULL;
     double tol = 1e-10, cap = 60;
-    int repeats = 1, system = EG2D_SYSTEM_WINSLOW, n_cases, n_sizes, n_solvers = 0, a, ci, si, vi, first = 1;
-    FILE *json = NULL;
+    int repeats = 1, system = EG2D_SYSTEM_WINSLOW, n_cases, n_sizes, n_solvers = 0, a, ci, si, vi, do_compare = 0;
 
     for (a = 1; a < argc; ++a) {
         const char *opt = argv[a], *val = a + 1 < argc ? argv[a + 1] : NULL;
         if (!strcmp(opt, "--seed004")) {
-            seed004();
+            bench_seed004();
             return 0;
+        }
+        if (!strcmp(opt, "--compare")) {
+            do_compare = 1;
+            continue;
         }
         if (!val) {
             usage();
@@ -322,75 +318,43 @@ int main(int argc, char **argv) {
             if (eg2d_solver_name(id)) solver_names[n_solvers++] = eg2d_solver_name(id);
     }
     for (vi = 0; vi < n_solvers; ++vi) { /* every name must be known before any run */
-        int id, known = 0;
-        for (id = 0; id < 100; ++id) known |= eg2d_solver_name(id) && !strcmp(eg2d_solver_name(id), solver_names[vi]);
-        if (!known) {
-            fprintf(stderr, "no solver %s in this library\n", solver_names[vi]);
+        double omega;
+        if (parse_solver(solver_names[vi], &omega) < 0 || omega < 0 || omega >= 2) {
+            fprintf(stderr, "no solver %s in this library (or omega outside [0, 2))\n", solver_names[vi]);
             return 2;
         }
     }
+    for (ci = 0; ci < n_cases; ++ci)
+        if (!bench_find_case(case_names[ci])) {
+            fprintf(stderr, "no case %s\n", case_names[ci]);
+            return 2;
+        }
     if (json_path && !(json = fopen(json_path, "w"))) {
         perror(json_path);
         return 1;
     }
-    if (json) fprintf(json, "{\"system\": \"%s\", \"tolerance\": %g, \"cap_seconds\": %g, \"repeats\": %d, \"runs\": [",
-                      system ? "winslow" : "laplace", tol, cap, repeats);
-
-    printf("%s, TFI start, residual %g, cap %g s, median of %d\n\n", system ? "Winslow" : "Laplace", tol, cap, repeats);
-    printf("| case | size | solver | iterations | seconds | final residual | iterations/s | factor/iteration | status |\n");
-    printf("|---|---|---|---:|---:|---:|---:|---:|---|\n");
-    for (ci = 0; ci < n_cases; ++ci) {
-        const bench_case *c = NULL;
-        size_t k;
-        for (k = 0; k < N_CASES; ++k)
-            if (!strcmp(cases[k].name, case_names[ci])) c = &cases[k];
-        if (!c) {
-            fprintf(stderr, "no case %s\n", case_names[ci]);
-            return 2;
-        }
-        for (si = 0; si < n_sizes; ++si) {
-            const int n = atoi(size_list[si]);
-            for (vi = 0; vi < n_solvers; ++vi) {
-                int id, solver = -1, r;
-                double secs[99], factor;
-                result res;
-                for (id = 0; id < 100; ++id)
-                    if (eg2d_solver_name(id) && !strcmp(eg2d_solver_name(id), solver_names[vi])) solver = id;
-                if (solver < 0) {
-                    fprintf(stderr, "no solver %s in this library\n", solver_names[vi]);
-                    return 2;
-                }
-                for (r = 0; r < repeats; ++r) {
-                    res = run_once(c, n, solver, system, tol, cap);
-                    secs[r] = res.seconds;
-                    if (strcmp(res.status, "ok")) break; /* a capped or failed run is not repeated */
-                }
-                if (r == repeats) {
-                    qsort(secs, (size_t)repeats, sizeof secs[0], cmp_double);
-                    res.seconds = secs[repeats / 2];
-                }
-                factor = res.iterations > 0 && res.r0 > 0 && res.residual > 0
-                             ? pow(res.residual / res.r0, 1.0 / res.iterations) : NAN;
-                printf("| %s | %dx%d | %s | %d | %.3f | %.2e | %.1f | %.4f | %s |\n", c->name, n, c->size_nj(n),
-                       solver_names[vi], res.iterations, res.seconds, res.residual,
-                       res.seconds > 0 ? res.iterations / res.seconds : 0.0, factor, res.status);
-                if (res.message[0] && strcmp(res.status, "capped")) fprintf(stderr, "  %s\n", res.message);
-                fflush(stdout);
-                if (json) {
-                    fprintf(json,
-                            "%s\n  {\"case\": \"%s\", \"ni\": %d, \"nj\": %d, \"solver\": \"%s\", \"iterations\": %d, "
-                            "\"seconds\": %.6f, \"start_residual\": %.6e, \"final_residual\": %.6e, "
-                            "\"iterations_per_second\": %.3f, \"factor_per_iteration\": %.6f, \"status\": \"%s\"}",
-                            first ? "" : ",", c->name, n, c->size_nj(n), solver_names[vi], res.iterations,
-                            res.seconds, res.r0, res.residual, res.seconds > 0 ? res.iterations / res.seconds : 0.0,
-                            isnan(factor) ? -1.0 : factor, res.status);
-                    first = 0;
+    if (json) fprintf(json, "{\"system\": \"%s\", \"tolerance\": %g, \"cap_cpu_seconds\": %g, \"repeats\": %d, \"runs\": [",
+                      system ? "winslow" : "laplace", do_compare ? 1e-10 : tol, do_compare ? 600 : cap, repeats);
+    if (do_compare) compare(repeats);
+    else {
+        printf("%s, TFI start, residual %g, cap %g CPU s, times: median of %d\n\n", system ? "Winslow" : "Laplace", tol,
+               cap, repeats);
+        print_header();
+        for (ci = 0; ci < n_cases; ++ci) {
+            const bench_case *c = bench_find_case(case_names[ci]);
+            for (si = 0; si < n_sizes; ++si) {
+                const int n = atoi(size_list[si]);
+                for (vi = 0; vi < n_solvers; ++vi) {
+                    double omega;
+                    const int solver = parse_solver(solver_names[vi], &omega);
+                    const result res = run_median(c, n, solver, omega, system, tol, cap, repeats);
+                    print_row(c->name, n, c->size_nj(n), solver_names[vi], &res);
                 }
             }
         }
     }
     if (json) {
-        fprintf(json, "\n]}\n");
+        fprintf(json, do_compare ? "}}\n" : "\n]}\n");
         fclose(json);
     }
     return 0;

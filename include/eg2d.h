@@ -121,7 +121,7 @@ EG2D_API void eg2d_version(int *major, int *minor, int *patch);
  *===================================================================*/
 /* A grid of ni x nj nodes, ni, nj >= 3 (and ni*nj must fit the address
  * space). *grid is set to NULL on failure. Defaults: single-block topology,
- * Winslow system, point SOR, tolerance 1e-8, automatic relaxation. */
+ * Winslow system, multigrid solver, tolerance 1e-8, automatic relaxation. */
 EG2D_API int eg2d_create(int ni, int nj, eg2d_grid **grid);
 
 /* Frees everything; NULL is a no-op. */
@@ -194,10 +194,11 @@ EG2D_API int eg2d_set_coordinates(eg2d_grid *grid, const double *x, const double
 EG2D_API int eg2d_set_system(eg2d_grid *grid, int system);
 
 #define EG2D_SOLVER_PSOR      0  /* point SOR (Gauss-Seidel at omega = 1) */
-#define EG2D_SOLVER_LSOR      1  /* line SOR, alternating directions */
+#define EG2D_SOLVER_LSOR      1  /* line SOR, alternating directions; the periodic
+                                    direction of an O-grid is solved as a cyclic system */
 #define EG2D_SOLVER_AF        2  /* approximate factorisation, false transients */
 #define EG2D_SOLVER_NESTED    3  /* coarse-to-fine, seed 000 */
-#define EG2D_SOLVER_MULTIGRID 4  /* FAS multigrid */
+#define EG2D_SOLVER_MULTIGRID 4  /* FAS multigrid (the default); see EG2D_PARAM_MG_* */
 /* What one iteration is, per solver:
  *   PSOR    one lexicographic point SOR sweep (omega: EG2D_PARAM_RELAXATION).
  *   AF      one pseudo-time step: a xi and an eta line sweep (see the AF
@@ -210,7 +211,10 @@ EG2D_API int eg2d_set_system(eg2d_grid *grid, int system);
  *           start replaces the interior (of a warm start only the coarsest
  *           nodes are kept) unless it would fold cells. Any ni, nj work; with
  *           odd ni-1 or nj-1 NESTED is PSOR. EG2D_PARAM_RELAXATION applies on
- *           every level (automatic: the optimal factor of each level's size). */
+ *           every level (automatic: the optimal factor of each level's size).
+ *   LSOR    one sweep of xi-lines then one of eta-lines (omega: EG2D_PARAM_RELAXATION).
+ *   MULTIGRID one FAS cycle (EG2D_PARAM_MG_*); the first after a new start is
+ *           the full-multigrid start. EG2D_PARAM_RELAXATION does not apply. */
 /* Selects a solver; EG2D_ERR_UNSUPPORTED for an id this library lacks. */
 EG2D_API int eg2d_set_solver(eg2d_grid *grid, int solver);
 EG2D_API int eg2d_get_solver(const eg2d_grid *grid, int *solver);
@@ -220,7 +224,12 @@ EG2D_API const char *eg2d_solver_name(int solver);
 /* Relaxation factor omega in (0, 2); 0 = automatic. Automatic point SOR uses
  * seed 003's optimal factor for Laplace; for Winslow it starts at the optimum
  * of a grid half as fine and widens 2 - omega whenever the residual rises 10x
- * above its best (the optimum itself diverges on some grids). */
+ * above its best (the optimum itself diverges on some grids). Automatic line
+ * SOR uses the optimal line-SOR factor of the Laplace model problem per
+ * direction, reached from omega = 1 over the first max(ni, nj) sweeps after a
+ * new start (over-relaxing whole lines straight from TFI can fold the grid)
+ * and halved in omega - 1 whenever a sweep moves the grid 10 times more than
+ * the least move so far. Multigrid does not use it. */
 EG2D_API int eg2d_set_relaxation(eg2d_grid *grid, double omega);
 /* Stop when residual <= tolerance (default 1e-8), tolerance in (0, 1). */
 EG2D_API int eg2d_set_tolerance(eg2d_grid *grid, double tolerance);
@@ -239,6 +248,28 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
                                             the best of the run (and above 1e-2) is divergence */
 #define EG2D_PARAM_FOLD_CHECK         4  /* 1 (default): eg2d_solve returns EG2D_ERR_FOLDED when
                                             the converged grid has folded cells; 0: it does not */
+/* Multigrid (EG2D_SOLVER_MULTIGRID): FAS cycles with alternating line
+ * Gauss-Seidel smoothing. One iteration is one cycle; with PARAM_MG_FMG the
+ * first iteration after (re)initialising the grid is a full-multigrid start:
+ * solve on the coarsest grid, interpolate, one cycle per finer level.
+ * A direction is halved while it has an odd node count (ni-1 even; on an
+ * O-grid also ni-1 >= 16) above PARAM_MG_COARSEST; Winslow coarsens one
+ * direction alone when the other cannot, Laplace only both together. Sizes
+ * like 2^k+1 get the most levels; any size works (fewer levels). A coarse
+ * level whose grid breaks down (non-finite) is dropped for the rest of the
+ * run, with the levels below it. While a control is recomputed from the grid
+ * between iterations (wall orthogonality), an iteration is one line
+ * Gauss-Seidel sweep in each direction instead of a cycle: that control's
+ * update assumes each iteration moves the grid a little. */
+#define EG2D_PARAM_MG_CYCLE         110  /* 1 = V cycle, 2 = W cycle (default)             */
+#define EG2D_PARAM_MG_PRE_SMOOTH    111  /* [0, 20], default 2: alternating sweeps (xi-lines,
+                                              then eta-lines) before the coarse correction */
+#define EG2D_PARAM_MG_POST_SMOOTH   112  /* [0, 20], default 1: and after it (pre + post >= 1,
+                                              else eg2d_iterate/solve fail with EG2D_ERR_STATE) */
+#define EG2D_PARAM_MG_FMG           113  /* 1 (default): full-multigrid start; 0: V/W cycles from
+                                              the grid as it is */
+#define EG2D_PARAM_MG_COARSEST      114  /* [3, 1e9], default 5: a direction with this many nodes
+                                              or fewer is not coarsened further */
 /* Controls (200-299), see "Grid control" below. */
 #define EG2D_PARAM_WALL_DECAY       200  /* [0.01, 10], default 0.3: decay rate a (per cell) of the
                                             wall control, which acts as exp(-a (m-1)) at depth m */

@@ -17,6 +17,12 @@ const ParameterInfo kParameters[] = {
     {EG2D_PARAM_DIVERGENCE_FACTOR, "divergence_factor", 10.0, 1e12, false, false, false, false,
      &Settings::divergence_factor},
     {EG2D_PARAM_FOLD_CHECK, "fold_check", 0.0, 1.0, false, false, true, false, &Settings::fold_check},
+    {EG2D_PARAM_MG_CYCLE, "mg_cycle", 1.0, 2.0, false, false, true, false, &Settings::mg_cycle},
+    {EG2D_PARAM_MG_PRE_SMOOTH, "mg_pre_smooth", 0.0, 20.0, false, false, true, false, &Settings::mg_pre_smooth},
+    {EG2D_PARAM_MG_POST_SMOOTH, "mg_post_smooth", 0.0, 20.0, false, false, true, false,
+     &Settings::mg_post_smooth},
+    {EG2D_PARAM_MG_FMG, "mg_fmg", 0.0, 1.0, false, false, true, false, &Settings::mg_fmg},
+    {EG2D_PARAM_MG_COARSEST, "mg_coarsest", 3.0, 1e9, false, false, true, false, &Settings::mg_coarsest},
     // Controls.
     {EG2D_PARAM_WALL_DECAY, "wall_decay", 0.01, 10.0, false, false, false, false, &Settings::wall_decay},
     {EG2D_PARAM_WALL_RELAXATION, "wall_relaxation", 0.0, 1.0, true, false, false, false,

@@ -55,7 +55,7 @@ std::string missing_sides(const Grid &g) {
 }  // namespace
 
 Generator::Generator(int ni, int nj)
-    : grid_(ni, nj), solver_info_(find_solver(EG2D_SOLVER_PSOR)), solver_(solver_info_->make()) {}
+    : grid_(ni, nj), solver_info_(find_solver(EG2D_SOLVER_MULTIGRID)), solver_(solver_info_->make()) {}
 
 void Generator::set_topology(Topology t) {
     Grid next(grid_);
@@ -165,7 +165,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
     // over-relaxation diverge: automatic means 1 then.
     Settings run_settings = settings;
     if (controls_.has_dynamic() && run_settings.relaxation == 0.0) run_settings.relaxation = 1.0;
-    Problem problem{grid_, system_, fields, run_settings};
+    Problem problem{grid_, system_, fields, run_settings, controls_.has_dynamic()};
     const double extent = grid_.extent();
     double r = finite_residual(system_, problem.level(), extent).value;
     double best = r;

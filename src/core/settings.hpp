@@ -11,6 +11,12 @@ struct Settings {
     double max_iterations = 100000;   // per eg2d_solve call
     double divergence_factor = 1e4;   // residual > factor * best of the run = divergence
     double fold_check = 1;            // 1: solve fails with Folded on a folded converged grid
+    // Multigrid (src/solvers/multigrid*.cpp).
+    double mg_cycle = 2;              // cycle index: 1 = V, 2 = W
+    double mg_pre_smooth = 2;         // alternating line sweeps before the coarse correction
+    double mg_post_smooth = 1;        // and after it
+    double mg_fmg = 1;                // 1: the first cycle is a full-multigrid start
+    double mg_coarsest = 5;           // a direction is not coarsened below this many nodes
     // Wall orthogonality (src/controls/wall.cpp).
     double wall_decay = 0.3;          // a: the wall control decays as exp(-a (m-1)) at depth m
     double wall_relaxation = 0.1;     // under-relaxation of its updates, (0, 1]

@@ -6,12 +6,16 @@
 namespace eg2d {
 
 std::unique_ptr<Solver> make_psor();
+std::unique_ptr<Solver> make_lsor();
+std::unique_ptr<Solver> make_multigrid();
 std::unique_ptr<Solver> make_af();
 std::unique_ptr<Solver> make_nested();
 
 namespace {
 const SolverInfo kSolvers[] = {
     {EG2D_SOLVER_PSOR, "psor", make_psor},
+    {EG2D_SOLVER_LSOR, "lsor", make_lsor},
+    {EG2D_SOLVER_MULTIGRID, "multigrid", make_multigrid},
     {EG2D_SOLVER_AF, "af", make_af},
     {EG2D_SOLVER_NESTED, "nested", make_nested},
 };

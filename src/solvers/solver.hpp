@@ -17,6 +17,10 @@ struct Problem {
     System system;
     const ControlFields &controls;  // the fine grid's control fields
     const Settings &settings;
+    // True while a control term is recomputed from the grid between
+    // iterations (wall orthogonality): its update assumes each iteration
+    // moves the grid a little, which a multilevel cycle does not.
+    bool dynamic_controls = false;
 
     // The fine grid as an operator Level.
     Level level() const {

@@ -14,6 +14,23 @@ void solve_tridiagonal(std::size_t n, const double *a, const double *b, double *
     for (std::size_t k = n - 1; k-- > 0;) d[k] -= c[k] * d[k + 1];
 }
 
+void solve_tridiagonal2(std::size_t n, const double *a, const double *b, double *c, double *d1, double *d2) {
+    double inv = 1.0 / b[0];
+    c[0] = n > 1 ? c[0] * inv : 0.0;
+    d1[0] *= inv;
+    d2[0] *= inv;
+    for (std::size_t k = 1; k < n; ++k) {
+        inv = 1.0 / (b[k] - a[k] * c[k - 1]);
+        if (k + 1 < n) c[k] *= inv;
+        d1[k] = (d1[k] - a[k] * d1[k - 1]) * inv;
+        d2[k] = (d2[k] - a[k] * d2[k - 1]) * inv;
+    }
+    for (std::size_t k = n - 1; k-- > 0;) {
+        d1[k] -= c[k] * d1[k + 1];
+        d2[k] -= c[k] * d2[k + 1];
+    }
+}
+
 void solve_cyclic_tridiagonal(std::size_t n, const double *a, const double *b, const double *c, double *d,
                               std::vector<double> &work) {
     // A = T + u v^T with T tridiagonal: u = (g, 0, .., 0, c[n-1]),

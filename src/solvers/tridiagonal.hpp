@@ -12,6 +12,10 @@ namespace eg2d {
 // dominate, as it does for every system eg2d builds. n >= 1.
 void solve_tridiagonal(std::size_t n, const double *a, const double *b, double *c, double *d);
 
+// The same matrix for two right-hand sides d1, d2 (x and y of a grid line):
+// one elimination serves both. c is scratch; d1, d2 get the solutions.
+void solve_tridiagonal2(std::size_t n, const double *a, const double *b, double *c, double *d1, double *d2);
+
 // The periodic version: a[0] couples u[0] to u[n-1] and c[n-1] couples u[n-1]
 // to u[0]. n >= 3. `work` is scratch (resized as needed). Overwrites d with
 // the solution; a, b, c are left unchanged.

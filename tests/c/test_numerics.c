@@ -1,6 +1,7 @@
 /* The numerics against known answers: TFI, Laplace on a bilinear map,
- * Winslow's second-order convergence to a conformal map and to the annulus
- * O-grid solution, the seed 003 domains without folds, divergence. */
+ * Winslow's second-order convergence to a conformal map, the seed 003 domains
+ * without folds, folds reported. (Second order on the annulus O-grid, for
+ * every solver, is in test_geometry_grids.) */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -12,6 +13,7 @@
 #include <cmocka.h>
 
 #include "domains.h"
+#include "solve_compare.h"
 #include "eg2d.h"
 
 #define PI 3.14159265358979323846
@@ -121,44 +123,6 @@ static void test_winslow_second_order_conformal(void **state) {
     }
 }
 
-/* The annulus 3 <= r <= 9 as an O-grid: r = 3 * 3^eta, theta = 2 pi xi. */
-static double annulus_error(int ni, int nj) {
-    eg2d_grid *g;
-    double *x = alloc(ni * nj), *y = alloc(ni * nj), err = 0;
-    int i, j;
-    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
-    assert_int_equal(domain_set_annulus(g, 3.0, 9.0), EG2D_OK);
-    assert_int_equal(eg2d_set_tolerance(g, 1e-13), EG2D_OK);
-    assert_int_equal(eg2d_solve(g), EG2D_OK);
-    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
-    for (j = 0; j < nj; ++j)
-        for (i = 0; i < ni; ++i) {
-            const double r = 3.0 * pow(3.0, (double)j / (nj - 1)), t = 2 * PI * i / (ni - 1);
-            err = fmax(err, hypot(x[i + ni * j] - r * cos(t), y[i + ni * j] - r * sin(t)));
-        }
-    for (j = 0; j < nj; ++j) { /* the cut column is the same points */
-        assert_true(x[ni * j] == x[ni * j + ni - 1]);
-        assert_true(y[ni * j] == y[ni * j + ni - 1]);
-    }
-    free(x);
-    free(y);
-    eg2d_destroy(g);
-    return err;
-}
-
-static void test_annulus_o_grid_second_order(void **state) {
-    const int ni[] = {17, 33, 65}, nj[] = {9, 17, 33};
-    double e[3];
-    int m;
-    (void)state;
-    for (m = 0; m < 3; ++m) e[m] = annulus_error(ni[m], nj[m]);
-    for (m = 1; m < 3; ++m) {
-        const double order = log(e[m - 1] / e[m]) / log(2.0);
-        print_message("annulus O-grid: %dx%d error %.3e, observed order %.3f\n", ni[m], nj[m], e[m], order);
-        assert_true(order > 1.9 && order < 2.1);
-    }
-}
-
 static void test_seed003_domains_converge_unfolded(void **state) {
     int d;
     (void)state;
@@ -221,7 +185,6 @@ int main(void) {
         cmocka_unit_test(test_tfi_exact_on_boundary),
         cmocka_unit_test(test_laplace_reproduces_bilinear),
         cmocka_unit_test(test_winslow_second_order_conformal),
-        cmocka_unit_test(test_annulus_o_grid_second_order),
         cmocka_unit_test(test_seed003_domains_converge_unfolded),
         cmocka_unit_test(test_folded_start_is_reported),
     };

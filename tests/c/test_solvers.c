@@ -511,6 +511,7 @@ static void test_af_beats_best_psor_on_an_o_grid(void **state) {
     for (k = 0; k <= 12; ++k) { /* omega = 1.86 .. 1.98 */
         const double omega = 1.86 + 0.01 * k;
         g = make_case("annulus", n, EG2D_SYSTEM_WINSLOW);
+        assert_int_equal(eg2d_set_solver(g, EG2D_SOLVER_PSOR), EG2D_OK); /* multigrid is the default */
         assert_int_equal(eg2d_set_relaxation(g, omega), EG2D_OK);
         assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
         assert_int_equal(eg2d_solve(g), EG2D_OK);

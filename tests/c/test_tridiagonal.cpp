@@ -29,6 +29,17 @@ int main() {
         double err = 0;
         for (std::size_t k = 0; k < n; ++k) err = std::fmax(err, std::fabs(d[k] - u[k]));
         check(err < 1e-12, ("thomas n=" + std::to_string(n)).c_str(), err);
+        // Two right-hand sides at once: u and 2u - 1.
+        for (std::size_t k = 0; k < n; ++k)
+            d[k] = b[k] * u[k] + (k > 0 ? a[k] * u[k - 1] : 0.0) + (k + 1 < n ? c[k] * u[k + 1] : 0.0);
+        std::vector<double> d2(n);
+        for (std::size_t k = 0; k < n; ++k) d2[k] = 2.0 * d[k] - (b[k] + (k > 0 ? a[k] : 0.0) + (k + 1 < n ? c[k] : 0.0));
+        cc = c;
+        eg2d::solve_tridiagonal2(n, a.data(), b.data(), cc.data(), d.data(), d2.data());
+        err = 0;
+        for (std::size_t k = 0; k < n; ++k)
+            err = std::fmax(err, std::fmax(std::fabs(d[k] - u[k]), std::fabs(d2[k] - (2.0 * u[k] - 1.0))));
+        check(err < 1e-12, ("thomas, two right-hand sides n=" + std::to_string(n)).c_str(), err);
         if (n < 3) continue;
         // Periodic: a[0] couples to u[n-1], c[n-1] to u[0].
         for (std::size_t k = 0; k < n; ++k)

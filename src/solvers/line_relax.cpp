@@ -1,0 +1,225 @@
+#include "solvers/line_relax.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "solvers/tridiagonal.hpp"
+
+namespace eg2d {
+
+void LineWork::reserve(int n) {
+    const std::size_t m = static_cast<std::size_t>(std::max(n, 1));
+    if (a.size() >= m) return;
+    a.resize(m);
+    b.resize(m);
+    c.resize(m);
+    dx.resize(m);
+    dy.resize(m);
+    cyclic.resize(5 * m);
+}
+
+namespace {
+
+// One row of a line system: a d[k-1] + b d[k] + c d[k+1] = -(rx, ry).
+struct Row {
+    double a, b, c, rx, ry;
+};
+
+// The row at the node of stencil s. `along_xi` picks which second difference
+// (and first-difference control term) is implicit.
+inline Row line_row(System system, const Level &L, const Stencil &s, bool along_xi) {
+    Metrics m;
+    const NodeEquation eq = node_equation(system, L, s, &m);  // Laplace: alpha = gamma = 1, C = 0
+    const double second = along_xi ? m.alpha : m.gamma;
+    const double first = 0.5 * (along_xi ? m.cxi : m.ceta);
+    const double diag = -2.0 * (m.alpha + m.gamma);
+    if (diag < 0.0) return Row{second - first, diag, second + first, eq.rx, eq.ry};
+    return Row{0.0, -1.0, 0.0, eq.rx, eq.ry};  // all neighbours coincide (R = 0 too): stay
+}
+
+// The stencil of an interior node k (not across the O-grid cut), computed
+// directly so that row loops need no per-node topology test.
+inline Stencil plain_stencil(std::ptrdiff_t k, std::ptrdiff_t ni) {
+    return Stencil{k, k + 1, k - 1, k + ni, k - ni, k + ni + 1, k + ni - 1, k - ni + 1, k - ni - 1};
+}
+
+}  // namespace
+
+void relax_xi_line(System system, const Level &L, int j, double omega, LineWork &w) {
+    const Connectivity &conn = *L.conn;
+    const int i0 = conn.i_begin(), i1 = conn.i_end();
+    const std::size_t n = static_cast<std::size_t>(i1 - i0);
+    const std::ptrdiff_t ni = conn.ni(), row = ni * j;
+    w.reserve(conn.ni());
+    auto put = [&](std::size_t k, const Row &r) {
+        w.a[k] = r.a;
+        w.b[k] = r.b;
+        w.c[k] = r.c;
+        w.dx[k] = -r.rx;
+        w.dy[k] = -r.ry;
+    };
+    int first = i0;
+    if (conn.periodic_i()) {  // i = 0: its west neighbour is across the cut
+        put(0, line_row(system, L, conn.stencil(0, j), true));
+        first = 1;
+    }
+    for (int i = first; i < i1; ++i)
+        put(static_cast<std::size_t>(i - i0), line_row(system, L, plain_stencil(row + i, ni), true));
+    if (conn.periodic_i()) {
+        // Unknowns i = 0..ni-2 form a ring: the west of 0 is ni-2.
+        solve_cyclic_tridiagonal(n, w.a.data(), w.b.data(), w.c.data(), w.dx.data(), w.cyclic);
+        solve_cyclic_tridiagonal(n, w.a.data(), w.b.data(), w.c.data(), w.dy.data(), w.cyclic);
+    } else {
+        solve_tridiagonal2(n, w.a.data(), w.b.data(), w.c.data(), w.dx.data(), w.dy.data());
+    }
+    double *x = L.x + row + i0, *y = L.y + row + i0;
+    for (std::size_t k = 0; k < n; ++k) {
+        x[k] += omega * w.dx[k];
+        y[k] += omega * w.dy[k];
+    }
+    conn.sync_node(L.x, 0, j);
+    conn.sync_node(L.y, 0, j);
+}
+
+void relax_eta_line(System system, const Level &L, int i, double omega, LineWork &w) {
+    const Connectivity &conn = *L.conn;
+    const int j0 = conn.j_begin(), j1 = conn.j_end();
+    const std::size_t n = static_cast<std::size_t>(j1 - j0);
+    const std::ptrdiff_t ni = conn.ni();
+    w.reserve(conn.nj());
+    for (int j = j0; j < j1; ++j) {
+        const std::size_t k = static_cast<std::size_t>(j - j0);
+        const Row r = line_row(system, L, i == 0 ? conn.stencil(i, j) : plain_stencil(i + ni * j, ni), false);
+        w.a[k] = r.a;
+        w.b[k] = r.b;
+        w.c[k] = r.c;
+        w.dx[k] = -r.rx;
+        w.dy[k] = -r.ry;
+    }
+    solve_tridiagonal2(n, w.a.data(), w.b.data(), w.c.data(), w.dx.data(), w.dy.data());
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::ptrdiff_t at = i + ni * (j0 + static_cast<std::ptrdiff_t>(k));
+        L.x[at] += omega * w.dx[k];
+        L.y[at] += omega * w.dy[k];
+    }
+    if (i == 0)
+        for (int j = j0; j < j1; ++j) {
+            conn.sync_node(L.x, 0, j);
+            conn.sync_node(L.y, 0, j);
+        }
+}
+
+// All eta-lines of one colour (i = first, first+2, ...) solved together,
+// row by row: the Thomas elimination runs across the lines with unit-stride
+// memory access, where one line at a time would stride by ni. The lines of
+// one colour do not couple (their neighbours are the other colour), so this
+// is exactly line Gauss-Seidel in zebra order.
+static void relax_eta_colour(System system, const Level &L, int first, double omega, LineWork &w) {
+    const Connectivity &conn = *L.conn;
+    const int i1 = conn.i_end(), j0 = conn.j_begin(), j1 = conn.j_end();
+    const std::ptrdiff_t ni = conn.ni();
+    const std::size_t size = static_cast<std::size_t>(ni) * conn.nj();
+    if (w.grid_c.size() < size) {
+        w.grid_c.resize(size);
+        w.grid_dx.resize(size);
+        w.grid_dy.resize(size);
+    }
+    double *cp = w.grid_c.data(), *dx = w.grid_dx.data(), *dy = w.grid_dy.data();
+    for (int j = j0; j < j1; ++j) {
+        const std::ptrdiff_t row = ni * j;
+        for (int i = first; i < i1; i += 2) {
+            const std::ptrdiff_t k = row + i;
+            const Row r = line_row(system, L, i == 0 ? conn.stencil(i, j) : plain_stencil(k, ni), false);
+            if (j == j0) {
+                const double inv = 1.0 / r.b;
+                cp[k] = r.c * inv;
+                dx[k] = -r.rx * inv;
+                dy[k] = -r.ry * inv;
+            } else {
+                const double inv = 1.0 / (r.b - r.a * cp[k - ni]);
+                cp[k] = r.c * inv;
+                dx[k] = (-r.rx - r.a * dx[k - ni]) * inv;
+                dy[k] = (-r.ry - r.a * dy[k - ni]) * inv;
+            }
+        }
+    }
+    for (int j = j1 - 1; j >= j0; --j) {
+        const std::ptrdiff_t row = ni * j;
+        const bool last = j == j1 - 1;
+        for (int i = first; i < i1; i += 2) {
+            const std::ptrdiff_t k = row + i;
+            if (!last) {
+                dx[k] -= cp[k] * dx[k + ni];
+                dy[k] -= cp[k] * dy[k + ni];
+            }
+            L.x[k] += omega * dx[k];
+            L.y[k] += omega * dy[k];
+        }
+        conn.sync_node(L.x, 0, j);
+        conn.sync_node(L.y, 0, j);
+    }
+}
+
+void relax_extra_unknowns(System system, const Level &L, double omega) {
+    const Connectivity &conn = *L.conn;
+    for (const Connectivity::Node &p : conn.extra_unknowns()) {
+        const Stencil s = conn.stencil(p.i, p.j);
+        const NodeEquation eq = node_equation(system, L, s);
+        L.x[s.c] += omega * eq.rx / eq.diag;
+        L.y[s.c] += omega * eq.ry / eq.diag;
+        conn.sync_node(L.x, p.i, p.j);
+        conn.sync_node(L.y, p.i, p.j);
+    }
+}
+
+namespace {
+// Calls relax(k) for k in [begin, end) in the given order.
+template <class Relax>
+void visit_lines(int begin, int end, LineOrder order, Relax &&relax) {
+    switch (order) {
+    case LineOrder::Forward:
+        for (int k = begin; k < end; ++k) relax(k);
+        break;
+    case LineOrder::Backward:
+        for (int k = end - 1; k >= begin; --k) relax(k);
+        break;
+    case LineOrder::Zebra:
+        for (int k = begin | 1; k < end; k += 2) relax(k);
+        for (int k = (begin + 1) & ~1; k < end; k += 2) relax(k);
+        break;
+    }
+}
+}  // namespace
+
+void sweep_xi_lines(System system, const Level &L, double omega, LineWork &w, LineOrder order) {
+    const Connectivity &conn = *L.conn;
+    visit_lines(conn.j_begin(), conn.j_end(), order, [&](int j) { relax_xi_line(system, L, j, omega, w); });
+}
+
+void sweep_eta_lines(System system, const Level &L, double omega, LineWork &w, LineOrder order) {
+    const Connectivity &conn = *L.conn;
+    if (order == LineOrder::Zebra) {
+        const int begin = conn.i_begin();
+        relax_eta_colour(system, L, begin | 1, omega, w);
+        relax_eta_colour(system, L, (begin + 1) & ~1, omega, w);
+        return;
+    }
+    visit_lines(conn.i_begin(), conn.i_end(), order, [&](int i) { relax_eta_line(system, L, i, omega, w); });
+}
+
+LineOmega optimal_line_sor_omega(const Connectivity &conn) {
+    const double pi = 3.14159265358979323846;
+    const double ci = conn.periodic_i() ? 1.0 : std::cos(pi / (conn.ni() - 1));
+    const double cj = std::cos(pi / (conn.nj() - 1));
+    auto omega = [](double mu) { return 2.0 / (1.0 + std::sqrt(std::max(0.0, 1.0 - mu * mu))); };
+    return LineOmega{omega(cj / (2.0 - ci)), omega(ci / (2.0 - cj))};
+}
+
+LineOmega automatic_line_sor_omega(const Connectivity &conn, long sweep) {
+    const LineOmega best = optimal_line_sor_omega(conn);
+    const double ramp =
+        std::min(1.0, static_cast<double>(sweep + 1) / static_cast<double>(std::max(conn.ni(), conn.nj())));
+    return LineOmega{1.0 + ramp * (best.xi - 1.0), 1.0 + ramp * (best.eta - 1.0)};
+}
+
+}  // namespace eg2d

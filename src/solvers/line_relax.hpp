@@ -1,0 +1,61 @@
+// Line relaxation: the kernel of line SOR and of the multigrid smoother.
+// A line's unknowns are solved together, with the line's own couplings
+// implicit and everything else taken from the current grid (Gauss-Seidel
+// across lines). The system is in correction form: at each node of the line
+//   a d[k-1] + b d[k] + c d[k+1] = -R   (R = L(r) - f of operator.hpp)
+// with, on a xi-line,  a = alpha - C_xi/2, b = -2(alpha+gamma), c = alpha + C_xi/2
+// and on an eta-line  a = gamma - C_eta/2, b = -2(alpha+gamma), c = gamma + C_eta/2
+// (Laplace: 1, -4, 1), the coefficients frozen at the current grid (Picard).
+// The grid moves by omega*d. On an O-grid a xi-line is periodic and solved
+// as a cyclic system (Sherman-Morrison, seed 004), so the cut moves with it.
+#pragma once
+#include <vector>
+
+#include "operator/operator.hpp"
+#include "operator/system.hpp"
+
+namespace eg2d {
+
+// Scratch for one line; sized once (reserve) so sweeps never allocate.
+struct LineWork {
+    std::vector<double> a, b, c, dx, dy, cyclic;
+    std::vector<double> grid_c, grid_dx, grid_dy;  // zebra eta sweeps: all lines of a colour at once
+    void reserve(int n);
+};
+
+void relax_xi_line(System system, const Level &L, int j, double omega, LineWork &w);
+void relax_eta_line(System system, const Level &L, int i, double omega, LineWork &w);
+// A point update of every node in conn.extra_unknowns() (the C-grid cut).
+void relax_extra_unknowns(System system, const Level &L, double omega);
+
+// The order in which a sweep visits its lines. Zebra (odd lines, then even)
+// smooths better than lexicographic order when the coupling along the lines
+// is strong (stretched cells): for the anisotropic model problem its
+// smoothing factor stays below 1/4 where lexicographic order tends to 1/sqrt(5).
+enum class LineOrder { Forward, Backward, Zebra };
+
+// All xi-lines (over j), likewise all eta-lines (over i), in the given order.
+void sweep_xi_lines(System system, const Level &L, double omega, LineWork &w,
+                    LineOrder order = LineOrder::Forward);
+void sweep_eta_lines(System system, const Level &L, double omega, LineWork &w,
+                     LineOrder order = LineOrder::Forward);
+
+// Automatic line-SOR factors: the optimum 2/(1 + sqrt(1 - mu^2)) for the
+// Laplace model problem on the grid's size, where mu is the line-Jacobi
+// spectral radius: for xi-lines mu = cos(pi/(nj-1)) / (2 - cos(pi/(ni-1)))
+// (on the periodic direction the constant mode makes that cosine 1).
+struct LineOmega {
+    double xi, eta;
+};
+LineOmega optimal_line_sor_omega(const Connectivity &conn);
+
+// The automatic factors for sweep number `sweep` (0, 1, ...) after a new
+// start: from Gauss-Seidel (omega = 1) linearly up to the optimum over the
+// first max(ni, nj) sweeps. Over-relaxing whole lines at the optimum straight
+// from a TFI start folds the Winslow grid on the swan domain (measured:
+// divergence within 3 sweeps at 33^2..129^2, and when the full factor is
+// reached after 10 or 30 sweeps at 129^2). On larger or stretched grids even
+// the ramped optimum can be too much; lsor.cpp backs off from it.
+LineOmega automatic_line_sor_omega(const Connectivity &conn, long sweep);
+
+}  // namespace eg2d

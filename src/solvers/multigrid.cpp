@@ -1,0 +1,176 @@
+// FAS multigrid (Brandt's full approximation scheme) for the nonlinear grid
+// equations: V or W cycles, an optional full-multigrid (FMG) start, alternating
+// line Gauss-Seidel smoothing. One iterate() is one cycle; the first after a
+// reset is the FMG start (it ends with the cycle on the fine grid).
+//
+// Coarse level c of fine level f (multigrid_hierarchy.hpp):
+//   u_c = I u_f                         injection (boundary included)
+//   f_c = L_c(I u_f) - s * W R_f        W full weighting, R_f = L_f(u_f) - f_f,
+//                                       s = operator_scale (index units)
+//   solve L_c(u_c) = f_c  (recursively), then u_f += P (u_c - I u_f), bilinear.
+//
+// Defaults, W(2,1) with FMG (settings.hpp), chosen by measurement on the seed
+// 003 domains and the annulus (bench/eg2d_bench): with the over-relaxed
+// zebra/line smoother, W(2,1) gives 0.01-0.11 per cycle at 65^2..1025^2 (the
+// dome: up to 0.18; its error sits in a strip along the strongly curved top,
+// and extra relaxation of the lines there does not remove it). V(2,1) is
+// about 30% faster at 1025^2 for a somewhat worse factor (swan 0.14 vs 0.11,
+// dome 0.22 vs 0.18); V(1,1) and W(1,1) converge more slowly on the dome.
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "solvers/multigrid_hierarchy.hpp"
+#include "solvers/multigrid_smoother.hpp"
+#include "solvers/solver.hpp"
+
+namespace eg2d {
+
+namespace {
+
+class Multigrid final : public Solver {
+public:
+    void iterate(Problem &p) override {
+        const Settings &st = p.settings;
+        if (st.mg_pre_smooth + st.mg_post_smooth < 1.0)
+            fail(Failure::State, "multigrid: the pre- and post-smoothing counts are both 0; set "
+                                 "EG2D_PARAM_MG_PRE_SMOOTH or EG2D_PARAM_MG_POST_SMOOTH to at least 1");
+        prepare(p);
+        if (p.dynamic_controls) {
+            // A control recomputed from the grid between iterations (the wall
+            // control) is a fixed-point iteration of its own, tuned to solvers
+            // that move the grid a little per iteration: against full cycles
+            // it overshoots (measured: NACA0012 65x33 stopped at the residual
+            // with the wall spacing 78% off; seed 000 channel 2 diverged or
+            // stalled). So an iteration is then one line Gauss-Seidel sweep in
+            // each direction (EG2D_SOLVER_LSOR at omega = 1; over-relaxed, the
+            // NACA0012 trailing edge made the residual stall at 1.3e-9).
+            MgLevel &m = levels_[0];
+            sweep_xi_lines(system_, m.level, 1.0, m.work);
+            sweep_eta_lines(system_, m.level, 1.0, m.work);
+            relax_extra_unknowns(system_, m.level, 1.0);
+            return;
+        }
+        if (!started_ && st.mg_fmg != 0.0) full_multigrid();
+        else cycle(0);
+        started_ = true;
+    }
+    void reset() override {
+        levels_.clear();
+        started_ = false;
+    }
+
+private:
+    // (Re)builds the hierarchy when the problem's shape changed and attaches
+    // the fine grid and the controls, which may have changed since last time.
+    void prepare(const Problem &p) {
+        const Connectivity &conn = p.grid.connectivity();
+        const int coarsest = static_cast<int>(p.settings.mg_coarsest);
+        if (levels_.empty() || levels_[0].conn.ni() != conn.ni() || levels_[0].conn.nj() != conn.nj() ||
+            levels_[0].conn.topology() != conn.topology() || system_ != p.system || coarsest_ != coarsest) {
+            levels_ = build_hierarchy(conn, p.system, coarsest);
+            system_ = p.system;
+            coarsest_ = coarsest;
+            started_ = false;
+        }
+        const Level fine = p.level();
+        levels_[0].level = fine;
+        levels_[0].level.conn = &levels_[0].conn;
+        for (std::size_t l = 1; l < levels_.size(); ++l)
+            restrict_controls(levels_[l - 1].level.controls, levels_[l - 1].conn, levels_[l]);
+        pre_ = static_cast<int>(p.settings.mg_pre_smooth);
+        post_ = static_cast<int>(p.settings.mg_post_smooth);
+        gamma_ = static_cast<int>(p.settings.mg_cycle);
+        floor_ = 1e-14 * p.grid.extent();
+    }
+
+    void cycle(std::size_t l) {
+        MgLevel &m = levels_[l];
+        if (l + 1 == levels_.size()) {
+            coarse_solve(system_, m, floor_);
+            return;
+        }
+        MgLevel &c = levels_[l + 1];
+        smooth(system_, m, pre_, false);
+        compute_residual(system_, m);
+        inject(m.conn, m.level.x, c, c.x0.data());
+        inject(m.conn, m.level.y, c, c.y0.data());
+        std::copy(c.x0.begin(), c.x0.end(), c.x.begin());
+        std::copy(c.y0.begin(), c.y0.end(), c.y.begin());
+        // f_c = L_c(I u) - s W R: first W R into f_c, then add L_c(I u) node by node.
+        restrict_residual(m, c, operator_scale(system_, c), c.fx.data(), c.fy.data());
+        Level plain = c.level;
+        plain.fx = plain.fy = nullptr;
+        auto add_plain = [&](int I, int J) {
+            const Stencil s = c.conn.stencil(I, J);
+            const NodeEquation eq = node_equation(system_, plain, s);
+            c.fx[s.c] = eq.rx - c.fx[s.c];
+            c.fy[s.c] = eq.ry - c.fy[s.c];
+        };
+        for (int J = c.conn.j_begin(); J < c.conn.j_end(); ++J)
+            for (int I = c.conn.i_begin(); I < c.conn.i_end(); ++I) add_plain(I, J);
+        for (const Connectivity::Node &n : c.conn.extra_unknowns()) add_plain(n.i, n.j);
+        for (int g = 0; g < gamma_ && l + 1 < levels_.size(); ++g) {
+            cycle(l + 1);
+            if (l + 2 >= levels_.size()) break;  // the coarsest level is solved once
+        }
+        if (keep_coarse(l)) prolong_correction(levels_[l + 1], m.level);
+        smooth(system_, m, post_, true);
+    }
+
+    // A coarse level whose grid went non-finite (a coarse grid too crude for
+    // the geometry: an airfoil's trailing edge on a handful of points) is
+    // dropped with all coarser ones, for this correction and every later
+    // cycle; the cycle goes on with the levels that work.
+    bool keep_coarse(std::size_t l) {
+        if (l + 1 >= levels_.size()) return false;
+        const MgLevel &c = levels_[l + 1];
+        for (std::size_t k = 0; k < c.size(); ++k)
+            if (!std::isfinite(c.x[k]) || !std::isfinite(c.y[k])) {
+                levels_.erase(levels_.begin() + static_cast<std::ptrdiff_t>(l) + 1, levels_.end());
+                return false;
+            }
+        return true;
+    }
+
+    // Solve the plain problem (f = 0) on the coarsest level from the injected
+    // start, then on each finer level start from its own grid plus the
+    // interpolated change of the coarser solution and do one cycle.
+    void full_multigrid() {
+        const std::size_t last = levels_.size() - 1;
+        for (std::size_t l = 1; l <= last; ++l) {
+            MgLevel &c = levels_[l];
+            inject(levels_[l - 1].conn, levels_[l - 1].level.x, c, c.x.data());
+            inject(levels_[l - 1].conn, levels_[l - 1].level.y, c, c.y.data());
+            std::fill(c.fx.begin(), c.fx.end(), 0.0);
+            std::fill(c.fy.begin(), c.fy.end(), 0.0);
+        }
+        coarse_solve(system_, levels_[last], floor_);
+        for (std::size_t l = last; l-- > 0;) {
+            MgLevel &m = levels_[l];
+            if (keep_coarse(l)) {
+                MgLevel &c = levels_[l + 1];
+                inject(m.conn, m.level.x, c, c.x0.data());
+                inject(m.conn, m.level.y, c, c.y0.data());
+                prolong_correction(c, m.level);
+            }
+            if (l > 0) {
+                std::fill(m.fx.begin(), m.fx.end(), 0.0);
+                std::fill(m.fy.begin(), m.fy.end(), 0.0);
+            }
+            cycle(l);
+        }
+    }
+
+    std::vector<MgLevel> levels_;
+    System system_ = System::Winslow;
+    int coarsest_ = 0, pre_ = 1, post_ = 1, gamma_ = 1;
+    double floor_ = 0.0;
+    bool started_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Solver> make_multigrid() { return std::make_unique<Multigrid>(); }
+
+}  // namespace eg2d

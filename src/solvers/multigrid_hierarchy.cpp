@@ -1,0 +1,90 @@
+#include "solvers/multigrid_hierarchy.hpp"
+
+#include <algorithm>
+
+namespace eg2d {
+
+namespace {
+
+// Can this direction (n nodes) be halved and keep a sound coarse grid?
+bool can_coarsen(int n, bool periodic, int coarsest) {
+    if (n <= coarsest || (n - 1) % 2 != 0) return false;
+    // A periodic direction goes round a body: keep at least 8 cells on it
+    // (with 4, an airfoil is a diamond and the coarse problem breaks down).
+    return periodic ? (n - 1) / 2 >= 8 : (n - 1) / 2 + 1 >= 3;
+}
+
+}  // namespace
+
+std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, int coarsest) {
+    std::vector<MgLevel> levels;
+    levels.emplace_back(fine);
+    for (;;) {
+        const Connectivity &c = levels.back().conn;
+        const bool ci = can_coarsen(c.ni(), c.periodic_i(), coarsest);
+        const bool cj = can_coarsen(c.nj(), false, coarsest);
+        // Laplace in index units is not invariant under coarsening one
+        // direction only (x_xixi + x_etaeta would change its anisotropy), so
+        // it coarsens in both or stops; Winslow's equation is invariant.
+        if (system == System::Laplace ? !(ci && cj) : !(ci || cj)) break;
+        const int si = ci ? 2 : 1, sj = cj ? 2 : 1;
+        levels.emplace_back(c.coarsened(si, sj));
+        levels.back().si = si;
+        levels.back().sj = sj;
+    }
+    for (std::size_t l = 0; l < levels.size(); ++l) {
+        MgLevel &m = levels[l];
+        const std::size_t n = m.size();
+        m.rx.assign(n, 0.0);
+        m.ry.assign(n, 0.0);
+        if (l > 0) {
+            m.x.assign(n, 0.0);
+            m.y.assign(n, 0.0);
+            m.x0.assign(n, 0.0);
+            m.y0.assign(n, 0.0);
+            m.fx.assign(n, 0.0);
+            m.fy.assign(n, 0.0);
+            m.level.x = m.x.data();
+            m.level.y = m.y.data();
+            m.level.fx = m.fx.data();
+            m.level.fy = m.fy.data();
+        }
+        m.work.reserve(std::max(m.conn.ni(), m.conn.nj()));
+    }
+    for (MgLevel &m : levels) m.level.conn = &m.conn;  // after the vector stopped moving
+    return levels;
+}
+
+double operator_scale(System system, const MgLevel &coarse) {
+    const double s = static_cast<double>(coarse.si * coarse.sj);
+    return system == System::Laplace ? s : s * s;
+}
+
+// With r_xi = r_Xi/si, r_eta = r_Eta/sj on the coarse grid (capitals), alpha =
+// alpha_c/sj^2, beta = beta_c/(si sj), gamma = gamma_c/si^2, J^2 = J_c^2/(si sj)^2,
+// and the coarse equation (si sj)^2 times the fine one, C_xi r_xi needs
+// C_xi,c = si sj^2 C_xi, C_eta,c = si^2 sj C_eta; written in the coarse metrics:
+//   a_xi*si, b_xi*sj, c_xi*sj^2/si, d_xi/si;  a_eta*si^2/sj, b_eta*si, c_eta*sj, d_eta/sj.
+// For si = sj = 2: a, b, c double and d halves (control_fields.hpp).
+void restrict_controls(const ControlFields *fine, const Connectivity &fine_conn, MgLevel &coarse) {
+    if (!fine || fine->empty()) {
+        coarse.level.controls = nullptr;
+        return;
+    }
+    const double si = coarse.si, sj = coarse.sj;
+    const double scale[kTermCount] = {si, sj, sj * sj / si, 1.0 / si, si * si / sj, si, sj, 1.0 / sj};
+    for (int t = 0; t < kTermCount; ++t) {
+        const double *f = fine->data(static_cast<Term>(t));
+        std::vector<double> &dst = coarse.controls.term[t];
+        if (!f) {
+            dst.clear();
+            continue;
+        }
+        dst.resize(coarse.size());
+        inject(fine_conn, f, coarse, dst.data());
+        for (double &v : dst) v *= scale[t];
+    }
+    coarse.level.controls = &coarse.controls;
+}
+
+}  // namespace eg2d

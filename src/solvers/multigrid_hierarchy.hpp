@@ -1,0 +1,60 @@
+// The grid levels of the FAS multigrid solver and the transfers between them.
+// Level 0 is the user's grid; each coarser level takes every other line in
+// each direction that can be coarsened (ni-1 even and at least 3 nodes left;
+// on the periodic direction of an O-grid a period of at least 8 cells), or in
+// one direction only (semicoarsening, Winslow) when the other cannot.
+#pragma once
+#include <vector>
+
+#include "controls/control_fields.hpp"
+#include "grid/connectivity.hpp"
+#include "operator/operator.hpp"
+#include "operator/system.hpp"
+#include "solvers/line_relax.hpp"
+
+namespace eg2d {
+
+struct MgLevel {
+    explicit MgLevel(const Connectivity &c) : conn(c) {}
+    Connectivity conn;
+    int si = 1, sj = 1;              // coarsening factor from the finer level, per direction
+    std::vector<double> x, y;        // coordinates (empty on level 0: the grid's own)
+    std::vector<double> x0, y0;      // I u: the finer solution injected (FAS)
+    std::vector<double> fx, fy;      // FAS right-hand side (level 0 has none)
+    std::vector<double> rx, ry;      // R = L(r) - f, for the restriction
+    std::vector<double> best_x, best_y;  // coarsest level: the best iterate of its solve
+    ControlFields controls;          // the finer fields injected and rescaled
+    Level level;                     // the operator's view of this level
+    LineWork work;
+    std::size_t size() const { return static_cast<std::size_t>(conn.ni()) * conn.nj(); }
+};
+
+// Builds the levels below a fine grid of this connectivity. Level 0 gets only
+// residual scratch; its coordinates and controls are attached by the solver.
+// `coarsest`: a direction is not coarsened once it has <= coarsest nodes.
+std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, int coarsest);
+
+// How much larger the coarse operator is than the fine one for the same
+// smooth grid (the operator is written in index units): (si*sj)^2 for
+// Winslow, whose terms are quartic in index spacing, si*sj for Laplace.
+double operator_scale(System system, const MgLevel &coarse);
+
+// coarse.controls = the fine fields at the coarse nodes, rescaled to the
+// coarse index units (controls/control_fields.hpp; derivation in the .cpp).
+void restrict_controls(const ControlFields *fine, const Connectivity &fine_conn, MgLevel &coarse);
+
+// dst (coarse) = src (fine) at the coarse nodes: coordinates, boundary included.
+void inject(const Connectivity &fine_conn, const double *src, const MgLevel &coarse, double *dst);
+
+// dst (coarse unknowns) = scale * full weighting of src (fine).
+void full_weighting(const Connectivity &fine_conn, const double *src, const MgLevel &coarse, double scale,
+                    double *dst);
+
+// Full weighting of fine.rx, fine.ry at the coarse unknowns, times `scale`,
+// into out_x, out_y (coarse-sized).
+void restrict_residual(const MgLevel &fine, const MgLevel &coarse, double scale, double *out_x, double *out_y);
+
+// Fine unknowns += bilinear interpolation of (coarse x - coarse x0).
+void prolong_correction(const MgLevel &coarse, const Level &fine);
+
+}  // namespace eg2d

@@ -1,0 +1,224 @@
+/* FAS multigrid (EG2D_SOLVER_MULTIGRID): the same grids as point SOR (second
+ * order on the annulus is test_geometry_grids' every-solver loop), cycle counts that do not grow with the grid,
+ * sizes that coarsen badly (odd, semicoarsened, not at all), every cycle
+ * option, its parameters' checks, and that it is the default solver. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "domains.h"
+#include "solve_compare.h"
+#include "eg2d.h"
+
+#define PI 3.14159265358979323846
+
+static void assert_contains(const char *text, const char *part) {
+    if (!strcmp(part, "") || !strstr(text, part)) fail_msg("message \"%s\" does not contain \"%s\"", text, part);
+}
+
+static double *alloc(int n) {
+    double *p = malloc(sizeof(double) * (size_t)n);
+    assert_non_null(p);
+    return p;
+}
+
+static eg2d_grid *make(const char *domain, int ni, int nj, int solver, int system) {
+    eg2d_grid *g;
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    if (!strcmp(domain, "annulus")) assert_int_equal(domain_set_annulus(g, 3.0, 9.0), EG2D_OK);
+    else assert_int_equal(domain_set(g, domain), EG2D_OK);
+    assert_int_equal(eg2d_set_solver(g, solver), EG2D_OK);
+    assert_int_equal(eg2d_set_system(g, system), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_FOLD_CHECK, 0), EG2D_OK);
+    return g;
+}
+
+/* solve_domain, checked: the iteration count. */
+static int solve(const char *domain, int ni, int nj, int solver, int system, double tol, double *x, double *y) {
+    const int it = solve_domain(domain, ni, nj, solver, system, tol, x, y);
+    if (it < 0) fail_msg("%s %dx%d: %s", domain, ni, nj, eg2d_status_string(-it));
+    return it;
+}
+
+/* Multigrid and point SOR agree on a domain at a size (both to 1e-13). */
+static void check_same_as_psor(const char *domain, int ni, int nj, int system) {
+    double *x1 = alloc(ni * nj), *y1 = alloc(ni * nj), *x2 = alloc(ni * nj), *y2 = alloc(ni * nj), dist;
+    const int kp = solve(domain, ni, nj, EG2D_SOLVER_PSOR, system, 1e-13, x1, y1);
+    const int km = solve(domain, ni, nj, EG2D_SOLVER_MULTIGRID, system, 1e-13, x2, y2);
+    dist = grid_distance(x1, y1, x2, y2, ni * nj);
+    print_message("%-7s %-14s %3dx%-3d: psor %5d sweeps, multigrid %2d cycles, grids differ by %.2e\n",
+                  system ? "Winslow" : "Laplace", domain, ni, nj, kp, km, dist);
+    /* Both stop at residual 1e-13 (about a Jacobi step as a fraction of the
+     * domain): on the annulus (size 25) that leaves ~1e-10 between them. */
+    assert_true(dist < 1e-9);
+    assert_true(km <= 12);
+    free(x1); free(y1); free(x2); free(y2);
+}
+
+static void test_same_grid_as_psor(void **state) {
+    int d, s;
+    (void)state;
+    for (s = EG2D_SYSTEM_LAPLACE; s <= EG2D_SYSTEM_WINSLOW; ++s) {
+        for (d = 0; domain_names[d]; ++d) check_same_as_psor(domain_names[d], 33, 33, s);
+        check_same_as_psor("annulus", 33, 17, s);
+    }
+}
+
+/* Sizes with few factors of two: odd counts stop coarsening early, Winslow
+ * semicoarsens the direction that still can, 4 x 4 has no coarse level. */
+static void test_awkward_sizes(void **state) {
+    (void)state;
+    check_same_as_psor("swan", 37, 23, EG2D_SYSTEM_WINSLOW);
+    check_same_as_psor("swan", 37, 23, EG2D_SYSTEM_LAPLACE);
+    check_same_as_psor("valley", 30, 17, EG2D_SYSTEM_WINSLOW); /* ni-1 = 29: j only */
+    check_same_as_psor("valley", 65, 7, EG2D_SYSTEM_WINSLOW);  /* i on alone after j stops */
+    check_same_as_psor("dome", 4, 4, EG2D_SYSTEM_WINSLOW);
+    check_same_as_psor("annulus", 30, 9, EG2D_SYSTEM_WINSLOW); /* period 29 */
+    check_same_as_psor("annulus", 21, 12, EG2D_SYSTEM_WINSLOW);
+}
+
+static double history[64];
+static int history_n;
+static int record(void *user, int iteration, double residual) {
+    (void)user;
+    if (iteration <= 64) history[iteration - 1] = residual;
+    history_n = iteration;
+    return 0;
+}
+
+/* Cycles to 1e-10 at 33^2, 65^2, 129^2 differ by at most 2; after the first
+ * cycle (the FMG start) the residual falls by 10 or more per cycle on average
+ * (geometric mean) and by 5 or more in every cycle. */
+static void test_cycles_do_not_grow(void **state) {
+    const char *domains[] = {"swan", "valley", "annulus"};
+    const int sizes[] = {33, 65, 129};
+    int d, s;
+    (void)state;
+    for (d = 0; d < 3; ++d) {
+        int lo = 1000, hi = 0;
+        for (s = 0; s < 3; ++s) {
+            eg2d_grid *g = make(domains[d], sizes[s], sizes[s], EG2D_SOLVER_MULTIGRID, EG2D_SYSTEM_WINSLOW);
+            double worst = 0, mean;
+            int k;
+            assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
+            assert_int_equal(eg2d_set_monitor(g, record, NULL), EG2D_OK);
+            history_n = 0;
+            assert_int_equal(eg2d_solve(g), EG2D_OK);
+            for (k = 1; k < history_n; ++k) worst = fmax(worst, history[k] / history[k - 1]);
+            mean = pow(history[history_n - 1] / history[0], 1.0 / (history_n - 1));
+            print_message("multigrid %-8s %3d^2: %d cycles, factor per cycle %.3f (worst %.3f)\n", domains[d],
+                          sizes[s], history_n, mean, worst);
+            assert_true(mean <= 0.1);
+            assert_true(worst <= 0.2);
+            if (history_n < lo) lo = history_n;
+            if (history_n > hi) hi = history_n;
+            eg2d_destroy(g);
+        }
+        assert_true(hi - lo <= 2);
+    }
+}
+
+/* V and W cycles, with and without FMG, other smoothing counts: all converge
+ * to the same grid, and the cheaper V(1,1) without FMG needs more cycles. */
+static void test_cycle_options(void **state) {
+    const int n = 33;
+    const double opts[][4] = {/* cycle, pre, post, fmg */
+                              {2, 2, 1, 1}, {1, 2, 1, 1}, {1, 1, 1, 0}, {2, 0, 2, 0}, {1, 3, 0, 1}};
+    double *x0 = alloc(n * n), *y0 = alloc(n * n), *x = alloc(n * n), *y = alloc(n * n);
+    int cycles[5], o;
+    (void)state;
+    for (o = 0; o < 5; ++o) {
+        eg2d_grid *g = make("swan", n, n, EG2D_SOLVER_MULTIGRID, EG2D_SYSTEM_WINSLOW);
+        assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MG_CYCLE, opts[o][0]), EG2D_OK);
+        assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MG_PRE_SMOOTH, opts[o][1]), EG2D_OK);
+        assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MG_POST_SMOOTH, opts[o][2]), EG2D_OK);
+        assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MG_FMG, opts[o][3]), EG2D_OK);
+        assert_int_equal(eg2d_set_tolerance(g, 1e-12), EG2D_OK);
+        assert_int_equal(eg2d_solve(g), EG2D_OK);
+        assert_int_equal(eg2d_get_iterations(g, &cycles[o]), EG2D_OK);
+        assert_int_equal(eg2d_get_coordinates(g, o ? x : x0, o ? y : y0), EG2D_OK);
+        print_message("multigrid swan 33^2: cycle %g, pre %g, post %g, fmg %g: %d cycles\n", opts[o][0],
+                      opts[o][1], opts[o][2], opts[o][3], cycles[o]);
+        if (o) assert_true(grid_distance(x0, y0, x, y, n * n) < 1e-9);
+        eg2d_destroy(g);
+    }
+    assert_true(cycles[2] > cycles[0]);
+    free(x0); free(y0); free(x); free(y);
+}
+
+/* A coarse level that keeps a direction uncoarsened still helps: 513 x 9 is
+ * coarsened in i alone after j stops; it needs few cycles, where point SOR
+ * would need tens of thousands of sweeps along the long direction. */
+static void test_long_thin_grid(void **state) {
+    const int ni = 513, nj = 9;
+    double *x = alloc(ni * nj), *y = alloc(ni * nj);
+    int k;
+    (void)state;
+    k = solve("valley", ni, nj, EG2D_SOLVER_MULTIGRID, EG2D_SYSTEM_WINSLOW, 1e-10, x, y);
+    print_message("multigrid valley %dx%d: %d cycles\n", ni, nj, k);
+    assert_true(k <= 12);
+    free(x);
+    free(y);
+}
+
+static void test_parameters_and_default(void **state) {
+    eg2d_grid *g;
+    double v, lo, hi, def, x[9 * 9], y[9 * 9], x2[9 * 9], y2[9 * 9], r;
+    int s;
+    (void)state;
+    assert_int_equal(eg2d_create(9, 9, &g), EG2D_OK);
+    assert_int_equal(eg2d_get_solver(g, &s), EG2D_OK);
+    assert_int_equal(s, EG2D_SOLVER_MULTIGRID);
+    assert_string_equal(eg2d_solver_name(EG2D_SOLVER_MULTIGRID), "multigrid");
+    assert_int_equal(eg2d_parameter_bounds(EG2D_PARAM_MG_CYCLE, &lo, &hi, &def), EG2D_OK);
+    assert_true(lo == 1 && hi == 2 && def == 2);
+    assert_int_equal(eg2d_parameter_bounds(EG2D_PARAM_MG_PRE_SMOOTH, &lo, &hi, &def), EG2D_OK);
+    assert_true(lo == 0 && hi == 20 && def == 2);
+    assert_int_equal(eg2d_parameter_bounds(EG2D_PARAM_MG_POST_SMOOTH, &lo, &hi, &def), EG2D_OK);
+    assert_true(def == 1);
+    assert_int_equal(eg2d_parameter_bounds(EG2D_PARAM_MG_FMG, &lo, &hi, &def), EG2D_OK);
+    assert_true(lo == 0 && hi == 1 && def == 1);
+    assert_int_equal(eg2d_parameter_bounds(EG2D_PARAM_MG_COARSEST, &lo, &hi, &def), EG2D_OK);
+    assert_true(lo == 3 && def == 5);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MG_CYCLE, 3), EG2D_ERR_ARGUMENT);
+    assert_string_equal(eg2d_last_error(g), "eg2d_set_parameter: mg_cycle = 3: must be in [1, 2]");
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MG_PRE_SMOOTH, 1.5), EG2D_ERR_ARGUMENT);
+    assert_contains(eg2d_last_error(g), "whole number");
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MG_COARSEST, 2), EG2D_ERR_ARGUMENT);
+    assert_int_equal(eg2d_get_parameter(g, EG2D_PARAM_MG_CYCLE, &v), EG2D_OK);
+    assert_true(v == 2); /* the failed call changed nothing */
+    /* No smoothing at all is refused when a run starts, and the grid stays. */
+    assert_int_equal(domain_set(g, "valley"), EG2D_OK);
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MG_PRE_SMOOTH, 0), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MG_POST_SMOOTH, 0), EG2D_OK);
+    assert_int_equal(eg2d_iterate(g, 1, &r), EG2D_ERR_STATE);
+    assert_contains(eg2d_last_error(g), "pre- and post-smoothing counts are both 0");
+    assert_int_equal(eg2d_get_coordinates(g, x2, y2), EG2D_OK);
+    assert_memory_equal(x, x2, sizeof x);
+    assert_memory_equal(y, y2, sizeof y);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MG_PRE_SMOOTH, 2), EG2D_OK);
+    assert_int_equal(eg2d_iterate(g, 2, &r), EG2D_OK);
+    print_message("multigrid valley 9x9: residual %.2e after 2 cycles\n", r);
+    assert_true(r < 1e-5);
+    eg2d_destroy(g);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_same_grid_as_psor),
+        cmocka_unit_test(test_awkward_sizes),
+        cmocka_unit_test(test_cycles_do_not_grow),
+        cmocka_unit_test(test_cycle_options),
+        cmocka_unit_test(test_long_thin_grid),
+        cmocka_unit_test(test_parameters_and_default),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
