@@ -287,6 +287,12 @@ static int r_points_capacity(eg2d_grid *g) {
 static int r_side_from_file(eg2d_grid *g) {
     return done_with_file(eg2d_set_side_from_file(g, EG2D_SIDE_JMIN, scratch_file("0 0\n1 0\n2 0\n")));
 }
+static int r_lednicer_count(eg2d_grid *g) {
+    eg2d_curve *c = NULL;
+    (void)g;
+    return done_with_file(eg2d_curve_read_airfoil(
+        scratch_file("NACA\n3e33 2\n0 0\n0.5 0.1\n1 0\n0 0\n0.5 -0.1\n1 0\n"), &c));
+}
 static int r_write_no_dir(eg2d_grid *g) { return eg2d_write(g, "/nonexistent/grid.x", EG2D_FORMAT_PLOT3D); }
 static int r_write_format(eg2d_grid *g) { return eg2d_write(g, "/nonexistent/grid.x", 99); }
 static int r_cell_quality(eg2d_grid *g) {
@@ -486,6 +492,9 @@ static const bad_input rows[] = {
     {"a y+ so small the wall height underflows to 0", "eg2d_first_cell_height(5e-324, 1e6, 1, &h)", S_NONE,
      r_yplus_underflow, EG2D_ERR_ARGUMENT,
      "eg2d_first_cell_height: y+ = 4.94066e-324, chord = 1: the height 0 is not a positive finite number", 0},
+    {"Lednicer header announcing 3e33 points (undefined conversion to size_t before)",
+     "eg2d_curve_read_airfoil(path, &c), line 2 \"3e33 2\"", S_NONE, r_lednicer_count, EG2D_ERR_ARGUMENT,
+     "eg2d_curve_read_airfoil: Lednicer file \"*/eg2d-bad-input-*\" (line 2): announces 3e+33 + 2 points but has 6", 0},
     {"a weight of DBL_MAX (the control's sums overflowed before)", "eg2d_iterate(g, 3, NULL), w[40] = DBL_MAX",
      S_INIT, r_huge_weight, EG2D_OK, "", KEEPS_WORK},
     {"an allocation during a call fails (1000 x 1000, 4 MB margin)", "eg2d_initialize(g, EG2D_INIT_TFI)", S_BIG,
