@@ -3,7 +3,7 @@
 namespace eg2d {
 
 ControlSet::ControlSet(const ControlSet &other)
-    : static_(other.static_), fields_(other.fields_), stale_(other.stale_) {
+    : static_(other.static_), fields_(other.fields_), stale_(other.stale_), unsettled_(other.unsettled_) {
     for (const auto &c : other.controls_) controls_.push_back(c->clone());
 }
 
@@ -20,18 +20,18 @@ void ControlSet::put(std::unique_ptr<Control> c) {
     for (auto &old : controls_)
         if (old->kind() == c->kind()) {
             old = std::move(c);
-            stale_ = true;
+            stale_ = unsettled_ = true;
             return;
         }
     controls_.push_back(std::move(c));
-    stale_ = true;
+    stale_ = unsettled_ = true;
 }
 
 void ControlSet::remove(ControlKind k) {
     for (auto it = controls_.begin(); it != controls_.end(); ++it)
         if ((*it)->kind() == k) {
             controls_.erase(it);
-            stale_ = true;
+            stale_ = unsettled_ = true;
             return;
         }
 }
@@ -69,6 +69,7 @@ const ControlFields &ControlSet::update(const Grid &grid, bool start_of_run) {
 }
 
 const ControlFields &ControlSet::advance(const Grid &grid, const Settings &settings) {
+    unsettled_ = false;
     if (stale_) update(grid, true);
     for (const auto &c : controls_)
         if (c->dynamic()) c->advance(grid, static_, settings);

@@ -42,11 +42,11 @@ public:
     ControlSet &operator=(ControlSet &&) = default;
 
     // Adds a term; put() replaces the control of the same kind, if any.
-    void add(std::unique_ptr<Control> c) { controls_.push_back(std::move(c)); stale_ = true; }
+    void add(std::unique_ptr<Control> c) { controls_.push_back(std::move(c)); stale_ = unsettled_ = true; }
     void put(std::unique_ptr<Control> c);
     void remove(ControlKind k);
     Control *find(ControlKind k);
-    void clear() { controls_.clear(); fields_.clear(); static_.clear(); stale_ = true; }
+    void clear() { controls_.clear(); fields_.clear(); static_.clear(); stale_ = unsettled_ = true; }
     bool empty() const { return controls_.empty(); }
     bool has_dynamic() const;
 
@@ -55,7 +55,12 @@ public:
     // One update of the dynamic terms, then the fields (same object as fields()).
     const ControlFields &advance(const Grid &grid, const Settings &settings);
     const ControlFields &fields() const { return fields_; }
-    void invalidate() { stale_ = true; }
+    void invalidate() { stale_ = unsettled_ = true; }
+    // True while a dynamic term has not been updated since the controls, the
+    // boundary or the start grid last changed: its fields are still those of
+    // another grid (a wall control starts from zero), so a residual computed
+    // with them cannot say the run has converged.
+    bool dynamic_pending() const { return unsettled_ && has_dynamic(); }
 
 private:
     void sum_dynamic(const Grid &grid);
@@ -64,6 +69,7 @@ private:
     ControlFields static_;  // the static terms alone
     ControlFields fields_;  // everything
     bool stale_ = true;
+    bool unsettled_ = true;  // see dynamic_pending()
 };
 
 }  // namespace eg2d

@@ -170,7 +170,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
     double r = finite_residual(system_, problem.level(), extent).value;
     double best = r;
     for (long it = 0; it < max_iterations; ++it) {
-        if (stop_at_tolerance && r <= settings.tolerance) return RunEnd::Converged;
+        if (stop_at_tolerance && r <= settings.tolerance && !controls_.dynamic_pending()) return RunEnd::Converged;
         saved_x_ = grid_.x;
         saved_y_ = grid_.y;
         if (controls_.has_dynamic()) controls_.advance(grid_, settings);

@@ -102,6 +102,34 @@ static void test_wall_naca0012(void **state) {
 
 /* Orthogonality only (height 0) on the annulus: the exact solution is
  * radial already, so the control must leave Winslow's grid as it is. */
+/* A warm start that already solves plain Winslow: the wall control set
+ * afterwards must still act (the run may not call the grid converged before
+ * the control has been updated once). */
+static void test_wall_on_a_converged_grid(void **state) {
+    const int ni = 41, nj = 21;
+    const double h = 0.002;
+    double *x = alloc(ni * nj), *y = alloc(ni * nj), dev, hmin, hmax;
+    eg2d_grid *g;
+    int it;
+    (void)state;
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    assert_int_equal(make_annulus(g), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(g, 1e-9), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h), EG2D_OK);
+    assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    measure_wall(x, y, ni, nj, EG2D_SIDE_JMIN, 1, 0, ni - 1, &dev, &hmin, &hmax);
+    print_message("wall control on a converged annulus: %d iterations, first cell %.6g..%.6g for %g\n", it, hmin,
+                  hmax, h);
+    assert_true(fabs(hmin / h - 1.0) < 0.05 && fabs(hmax / h - 1.0) < 0.05);
+    free(x);
+    free(y);
+    eg2d_destroy(g);
+}
+
 static void test_wall_height_zero_keeps_radial_grid(void **state) {
     const int ni = 33, nj = 13;
     double *x0 = alloc(ni * nj), *y0 = alloc(ni * nj), *x = alloc(ni * nj), *y = alloc(ni * nj), err = 0.0;
@@ -256,6 +284,7 @@ static void test_middlecoff_thomas_improves_curved(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_wall_annulus),
+        cmocka_unit_test(test_wall_on_a_converged_grid),
         cmocka_unit_test(test_wall_naca0012),
         cmocka_unit_test(test_wall_height_zero_keeps_radial_grid),
         cmocka_unit_test(test_wall_on_corner_walls),

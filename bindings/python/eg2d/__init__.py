@@ -1,0 +1,20 @@
+"""eg2d: elliptic generation of boundary-fitted quadrilateral grids.
+
+A ctypes + numpy package over libeg2d (include/eg2d.h is the manual): the
+classes Grid and Curve, the grid-less calls (status_string, last_error, version,
+solver_name, parameter_bounds, read_plot3d, read_points), the constants under their C names without the
+EG2D_ prefix, and exceptions carrying the status and the library's message.
+The library is found via $EG2D_LIBRARY, the install location, or the system
+loader (see _library.py).
+"""
+from .constants import *  # noqa: F401,F403
+from .errors import (ArgumentError, BoundaryError, DivergedError, Error, FileError, FoldedError,  # noqa: F401
+                     NotConvergedError, OutOfMemoryError, StateError, StoppedByMonitor,
+                     UnsupportedError, error_for)
+from .functions import (last_error, parameter_bounds, read_plot3d, read_points, solver_name,  # noqa: F401
+                        status_string, version)
+from .curve import Curve  # noqa: F401
+from .functions import clustering_map, distribution, first_cell_height, tensor_parameter_grid  # noqa: F401
+from .grid import Grid  # noqa: F401
+
+__version__ = "%d.%d.%d" % (VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH)  # noqa: F405
