@@ -43,9 +43,22 @@
  *
  * Threads
  * -------
- * Different handles may be used from different threads at the same time.
- * One handle must not be used by two threads at once (no call is
- * internally locked); the error text of eg2d_last_error(NULL) is per thread.
+ * Different handles may be used from different threads at the same time:
+ * the library has no global mutable state (tests/c/test_threads.c runs 8
+ * threads x 50 grids against a serial run, under ThreadSanitizer).
+ * Sharing one handle:
+ *  - one call at a time: no call is internally locked, and that includes
+ *    the query calls (eg2d_get_residual computes and caches; every failing
+ *    call writes the handle's error text). Serialise with your own mutex.
+ *  - a handle may move between threads (no thread affinity) when the hand
+ *    over is synchronised (a mutex, a thread join, a queue).
+ *  - eg2d_last_error(grid) is the handle's: read it before the next call on
+ *    that handle. eg2d_last_error(NULL) is per thread.
+ *  - the monitor runs on the thread of eg2d_iterate/eg2d_solve, inside the
+ *    call; it may use the query calls (eg2d_get_*) on its own grid, and
+ *    must not call anything that changes that grid, nor destroy it.
+ *  - eg2d_version, eg2d_status_string, eg2d_solver_name and
+ *    eg2d_parameter_bounds need no handle and are safe from any thread.
  *
  * ABI
  * ---

@@ -9,9 +9,22 @@
 // any positive w. Phi, Psi are the a_xi, c_eta terms (NUMERICS.md).
 #include "controls/controls.hpp"
 
+#include <algorithm>
+
 namespace eg2d {
 
 namespace {
+// 2 (b - a) / (a + 2c + b) with a, b, c divided by the largest of them first:
+// the same ratio, but weights near DBL_MAX no longer overflow the sum to Inf
+// (a NaN control then, found by fuzz_api); the denominator stays >= 1.
+double weight_ratio(double a, double c, double b) {
+    const double m = std::max(a, std::max(b, c));
+    a /= m;
+    b /= m;
+    c /= m;
+    return 2.0 * (b - a) / (a + 2.0 * c + b);
+}
+
 class WeightControl final : public Control {
 public:
     explicit WeightControl(std::vector<double> w) : w_(std::move(w)) {}
@@ -25,8 +38,8 @@ public:
         for (int j = conn.j_begin(); j < conn.j_end(); ++j)
             for (int i = conn.i_begin(); i < conn.i_end(); ++i) {
                 const Stencil s = conn.stencil(i, j);
-                A[s.c] += 2.0 * (w[s.e] - w[s.w]) / (w[s.w] + 2.0 * w[s.c] + w[s.e]);
-                C[s.c] += 2.0 * (w[s.n] - w[s.s]) / (w[s.s] + 2.0 * w[s.c] + w[s.n]);
+                A[s.c] += weight_ratio(w[s.w], w[s.c], w[s.e]);
+                C[s.c] += weight_ratio(w[s.s], w[s.c], w[s.n]);
                 conn.sync_node(A.data(), i, j);
                 conn.sync_node(C.data(), i, j);
             }

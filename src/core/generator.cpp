@@ -15,6 +15,31 @@ namespace {
 // Below this residual growth is never taken for divergence: round-off near a
 // converged grid can grow by large factors and still mean nothing.
 constexpr double kDivergenceFloor = 1e-2;
+// Smallest boundary extent L: below it the residual (a 3rd power of node
+// spacings) underflows to 0 and a TFI grid would pass as converged (found
+// by fuzz_api). The largest is bounded by kMaxCoordinate in grid.cpp.
+constexpr double kMinExtent = 1e-75;
+
+// The residual of a grid before any iteration. Coordinates are bounded, so a
+// non-finite value can only come from a control value too large for the
+// metric terms (a source, source array, weight or parameter grid near
+// DBL_MAX; found by fuzz_api): refuse it rather than return NaN or call the
+// first iteration a divergence.
+ResidualInfo finite_residual(System system, const Level &level, double extent) {
+    const ResidualInfo ri = eg2d::residual(system, level, extent);
+    if (!std::isfinite(ri.value))
+        fail(Failure::Argument, format("the equations are not finite at node (%d, %d) of the grid as it is: a "
+                                       "control value (source, source array, weight, parameter grid) is too large",
+                                       ri.i, ri.j));
+    return ri;
+}
+
+void check_extent(const Grid &g) {
+    const double L = g.extent();
+    if (!(L >= kMinExtent))
+        fail(Failure::Boundary, format("the boundary's extent (bounding-box diagonal) is %g, below %g: the points "
+                                       "(nearly) coincide, or the domain needs scaling", L, kMinExtent));
+}
 
 std::string missing_sides(const Grid &g) {
     std::string s;
@@ -70,6 +95,7 @@ void Generator::initialize(int method) {
     if (!m) fail(Failure::Argument, format("initialisation method %d: no such method", method));
     if (!grid_.boundary_complete())
         fail(Failure::State, format("the boundary is not complete: side %s not set", missing_sides(grid_).c_str()));
+    check_extent(grid_);
     Grid next(grid_);
     m->fill(next, settings);
     check_coordinates("initial x", next.x.data(), next.size());
@@ -111,6 +137,7 @@ void Generator::ensure_ready() {
     if (!grid_.boundary_complete())
         fail(Failure::State,
              format("the boundary is not complete: side %s not set", missing_sides(grid_).c_str()));
+    check_extent(grid_);
     if (!grid_.initialized()) initialize(EG2D_INIT_TFI);
 }
 
@@ -119,7 +146,7 @@ ResidualInfo Generator::residual() const {
     Grid &g = const_cast<Grid &>(grid_);  // the Level view is read-only here
     const ControlFields &f = controls_.update(g, false);
     Problem p{g, system_, f, settings};
-    return eg2d::residual(system_, p.level(), grid_.extent());
+    return finite_residual(system_, p.level(), grid_.extent());
 }
 
 Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
@@ -140,7 +167,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
     if (controls_.has_dynamic() && run_settings.relaxation == 0.0) run_settings.relaxation = 1.0;
     Problem problem{grid_, system_, fields, run_settings, controls_.has_dynamic()};
     const double extent = grid_.extent();
-    double r = eg2d::residual(system_, problem.level(), extent).value;
+    double r = finite_residual(system_, problem.level(), extent).value;
     double best = r;
     for (long it = 0; it < max_iterations; ++it) {
         if (stop_at_tolerance && r <= settings.tolerance && !controls_.dynamic_pending()) return RunEnd::Converged;

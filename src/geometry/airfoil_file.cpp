@@ -78,10 +78,12 @@ std::shared_ptr<Curve> read_airfoil(const char *path) {
     const Pair head = pts[0];
     const bool lednicer = head.x > 1.5 && head.y > 1.5 && head.x == std::floor(head.x) && head.y == std::floor(head.y);
     if (lednicer) {
+        // Compared as doubles first: a count beyond size_t is undefined to convert
+        // (UBSan, found by fuzz_airfoil), and size_t sums could wrap.
+        if (head.x + head.y != static_cast<double>(pts.size() - 1))
+            fail(Failure::Argument, format("Lednicer file \"%s\" (line %zu): announces %.15g + %.15g points but has %zu",
+                                           path, at[0], head.x, head.y, pts.size() - 1));
         const std::size_t nu = static_cast<std::size_t>(head.x), nl = static_cast<std::size_t>(head.y);
-        if (nu + nl != pts.size() - 1)
-            fail(Failure::Argument, format("Lednicer file \"%s\" (line %zu): announces %zu + %zu points but has %zu",
-                                           path, at[0], nu, nl, pts.size() - 1));
         for (std::size_t k = nu + nl; k > nu; --k) { x.push_back(pts[k].x); y.push_back(pts[k].y); }  // lower, TE -> LE
         for (std::size_t k = 1; k <= nu; ++k) {  // upper, LE -> TE (its LE point is the lower's)
             if (k == 1 && pts[k].x == x.back() && pts[k].y == y.back()) continue;

@@ -18,6 +18,10 @@ const double kWeight[5] = {0.2369268850561891, 0.4786286704993665, 0.56888888888
 constexpr int kInitialPanels = 16;  // per smooth piece, before refinement
 constexpr int kMaxDepth = 30;
 constexpr double kRelativeTolerance = 1e-14;
+// Panels one curve may use. Depth alone bounds a path, not the tree: a curve
+// whose tolerance cannot be met anywhere (noise in a callback, or a length
+// in the subnormal range, found by fuzz_api) would otherwise make 2^30 panels.
+constexpr std::size_t kMaxPanels = std::size_t{1} << 16;
 }  // namespace
 
 double ArcLength::speed(double t, std::size_t piece) const {
@@ -47,6 +51,10 @@ void ArcLength::refine(double a, double b, double whole, std::size_t piece, int 
         cumulative_.push_back(cumulative_.back() + right);
         return;
     }
+    if (t_.size() >= kMaxPanels)
+        fail(Failure::Argument, format("the curve's arc length does not converge to %g of its length within %zu "
+                                       "panels: the curve is not smooth, or too small (length %g)",
+                                       kRelativeTolerance, kMaxPanels, whole));
     refine(a, m, left, piece, depth + 1, tol);
     refine(m, b, right, piece, depth + 1, tol);
 }

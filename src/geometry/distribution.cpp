@@ -128,13 +128,20 @@ void distribute(int id, int n, double p1, double p2, double length, double *s) {
         break;
     case EG2D_DIST_TANH_ONE:  // seed 001 eq 2.13: s = 1 + tanh(delta (u - 1)/2)/tanh(delta/2)
         if (!(p1 > 0.0) || p1 > 700) fail(Failure::Argument, format("tanh delta = %g: must be in (0, 700]", p1));
-        for (int k = 0; k <= N; ++k) s[k] = 1 + std::tanh(0.5 * p1 * (static_cast<double>(k) / N - 1)) / std::tanh(0.5 * p1);
+        // Below delta = 1e-8 the map is u to double precision (s - u = O(delta^2)), and
+        // tanh(delta/2) of a subnormal delta is 0: 0/0 (found by fuzz_curves).
+        for (int k = 0; k <= N; ++k)
+            s[k] = p1 < 1e-8 ? static_cast<double>(k) / N
+                             : 1 + std::tanh(0.5 * p1 * (static_cast<double>(k) / N - 1)) / std::tanh(0.5 * p1);
         break;
     case EG2D_DIST_TANH_TWO: {  // seed 001 end of 2.5: s = (tanh(b (u - c)) - A)/(B - A)
         if (!(p1 > 0.0) || p1 > 350) fail(Failure::Argument, format("tanh strength b = %g: must be in (0, 350]", p1));
         if (!(p2 >= 0.0 && p2 <= 1.0)) fail(Failure::Argument, format("tanh attraction c = %g: must be in [0, 1]", p2));
         const double A = std::tanh(-p1 * p2), B = std::tanh(p1 * (1 - p2));
-        for (int k = 0; k <= N; ++k) s[k] = (std::tanh(p1 * (static_cast<double>(k) / N - p2)) - A) / (B - A);
+        // As for TANH_ONE: below b = 1e-8 the map is u, and B - A of a subnormal b is 0.
+        for (int k = 0; k <= N; ++k)
+            s[k] = p1 < 1e-8 ? static_cast<double>(k) / N
+                             : (std::tanh(p1 * (static_cast<double>(k) / N - p2)) - A) / (B - A);
         break;
     }
     case EG2D_DIST_VINOKUR: {

@@ -18,7 +18,13 @@ double first_cell_height(double yplus, double reynolds, double chord) {
         fail(Failure::Argument, format("Reynolds number %g: the flat-plate estimate holds for 1e3 <= Re <= 1e9", reynolds));
     if (!(chord > 0.0) || !std::isfinite(chord)) fail(Failure::Argument, format("chord = %g: must be positive", chord));
     const double cf = std::pow(2 * std::log10(reynolds) - 0.65, -2.3);
-    return chord * yplus / (reynolds * std::sqrt(0.5 * cf));
+    const double height = chord * yplus / (reynolds * std::sqrt(0.5 * cf));
+    // A subnormal y+ or a huge chord under- or overflows (found by fuzz_curves);
+    // a height of 0 would mean "orthogonality only" to eg2d_set_wall_spacing.
+    if (!(height > 0.0) || !std::isfinite(height))
+        fail(Failure::Argument, format("y+ = %g, chord = %g: the height %g is not a positive finite number",
+                                       yplus, chord, height));
+    return height;
 }
 
 }  // namespace eg2d
