@@ -37,10 +37,12 @@ const Feature &pick_key(const Fields &f, const std::string &key, const std::stri
     return pick(table, f.text(key, fallback), f.at(key));
 }
 
-void check_size(long ni, long nj, const Location &at) {
-    if (ni < 3 || nj < 3 || ni > 100000 || nj > 100000)
-        throw Failure(EXIT_CASE, at.str() + ": each of ni, nj must be in [3, 100000], found [" + std::to_string(ni) +
-                                     ", " + std::to_string(nj) + "]");
+// On the doubles as read, before any cast: converting 1e300, inf or nan to an
+// integer is undefined (found by tests/fuzz/fuzz_case).
+void check_size(double ni, double nj, const Location &at) {
+    if (!(ni >= 3 && nj >= 3 && ni <= 100000 && nj <= 100000))
+        throw Failure(EXIT_CASE, at.str() + ": each of ni, nj must be in [3, 100000], found [" + fmt(ni) + ", " +
+                                     fmt(nj) + "]");
 }
 
 // The keys of `section` that are EG2D_PARAM_* settings.
@@ -255,9 +257,9 @@ Case read_case(const std::string &text, const std::string &file, const std::stri
     c.size_at = top.at("size");
     double dni = 0, dnj = 0;
     read_pair(size, c.size_at, {}, dni, dnj);
+    check_size(dni, dnj, c.size_at);
     if (dni != static_cast<long>(dni) || dnj != static_cast<long>(dnj))
         throw Failure(EXIT_CASE, c.size_at.str() + ": expected whole numbers [ni, nj]");
-    check_size(static_cast<long>(dni), static_cast<long>(dnj), c.size_at);
     c.ni = ni > 0 ? ni : static_cast<int>(dni);
     c.nj = nj > 0 ? nj : static_cast<int>(dnj);
     c.constants["ni"] = c.ni;

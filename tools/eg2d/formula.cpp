@@ -9,14 +9,12 @@
 
 namespace eg2dtool {
 
-namespace {
 std::string fmt(double v) {
     std::ostringstream s;
     s.precision(12);
     s << v;
     return s.str();
 }
-}  // namespace
 
 Formula::Formula(const std::string &text, const std::vector<std::string> &variables, const Constants &constants,
                  const Location &where)

@@ -14,6 +14,9 @@ class Parser;
 
 namespace eg2dtool {
 
+// A number for a message (12 significant digits).
+std::string fmt(double v);
+
 // Named numbers every formula of a case can use ([constants] plus pi and e).
 using Constants = std::map<std::string, double>;
 
