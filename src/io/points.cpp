@@ -5,12 +5,19 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <vector>
 
 #include "core/error.hpp"
 
 namespace eg2d {
 
 namespace {
+// Point files are short lines of two numbers. The bounds keep a wrong path
+// (a device such as /dev/zero, a binary file) from growing memory until the
+// host is killed: it is reported instead.
+constexpr std::size_t kMaxLine = 4096;
+constexpr std::size_t kMaxPoints = 10000000;
+
 bool separator(char c) { return c == ' ' || c == '\t' || c == ',' || c == '\r'; }
 
 // The next number from s (after separators); false if there is none.
@@ -29,10 +36,20 @@ Points read_points(const std::string &path) {
     std::ifstream in(path);
     if (!in) fail(Failure::Io, format("%s: cannot open: %s", path.c_str(), std::strerror(errno)));
     Points p;
-    std::string line;
+    std::vector<char> buffer(kMaxLine);
     long number_of_line = 0;
-    while (std::getline(in, line)) {
+    for (;;) {
+        in.getline(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+        if (in.bad()) break;
+        if (in.fail()) {
+            if (in.eof() && in.gcount() == 0) break;  // no more lines
+            fail(Failure::Io, format("%s:%ld: a line longer than %zu characters: not a point file", path.c_str(),
+                                     number_of_line + 1, kMaxLine - 2));
+        }
         ++number_of_line;
+        if (p.x.size() >= kMaxPoints)
+            fail(Failure::Io, format("%s: more than %zu points: not a point file", path.c_str(), kMaxPoints));
+        const std::string line(buffer.data());
         const std::size_t hash = line.find('#');
         const std::string text = line.substr(0, hash);
         const char *s = text.c_str();
@@ -51,6 +68,7 @@ Points read_points(const std::string &path) {
             fail(Failure::Io, format("%s:%ld: \"%s\": the point is not finite", path.c_str(), number_of_line, start));
         p.x.push_back(x);
         p.y.push_back(y);
+        if (in.eof()) break;  // a last line without a newline
     }
     if (in.bad()) fail(Failure::Io, format("%s: read failed: %s", path.c_str(), std::strerror(errno)));
     if (p.x.empty()) fail(Failure::Io, format("%s: no points in the file", path.c_str()));

@@ -330,6 +330,7 @@ static void test_point_files(void **state) {
 static void test_point_file_errors(void **state) {
     eg2d_grid *g;
     char want[512];
+    int n;
     (void)state;
     assert_int_equal(eg2d_create(5, 4, &g), EG2D_OK);
     write_text(in_dir("p1.txt"), "# x y\n0 0\n1 0\n\n2 abc\n3 0\n");
@@ -356,6 +357,14 @@ static void test_point_file_errors(void **state) {
     assert_contains(eg2d_last_error(g), "side IMIN: the O-grid topology has no such side");
     assert_int_equal(eg2d_set_side_from_file(g, EG2D_SIDE_JMIN, in_dir("none.txt")), EG2D_ERR_IO);
     assert_contains(eg2d_last_error(g), "none.txt: cannot open: No such file or directory");
+    /* A device that never ends a line (a wrong path in a case file) is refused, not read until memory runs out. */
+    assert_int_equal(eg2d_read_points("/dev/zero", 0, &n, NULL, NULL), EG2D_ERR_IO);
+    assert_string_equal(eg2d_last_error(NULL),
+                        "eg2d_read_points: /dev/zero:1: a line longer than 4094 characters: not a point file");
+    /* A last line without a newline still counts. */
+    write_text(in_dir("p6.txt"), "0 0\n1 0.5");
+    assert_int_equal(eg2d_read_points(in_dir("p6.txt"), 0, &n, NULL, NULL), EG2D_OK);
+    assert_int_equal(n, 2);
     eg2d_destroy(g);
 }
 
