@@ -8,30 +8,10 @@ extern "C" {
 
 EG2D_API int eg2d_create(int ni, int nj, eg2d_grid **grid) {
     if (grid) *grid = nullptr;
-    std::string message;
-    int status = EG2D_OK;
-    try {
+    return guard_without_grid("eg2d_create", [&] {
         require_ptr(grid, "grid");
         *grid = new eg2d_grid(ni, nj);
-        return EG2D_OK;
-    } catch (const Error &e) {
-        status = status_of(e.failure());
-        message = e.what();
-    } catch (const std::bad_alloc &) {
-        status = EG2D_ERR_MEMORY;
-        message = "out of memory";
-    } catch (const std::exception &e) {
-        status = EG2D_ERR_ARGUMENT;
-        message = e.what();
-    } catch (...) {
-        status = EG2D_ERR_ARGUMENT;
-        message = "unknown exception";
-    }
-    try {
-        set_thread_error("eg2d_create: " + message);
-    } catch (...) {
-    }
-    return status;
+    });
 }
 
 EG2D_API void eg2d_destroy(eg2d_grid *grid) { delete grid; }
