@@ -11,6 +11,7 @@
 #include <cmocka.h>
 
 #include "circle.h"
+#include "domains.h"
 #include "eg2d.h"
 #include "measure.h"
 
@@ -146,7 +147,7 @@ static void test_clustering_maps(void **state) {
  * grid must be it, with every solver. */
 static void test_weight_equidistributes(void **state) {
     const int ni = 25, nj = 9;
-    double w[25 * 9], xs[25], ys[25], *x = alloc(ni * nj), *y = alloc(ni * nj), X[25], total = 0.0;
+    double w[25 * 9], *x = alloc(ni * nj), *y = alloc(ni * nj), X[25], total = 0.0;
     int i, j, id;
     (void)state;
     X[0] = 0.0;
@@ -164,14 +165,7 @@ static void test_weight_equidistributes(void **state) {
         int it;
         if (!eg2d_solver_name(id)) continue;
         assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
-        for (i = 0; i < ni; ++i) { xs[i] = X[i]; ys[i] = 0.0; }
-        assert_int_equal(eg2d_set_side(g, EG2D_SIDE_JMIN, xs, ys), EG2D_OK);
-        for (i = 0; i < ni; ++i) ys[i] = 0.5;
-        assert_int_equal(eg2d_set_side(g, EG2D_SIDE_JMAX, xs, ys), EG2D_OK);
-        for (j = 0; j < nj; ++j) { xs[j] = 0.0; ys[j] = 0.5 * j / (nj - 1); }
-        assert_int_equal(eg2d_set_side(g, EG2D_SIDE_IMIN, xs, ys), EG2D_OK);
-        for (j = 0; j < nj; ++j) xs[j] = 1.0;
-        assert_int_equal(eg2d_set_side(g, EG2D_SIDE_IMAX, xs, ys), EG2D_OK);
+        assert_int_equal(domain_set_rectangle_columns(g, X, 0.5), EG2D_OK);
         for (j = 0; j < nj; ++j) /* the boundary, and a uniform interior to start from */
             for (i = 0; i < ni; ++i) {
                 const int edge = j == 0 || j == nj - 1 || i == 0 || i == ni - 1;

@@ -38,7 +38,7 @@ static double *alloc(int n) {
 static void test_seed000_arrays_expected_factor(void **state) {
     const int ni = 9, nj = 33;
     double X[9], Pc[9] = {0, -20, -10, 0, 0, 0, -10, -20, 0};
-    double *P = alloc(ni * nj), *x = alloc(ni * nj), *y = alloc(ni * nj), bx[33], by[33];
+    double *P = alloc(ni * nj), *x = alloc(ni * nj), *y = alloc(ni * nj);
     int i, j, sweep, id;
     (void)state;
     for (i = 0; i < ni; ++i) X[i] = (double)i / (ni - 1);
@@ -55,14 +55,7 @@ static void test_seed000_arrays_expected_factor(void **state) {
         int it;
         if (!eg2d_solver_name(id)) continue;
         assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
-        for (i = 0; i < ni; ++i) { bx[i] = X[i]; by[i] = 0.0; } /* the boundary follows X too */
-        assert_int_equal(eg2d_set_side(g, EG2D_SIDE_JMIN, bx, by), EG2D_OK);
-        for (i = 0; i < ni; ++i) by[i] = 2.0;
-        assert_int_equal(eg2d_set_side(g, EG2D_SIDE_JMAX, bx, by), EG2D_OK);
-        for (j = 0; j < nj; ++j) { bx[j] = 0.0; by[j] = 2.0 * j / (nj - 1); }
-        assert_int_equal(eg2d_set_side(g, EG2D_SIDE_IMIN, bx, by), EG2D_OK);
-        for (j = 0; j < nj; ++j) bx[j] = 1.0;
-        assert_int_equal(eg2d_set_side(g, EG2D_SIDE_IMAX, bx, by), EG2D_OK);
+        assert_int_equal(domain_set_rectangle_columns(g, X, 2.0), EG2D_OK); /* the boundary follows X too */
         assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
         assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
         for (j = 1; j < nj - 1; ++j)

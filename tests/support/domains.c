@@ -171,3 +171,27 @@ int domain_set_airfoil_c(eg2d_grid *g, const char *digits, int wake, double radi
     free(y);
     return status;
 }
+
+int domain_set_rectangle_columns(eg2d_grid *g, const double *X, double height) {
+    int ni, nj, i, status;
+    double *x, *y;
+    if ((status = eg2d_get_size(g, &ni, &nj))) return status;
+    x = malloc(sizeof(double) * (size_t)(ni > nj ? ni : nj));
+    y = malloc(sizeof(double) * (size_t)(ni > nj ? ni : nj));
+    if (!x || !y) {
+        free(x);
+        free(y);
+        return EG2D_ERR_MEMORY;
+    }
+    for (i = 0; i < ni; ++i) { x[i] = X[i]; y[i] = 0.0; }
+    status = eg2d_set_side(g, EG2D_SIDE_JMIN, x, y);
+    for (i = 0; i < ni; ++i) y[i] = height;
+    if (!status) status = eg2d_set_side(g, EG2D_SIDE_JMAX, x, y);
+    for (i = 0; i < nj; ++i) { x[i] = 0.0; y[i] = height * i / (nj - 1); }
+    if (!status) status = eg2d_set_side(g, EG2D_SIDE_IMIN, x, y);
+    for (i = 0; i < nj; ++i) x[i] = 1.0;
+    if (!status) status = eg2d_set_side(g, EG2D_SIDE_IMAX, x, y);
+    free(x);
+    free(y);
+    return status;
+}

@@ -31,6 +31,11 @@ int domain_set_airfoil_o(eg2d_grid *grid, const char *digits, double radius);
  * the outflow lines. ni - 2 wake points lie on the section. */
 int domain_set_airfoil_c(eg2d_grid *grid, const char *digits, int wake, double radius);
 
+/* The rectangle [0,1] x [0,height] whose bottom and top nodes sit at x = X[i]
+ * (ni values from 0 to 1) and whose left and right sides are uniform in y.
+ * Sets the four sides; returns the eg2d status. */
+int domain_set_rectangle_columns(eg2d_grid *grid, const double *X, double height);
+
 /* Names of the simply connected domains, NULL-terminated. */
 extern const char *const domain_names[];
 
