@@ -24,6 +24,7 @@ struct MgLevel {
     std::vector<double> rx, ry;      // R = L(r) - f, for the restriction
     std::vector<double> best_x, best_y;  // coarsest level: the best iterate of its solve
     ControlFields controls;          // the finer fields injected and rescaled
+    std::vector<Connectivity::Node> singular;  // boundary singularities (multigrid_local.hpp)
     Level level;                     // the operator's view of this level
     LineWork work;
     std::size_t size() const { return static_cast<std::size_t>(conn.ni()) * conn.nj(); }

@@ -1,0 +1,30 @@
+// Local relaxation near the boundary's singular points (Brandt's remedy for
+// re-entrant corners and sharp trailing edges): the error of a cycle
+// concentrates where the solution is singular, and those few nodes set the
+// max-norm residual of NUMERICS.md. Extra point Gauss-Seidel sweeps in a
+// small box around each such node, on every level, remove it for a cost
+// independent of the grid size.
+#pragma once
+#include <vector>
+
+#include "grid/connectivity.hpp"
+#include "operator/operator.hpp"
+
+namespace eg2d {
+
+// Boundary nodes of the fine grid where the solution is singular: the corners
+// of a single block, the two ends of a C-grid's wake cut (the trailing edge,
+// where each side of the cut turns only a little) and every boundary node
+// where the boundary turns by more than kSingularTurn (an O-grid airfoil's
+// trailing edge, a kink of a side).
+std::vector<Connectivity::Node> singular_nodes(const Connectivity &conn, const double *x, const double *y);
+
+// The same nodes on a level whose index spacing is (si, sj) fine cells.
+std::vector<Connectivity::Node> coarse_nodes(const std::vector<Connectivity::Node> &fine, int si, int sj);
+
+// `sweeps` symmetric point Gauss-Seidel sweeps over the unknowns within
+// `radius` index steps of each node.
+void relax_near(System system, const Level &L, const std::vector<Connectivity::Node> &nodes, int radius,
+                int sweeps);
+
+}  // namespace eg2d
