@@ -11,7 +11,7 @@
  *   eg2d_bench --seed004     seed 004 Table 2: an 87x31 O-grid, E < 5e-5 and 1e-10
  *
  * Cases (cases.c): swan, valley, annulus, annulus-source, naca0012,
- * naca0012-c, naca0012-stretched. A solver name may carry ":omega" (psor:1
+ * naca0012-c, naca0012-wall. A solver name may carry ":omega" (psor:1
  * is point Gauss-Seidel): eg2d_set_relaxation(omega) for that column.
  *
  * Every run: TFI start, eg2d_solve to the residual (NUMERICS.md), on this
