@@ -51,7 +51,7 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kStepRatio = 2.0;
 
 // The automatic largest step is divided by kTopShrink whenever the residual
-// rises kRiseFactor times above its best (AutoRelaxation's rule for SOR).
+// rises kRiseFactor times above its best.
 // Large steps with lagged coefficients can be unstable: seed 000's channel 3
 // with wall orthogonality (a control that follows the grid) diverged at step
 // 169. The residual of a healthy cycle rises up to ~20x during its largest

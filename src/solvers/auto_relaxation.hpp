@@ -1,34 +1,80 @@
-// Automatic over-relaxation for the SOR sweeps. For Laplace it is seed 003's
-// optimal factor (SOR converges there for any omega in (0, 2)). Winslow's
-// frozen coefficients make that factor unstable on some grids (valley 257^2 and a NACA0012 O-grid 257x65 diverge at
-// omega = 1.97: the residual creeps up for a hundred sweeps, then explodes),
-// so Winslow starts at the optimum of a grid half as fine (2 - omega doubled;
-// 1.952 at 257^2, which converges there), and whenever the residual after a
-// sweep rises 10x above the best seen after any earlier sweep, 2 - omega is
-// doubled again. The start grid's residual does not count: the first sweep from TFI
-// often raises the max-norm residual. Stable cases keep the optimal factor.
+// Automatic over-relaxation for the SOR sweeps (point, line, coarse-to-fine),
+// when the relaxation setting is 0. Each solver names a target factor (the
+// optimum of the Laplace model problem, seed 003 for points, line_relax.hpp
+// for lines); this class decides how much of its over-relaxation (omega - 1)
+// a sweep may use, from what the sweeps do to the grid:
+//  - a ramp: from Gauss-Seidel (omega = 1) linearly up to the target over the
+//    first ramp_for(target) sweeps after a reset: about as many sweeps as the
+//    target needs per decade of residual (1/(2 - omega) per e-fold), so about
+//    max(ni, nj) for line SOR on a square grid but 50 on a 257x33 one (the old
+//    ramp of max(ni, nj) cost 3x there). Over-relaxing from a TFI start folds
+//    Winslow grids: fixed omega = 1.8 diverges in 1-5 sweeps on the swan and
+//    the NACA0012 O- and C-grids at 129 (bench), yet the same factors
+//    converge once the grid is near its solution.
+//  - a jump guard: a sweep whose largest move is more than kJump times the
+//    previous sweep's is undone, the over-relaxation halved, and the sweep
+//    redone. A sweep that converges moves the grid a little less each time;
+//    a blow-up (the NACA0012 O-grid at 513x129 at its model optimum) starts
+//    with one such jump.
+//  - a creep guard, once the ramp is over: a move kCreep times the least
+//    since the ramp ended (or the last back-off) halves the over-relaxation.
+//    During the ramp the moves legitimately grow (about 10x on the swan
+//    257^2: the faster a sweep converges the more it moves), which the old
+//    rule (a 10x rise over the whole run) took for divergence, backing the
+//    swan 257^2 off to 2747+ sweeps where 569 suffice.
 #pragma once
+#include <cstddef>
 #include <limits>
+#include <vector>
 
-#include "core/settings.hpp"
-#include "operator/system.hpp"
+#include "operator/operator.hpp"
 
 namespace eg2d {
 
 class AutoRelaxation {
 public:
-    // The user's factor if one is set, else the adaptive one for an n1 x n2 grid.
-    double omega(const Settings &settings, System system, int n1, int n2) const;
-    // The residual after an iteration.
-    void observe(double residual);
-    void reset() {
-        widening_ = 1.0;
-        best_ = std::numeric_limits<double>::infinity();
+    // The factor to use this sweep for a solver whose target is `target`.
+    double omega(double target) const;
+
+    // One guarded sweep: `sweep()` relaxes L with factors from omega(); it
+    // may run twice (undone and redone after a jump). `ramp` = 0: the start
+    // is already near the solution (coarse-to-fine), no ramp.
+    template <class Sweep>
+    void sweep(const Level &L, long ramp, Sweep &&sweep) {
+        ramp_ = ramp;
+        save(L);
+        sweep();
+        double m = move(L);
+        if (jumped(m)) {
+            restore(L);
+            sweep();
+            m = move(L);
+        }
+        settle(m);
     }
 
+    void reset();
+
+    // The ramp length for a target factor: kRampScale / (2 - target) sweeps
+    // (line SOR's model optimum on an n x n grid: 2 - omega = 8.9/n).
+    static long ramp_for(double target);
+    static constexpr double kRampScale = 9.0;
+
 private:
-    double widening_ = 1.0;  // multiplies 2 - omega_opt
-    double best_ = std::numeric_limits<double>::infinity();
+    static constexpr double kJump = 3.0;
+    static constexpr double kCreep = 10.0;
+    void save(const Level &L);
+    void restore(const Level &L) const;
+    double move(const Level &L) const;  // the largest coordinate change since save(); inf if not finite
+    bool jumped(double move);           // backs off if so
+    void settle(double move);
+
+    long ramp_ = 0;
+    long sweeps_ = 0;     // since the last reset
+    double share_ = 1.0;  // of the target's over-relaxation still allowed
+    double last_move_ = std::numeric_limits<double>::infinity();
+    double least_move_ = std::numeric_limits<double>::infinity();
+    std::vector<double> prev_x_, prev_y_;
 };
 
 }  // namespace eg2d

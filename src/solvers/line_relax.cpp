@@ -215,11 +215,4 @@ LineOmega optimal_line_sor_omega(const Connectivity &conn) {
     return LineOmega{omega(cj / (2.0 - ci)), omega(ci / (2.0 - cj))};
 }
 
-LineOmega automatic_line_sor_omega(const Connectivity &conn, long sweep) {
-    const LineOmega best = optimal_line_sor_omega(conn);
-    const double ramp =
-        std::min(1.0, static_cast<double>(sweep + 1) / static_cast<double>(std::max(conn.ni(), conn.nj())));
-    return LineOmega{1.0 + ramp * (best.xi - 1.0), 1.0 + ramp * (best.eta - 1.0)};
-}
-
 }  // namespace eg2d

@@ -49,13 +49,4 @@ struct LineOmega {
 };
 LineOmega optimal_line_sor_omega(const Connectivity &conn);
 
-// The automatic factors for sweep number `sweep` (0, 1, ...) after a new
-// start: from Gauss-Seidel (omega = 1) linearly up to the optimum over the
-// first max(ni, nj) sweeps. Over-relaxing whole lines at the optimum straight
-// from a TFI start folds the Winslow grid on the swan domain (measured:
-// divergence within 3 sweeps at 33^2..129^2, and when the full factor is
-// reached after 10 or 30 sweeps at 129^2). On larger or stretched grids even
-// the ramped optimum can be too much; lsor.cpp backs off from it.
-LineOmega automatic_line_sor_omega(const Connectivity &conn, long sweep);
-
 }  // namespace eg2d

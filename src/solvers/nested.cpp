@@ -81,7 +81,6 @@ public:
         started_ = false;
         relaxation_.reset();
     }
-    void observe(double residual) override { relaxation_.observe(residual); }
 
     void iterate(Problem &p) override {
         const Level L = p.level();
@@ -89,7 +88,7 @@ public:
             coarse_to_fine(p);
             started_ = true;
         }
-        sor_sweep(p.system, L, relaxation_.omega(p.settings, p.system, L.conn->ni(), L.conn->nj()));
+        guarded_sweep(p.system, L, p.settings, relaxation_);
     }
 
 private:
@@ -143,14 +142,20 @@ private:
         const int cap = 50 * std::max(L.conn->ni(), L.conn->nj()) + 100;
         AutoRelaxation relaxation;
         double best = residual(system, L, extent).value;
-        relaxation.observe(best);
         for (int k = 0; k < cap && best > target; ++k) {
-            sor_sweep(system, L, relaxation.omega(settings, system, L.conn->ni(), L.conn->nj()));
+            guarded_sweep(system, L, settings, relaxation);
             const double r = residual(system, L, extent).value;
-            relaxation.observe(r);
             if (!std::isfinite(r) || r > 1e4 * best) return;  // the fine grid's run loop reports it
             best = std::min(best, r);
         }
+    }
+
+    // A point SOR sweep at the user's factor, or the automatic one with no
+    // ramp: every level starts from the converged coarser one.
+    static void guarded_sweep(System system, const Level &L, const Settings &settings, AutoRelaxation &relaxation) {
+        if (settings.relaxation > 0.0) return sor_sweep(system, L, settings.relaxation);
+        const double target = automatic_sor_target(system, L.conn->ni(), L.conn->nj());
+        relaxation.sweep(L, 0, [&] { sor_sweep(system, L, relaxation.omega(target)); });
     }
 
     bool started_ = false;
