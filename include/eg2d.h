@@ -211,7 +211,7 @@ EG2D_API int eg2d_set_system(eg2d_grid *grid, int system);
  *           start replaces the interior (of a warm start only the coarsest
  *           nodes are kept) unless it would fold cells. Any ni, nj work; with
  *           odd ni-1 or nj-1 NESTED is PSOR. EG2D_PARAM_RELAXATION applies on
- *           every level (automatic: the optimal factor of each level's size).
+ *           every level (automatic: aimed at each level's size).
  *   LSOR    one sweep of xi-lines then one of eta-lines (omega: EG2D_PARAM_RELAXATION).
  *   MULTIGRID one FAS cycle (EG2D_PARAM_MG_*); the first after a new start is
  *           the full-multigrid start. EG2D_PARAM_RELAXATION does not apply. */
@@ -221,15 +221,16 @@ EG2D_API int eg2d_get_solver(const eg2d_grid *grid, int *solver);
 /* A solver's short name ("psor"), or NULL if this library has no such solver. */
 EG2D_API const char *eg2d_solver_name(int solver);
 
-/* Relaxation factor omega in (0, 2); 0 = automatic. Automatic point SOR uses
- * seed 003's optimal factor for Laplace; for Winslow it starts at the optimum
- * of a grid half as fine and widens 2 - omega whenever the residual rises 10x
- * above its best (the optimum itself diverges on some grids). Automatic line
- * SOR uses the optimal line-SOR factor of the Laplace model problem per
- * direction, reached from omega = 1 over the first max(ni, nj) sweeps after a
- * new start (over-relaxing whole lines straight from TFI can fold the grid)
- * and halved in omega - 1 whenever a sweep moves the grid 10 times more than
- * the least move so far. Multigrid does not use it. */
+/* Relaxation factor omega in (0, 2); 0 = automatic. The automatic factor
+ * (point SOR, line SOR, nested) aims at the optimum of the Laplace model
+ * problem on the grid's size (seed 003's for points; for lines the line-SOR
+ * optimum per direction); for Winslow point SOR at most 1.95 (more diverges
+ * on some grids whatever their size). From a new start it rises from 1 to
+ * that aim over about 9/(2 - aim) sweeps (over-relaxing straight from TFI can
+ * fold the grid; nested starts at the aim). A sweep that moves the grid more
+ * than 3 times as much as the previous one is undone and redone with half the
+ * over-relaxation (omega - 1); after the rise, a move 10 times the least
+ * since also halves it. Multigrid does not use it. */
 EG2D_API int eg2d_set_relaxation(eg2d_grid *grid, double omega);
 /* Stop when residual <= tolerance (default 1e-8), tolerance in (0, 1). */
 EG2D_API int eg2d_set_tolerance(eg2d_grid *grid, double tolerance);
