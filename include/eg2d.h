@@ -224,13 +224,13 @@ EG2D_API const char *eg2d_solver_name(int solver);
 /* Relaxation factor omega in (0, 2); 0 = automatic. The automatic factor
  * (point SOR, line SOR, nested) aims at the optimum of the Laplace model
  * problem on the grid's size (seed 003's for points; for lines the line-SOR
- * optimum per direction); for Winslow point SOR at most 1.95 (more diverges
- * on some grids whatever their size). From a new start it rises from 1 to
- * that aim over about 9/(2 - aim) sweeps (over-relaxing straight from TFI can
- * fold the grid; nested starts at the aim). A sweep that moves the grid more
- * than 3 times as much as the previous one is undone and redone with half the
- * over-relaxation (omega - 1); after the rise, a move 10 times the least
- * since also halves it. Multigrid does not use it. */
+ * optimum per direction; nested at most 1.95). From a new start it rises
+ * from 1 to that aim over about 9/(2 - aim) sweeps (over-relaxing straight
+ * from TFI can fold a Winslow grid; Laplace point SOR and nested start at
+ * the aim). A sweep that moves the grid more than 3 times as much as the
+ * previous one is undone and redone with half the over-relaxation
+ * (omega - 1); after the rise, a move 10 times the least since also halves
+ * it. Multigrid does not use it. */
 EG2D_API int eg2d_set_relaxation(eg2d_grid *grid, double omega);
 /* Stop when residual <= tolerance (default 1e-8), tolerance in (0, 1). */
 EG2D_API int eg2d_set_tolerance(eg2d_grid *grid, double tolerance);

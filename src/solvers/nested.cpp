@@ -151,10 +151,16 @@ private:
     }
 
     // A point SOR sweep at the user's factor, or the automatic one with no
-    // ramp: every level starts from the converged coarser one.
+    // ramp: every level starts from the converged coarser one. Its target is
+    // seed 003's optimum but at most kLimit: the error left by the coarser
+    // level is not the model's slowest mode, and more over-relaxation only
+    // slows it (bench, swan/valley: 402/518 sweeps at 257^2, 503/493 at
+    // 513^2 with the limit; 774/732 and 1040+/1083+ (capped) at the
+    // optimum; 424/585 and 775/816 at the optimum of a grid half as fine).
     static void guarded_sweep(System system, const Level &L, const Settings &settings, AutoRelaxation &relaxation) {
+        constexpr double kLimit = 1.95;
         if (settings.relaxation > 0.0) return sor_sweep(system, L, settings.relaxation);
-        const double target = automatic_sor_target(system, L.conn->ni(), L.conn->nj());
+        const double target = std::min(kLimit, optimal_sor_omega(L.conn->ni(), L.conn->nj()));
         relaxation.sweep(L, 0, [&] { sor_sweep(system, L, relaxation.omega(target)); });
     }
 

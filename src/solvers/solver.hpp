@@ -61,8 +61,4 @@ void sor_sweep(System system, const Level &L, double omega);
 // Seed 003's optimal SOR factor for Laplace on an N1 x N2 grid.
 double optimal_sor_omega(int n1, int n2);
 
-// The target of the automatic point SOR factor (auto_relaxation.hpp): for
-// Laplace that optimum; for Winslow the optimum but at most 1.95 (psor.cpp).
-double automatic_sor_target(System system, int n1, int n2);
-
 }  // namespace eg2d
