@@ -4,18 +4,20 @@
 // for lines); this class decides how much of its over-relaxation (omega - 1)
 // a sweep may use, from what the sweeps do to the grid:
 //  - a ramp: from Gauss-Seidel (omega = 1) linearly up to the target over the
-//    first ramp_for(target) sweeps after a reset: about as many sweeps as the
-//    target needs per decade of residual (1/(2 - omega) per e-fold), so about
-//    max(ni, nj) for line SOR on a square grid but 50 on a 257x33 one (the old
-//    ramp of max(ni, nj) cost 3x there). Over-relaxing from a TFI start folds
+//    first ramp_for(target) sweeps after a reset: the sweeps the target needs
+//    for about four decades of residual (SOR's rate at omega is about
+//    omega - 1: 1/(2 - omega) sweeps per e-fold), so about max(ni, nj) for
+//    line SOR on a square grid but 50 on a 257x33 one (the old ramp of
+//    max(ni, nj) cost 3x there). Over-relaxing from a TFI start folds
 //    Winslow grids: fixed omega = 1.8 diverges in 1-5 sweeps on the swan and
 //    the NACA0012 O- and C-grids at 129 (bench), yet the same factors
 //    converge once the grid is near its solution.
 //  - a jump guard: a sweep whose largest move is more than kJump times the
 //    previous sweep's is undone, the over-relaxation halved, and the sweep
 //    redone. A sweep that converges moves the grid a little less each time;
-//    a blow-up (the NACA0012 O-grid at 513x129 at its model optimum) starts
-//    with one such jump.
+//    a blow-up starts with such a jump (the NACA0012 O-grid at 513x129 blew
+//    up within one sweep under an earlier line-SOR rule). No bench case
+//    triggers it now; it is the net under the ramp.
 //  - a creep guard, once the ramp is over: a move kCreep times the least
 //    since the ramp ended (or the last back-off) halves the over-relaxation.
 //    During the ramp the moves legitimately grow (about 10x on the swan
