@@ -22,10 +22,24 @@ constexpr int kLocalRadius = 4;
 constexpr int kLocalSweeps = 2;
 }  // namespace
 
+// The smoother, per topology. A single block gets the alternating ILU sweeps
+// (multigrid_ilu.hpp). Measured, W(2,1) per-cycle residual ratios from 129^2
+// to 1025^2 (bench/eg2d_bench, the monitor's residuals): swan 0.09 -> 0.19
+// with the line smoother, 0.004 -> 0.017 with ILU; dome 0.17 -> 0.29 with
+// lines, 0.02 -> 0.09 with ILU; each ILU sweep pair costs about twice a line
+// sweep pair, and fewer cycles make up for it. O- and C-grids keep the line
+// smoother: ILU leaves the couplings across the branch cut or the wake cut
+// out of its factors, and there it was worse (257^2: annulus 0.019 -> 0.069,
+// NACA0012 O-grid 0.035 -> 0.082 per cycle; the C-grid unchanged at 0.16).
+static bool single_block(const Connectivity &c) { return !c.periodic_i() && c.extra_unknowns().empty(); }
+
 void smooth(System system, MgLevel &m, int sweeps, bool reverse) {
     const double omega = kSmootherOmega;
     for (int s = 0; s < sweeps; ++s) {
-        if (!reverse) {
+        if (single_block(m.conn)) {
+            ilu_sweep(system, m.level, false, 1.0, m.ilu);
+            ilu_sweep(system, m.level, true, 1.0, m.ilu);
+        } else if (!reverse) {
             sweep_xi_lines(system, m.level, omega, m.work, LineOrder::Forward);
             sweep_eta_lines(system, m.level, omega, m.work, LineOrder::Zebra);
         } else {
