@@ -1,7 +1,9 @@
 // FAS multigrid (Brandt's full approximation scheme) for the nonlinear grid
 // equations: V or W cycles, an optional full-multigrid (FMG) start, alternating
-// line Gauss-Seidel smoothing. One iterate() is one cycle; the first after a
-// reset is the FMG start (it ends with the cycle on the fine grid).
+// nine-point ILU smoothing on single-block grids and alternating line
+// Gauss-Seidel smoothing on O- and C-grids (multigrid_smoother.cpp). One
+// iterate() is one cycle; the first after a reset is the FMG start (it ends
+// with the cycle on the fine grid).
 //
 // Coarse level c of fine level f (multigrid_hierarchy.hpp):
 //   u_c = I u_f                         injection (boundary included)
@@ -10,12 +12,14 @@
 //   solve L_c(u_c) = f_c  (recursively), then u_f += P (u_c - I u_f), bilinear.
 //
 // Defaults, W(2,1) with FMG (settings.hpp), chosen by measurement on the seed
-// 003 domains and the annulus (bench/eg2d_bench): with the over-relaxed
-// zebra/line smoother, W(2,1) gives 0.01-0.11 per cycle at 65^2..1025^2 (the
-// dome: up to 0.18; its error sits in a strip along the strongly curved top,
-// and extra relaxation of the lines there does not remove it). V(2,1) is
-// about 30% faster at 1025^2 for a somewhat worse factor (swan 0.14 vs 0.11,
-// dome 0.22 vs 0.18); V(1,1) and W(1,1) converge more slowly on the dome.
+// 003 domains and the annulus (bench/eg2d_bench). With the ILU smoother the
+// per-cycle factor on the swan is 0.002-0.006 and on the dome 0.01-0.09 at
+// 65^2..1025^2 (the dome's worst, 0.086 at 1025^2, sits at the top middle,
+// where alpha/gamma is about 3600; W(2,2) makes it 0.03 for 40% more work,
+// V(2,1) keeps these factors for about 60% of the cost). With the
+// over-relaxed zebra/line smoother (O- and C-grids) V(2,1) was about 30%
+// faster at 1025^2 for a somewhat worse factor (swan 0.14 vs 0.11, dome 0.22
+// vs 0.18); V(1,1) and W(1,1) converge more slowly on the dome.
 // Every smoothing also relaxes the nodes next to the boundary's singular
 // points (multigrid_local.hpp): an airfoil's trailing edge otherwise sets
 // the cycle's factor. The swan's obtuse corners and the C-grid's trailing

@@ -28,8 +28,8 @@
 
 namespace eg2d {
 
-// The upper factor U (diagonal and the four upper couplings) and the
-// forward-substitution result z, per node; sized on first use.
+// The upper factor U (the reciprocal of its diagonal, uc, and the four upper
+// couplings) and the forward-substitution result z, per node; sized on first use.
 struct IluWork {
     std::vector<double> uc, ue, unw, un, une, zx, zy;
 };

@@ -23,14 +23,15 @@ constexpr int kLocalSweeps = 2;
 }  // namespace
 
 // The smoother, per topology. A single block gets the alternating ILU sweeps
-// (multigrid_ilu.hpp). Measured, W(2,1) per-cycle residual ratios from 129^2
-// to 1025^2 (bench/eg2d_bench, the monitor's residuals): swan 0.09 -> 0.19
-// with the line smoother, 0.004 -> 0.017 with ILU; dome 0.17 -> 0.29 with
-// lines, 0.02 -> 0.09 with ILU; each ILU sweep pair costs about twice a line
-// sweep pair, and fewer cycles make up for it. O- and C-grids keep the line
-// smoother: ILU leaves the couplings across the branch cut or the wake cut
-// out of its factors, and there it was worse (257^2: annulus 0.019 -> 0.069,
-// NACA0012 O-grid 0.035 -> 0.082 per cycle; the C-grid unchanged at 0.16).
+// (multigrid_ilu.hpp). Measured, the worst W(2,1) per-cycle residual ratio
+// down to 1e-10 at 65^2..1025^2 (the monitor's residuals): swan 0.09-0.18
+// with the line smoother, 0.002-0.006 with ILU; dome 0.09-0.29 with lines,
+// 0.008-0.086 with ILU. An ILU sweep pair costs about twice a line sweep
+// pair (WU per cycle 17-22 -> 30-41); fewer cycles make up for it (swan
+// 1025^2: 5 cycles, 1.41 CPU s -> 2 cycles, 0.98 s). O- and C-grids keep the
+// line smoother: ILU leaves the couplings across the branch cut or the wake
+// cut out of its factors, and there it was worse (257^2: annulus 0.019 ->
+// 0.069, NACA0012 O-grid 0.035 -> 0.082 per cycle; the C-grid unchanged at 0.16).
 static bool single_block(const Connectivity &c) { return !c.periodic_i() && c.extra_unknowns().empty(); }
 
 void smooth(System system, MgLevel &m, int sweeps, bool reverse) {
