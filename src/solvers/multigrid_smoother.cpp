@@ -27,8 +27,8 @@ constexpr int kLocalSweeps = 2;
 // down to 1e-10 at 65^2..1025^2 (the monitor's residuals): swan 0.09-0.18
 // with the line smoother, 0.002-0.006 with ILU; dome 0.09-0.29 with lines,
 // 0.008-0.086 with ILU. An ILU sweep pair costs about twice a line sweep
-// pair (WU per cycle 17-22 -> 30-41); fewer cycles make up for it (swan
-// 1025^2: 5 cycles, 1.41 CPU s -> 2 cycles, 0.98 s). O- and C-grids keep the
+// pair (WU per cycle 17-22 -> 25-36); fewer cycles make up for it (swan
+// 1025^2: 5 cycles, 1.41 CPU s -> 2 cycles, 0.92 s). O- and C-grids keep the
 // line smoother: ILU leaves the couplings across the branch cut or the wake
 // cut out of its factors, and there it was worse (257^2: annulus 0.019 ->
 // 0.069, NACA0012 O-grid 0.035 -> 0.082 per cycle; the C-grid unchanged at 0.16).
