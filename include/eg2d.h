@@ -661,6 +661,11 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   end nodes next to a corner shared with another wall side are left free.
  *   While it is active, the automatic relaxation (EG2D_PARAM_RELAXATION 0)
  *   is 1: over-relaxing its strong terms diverges at sharp trailing edges.
+ *   With EG2D_SOLVER_MULTIGRID each cycle follows one update, taken 3x
+ *   (relaxation) and 5x (step) larger than for the sweeping solvers; a
+ *   cycle that folds cells, or 20 cycles without progress, hand the run
+ *   over to line sweeps. A run converges only when the control is settled
+ *   too (its remaining change within the tolerance).
  * NONE removes either. */
 #define EG2D_ORTHO_NONE              0
 #define EG2D_ORTHO_MIDDLECOFF_THOMAS 1
