@@ -13,6 +13,7 @@ static int half(int n) { return n / 2 + 1; }
 static int quarter(int n) { return n / 4 + 1; }
 static int set_swan(eg2d_grid *g) { return domain_set(g, "swan"); }
 static int set_valley(eg2d_grid *g) { return domain_set(g, "valley"); }
+static int set_dome(eg2d_grid *g) { return domain_set(g, "dome"); }
 static int set_annulus(eg2d_grid *g) { return domain_set_annulus(g, 1.0, 3.0); }
 static int set_annulus_source(eg2d_grid *g) {
     const int status = domain_set_annulus(g, 1.0, 3.0);
@@ -42,6 +43,7 @@ static int set_naca0012_wall(eg2d_grid *g) {
 static const bench_case cases[] = {
     {"swan", square, set_swan},          /* seed 003 A4 */
     {"valley", square, set_valley},      /* seed 003 A1 */
+    {"dome", square, set_dome},          /* seed 003 A5: strongly curved top */
     {"annulus", half, set_annulus},      /* O-grid, 1 <= r <= 3, n x (n/2+1) */
     {"naca0012", quarter, set_naca0012}, /* O-grid, sharp-TE NACA0012 in r = 10, n x (n/4+1) */
     {"naca0012-c", quarter, set_naca0012_c}, /* C-grid, n/4 wake points a side to x = 6, r = 5 */

@@ -249,8 +249,10 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
                                             the best of the run (and above 1e-2) is divergence */
 #define EG2D_PARAM_FOLD_CHECK         4  /* 1 (default): eg2d_solve returns EG2D_ERR_FOLDED when
                                             the converged grid has folded cells; 0: it does not */
-/* Multigrid (EG2D_SOLVER_MULTIGRID): FAS cycles with alternating line
- * Gauss-Seidel smoothing. One iteration is one cycle; with PARAM_MG_FMG the
+/* Multigrid (EG2D_SOLVER_MULTIGRID): FAS cycles smoothed by incomplete-LU
+ * sweeps of the nine-point operator (two orderings) on a single block, by
+ * alternating line Gauss-Seidel on O- and C-grids. One iteration is one
+ * cycle; with PARAM_MG_FMG the
  * first iteration after (re)initialising the grid is a full-multigrid start:
  * solve on the coarsest grid, interpolate, one cycle per finer level.
  * A direction is halved while it has an odd node count (ni-1 even; on an
@@ -263,8 +265,9 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
  * Gauss-Seidel sweep in each direction instead of a cycle: that control's
  * update assumes each iteration moves the grid a little. */
 #define EG2D_PARAM_MG_CYCLE         110  /* 1 = V cycle, 2 = W cycle (default)             */
-#define EG2D_PARAM_MG_PRE_SMOOTH    111  /* [0, 20], default 2: alternating sweeps (xi-lines,
-                                              then eta-lines) before the coarse correction */
+#define EG2D_PARAM_MG_PRE_SMOOTH    111  /* [0, 20], default 2: smoothing sweeps (ILU in both
+                                              orderings, or xi-lines then eta-lines) before the
+                                              coarse correction */
 #define EG2D_PARAM_MG_POST_SMOOTH   112  /* [0, 20], default 1: and after it (pre + post >= 1,
                                               else eg2d_iterate/solve fail with EG2D_ERR_STATE) */
 #define EG2D_PARAM_MG_FMG           113  /* 1 (default): full-multigrid start; 0: V/W cycles from
@@ -659,6 +662,11 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   end nodes next to a corner shared with another wall side are left free.
  *   While it is active, the automatic relaxation (EG2D_PARAM_RELAXATION 0)
  *   is 1: over-relaxing its strong terms diverges at sharp trailing edges.
+ *   With EG2D_SOLVER_MULTIGRID each cycle follows one update, taken 3x
+ *   (relaxation) and 5x (step) larger than for the sweeping solvers; a
+ *   cycle that folds cells, or 20 cycles without progress, hand the run
+ *   over to line sweeps. A run converges only when the control is settled
+ *   too (its remaining change within the tolerance).
  * NONE removes either. */
 #define EG2D_ORTHO_NONE              0
 #define EG2D_ORTHO_MIDDLECOFF_THOMAS 1

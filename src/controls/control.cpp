@@ -1,5 +1,7 @@
 #include "controls/control.hpp"
 
+#include <algorithm>
+
 namespace eg2d {
 
 ControlSet::ControlSet(const ControlSet &other)
@@ -68,11 +70,18 @@ const ControlFields &ControlSet::update(const Grid &grid, bool start_of_run) {
     return fields_;
 }
 
-const ControlFields &ControlSet::advance(const Grid &grid, const Settings &settings) {
+double ControlSet::mismatch() const {
+    double m = 0.0;
+    for (const auto &c : controls_)
+        if (c->dynamic()) m = std::max(m, c->mismatch());
+    return m;
+}
+
+const ControlFields &ControlSet::advance(const Grid &grid, const Settings &settings, const ControlPace &pace) {
     unsettled_ = false;
     if (stale_) update(grid, true);
     for (const auto &c : controls_)
-        if (c->dynamic()) c->advance(grid, static_, settings);
+        if (c->dynamic()) c->advance(grid, static_, settings, pace);
     sum_dynamic(grid);
     return fields_;
 }

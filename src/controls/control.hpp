@@ -15,6 +15,16 @@ namespace eg2d {
 // (line and point sources share one); Other is any number of unnamed terms.
 enum class ControlKind { Other, Sources, Arrays, Orthogonality, ParameterGrid, Weight };
 
+// How far a dynamic term moves per update, as multiples of its own pace
+// (tuned for solvers that move the grid a little per iteration). A solver
+// that converges the grid for the current fields in every iteration (a
+// multigrid cycle) can take larger steps: the grid has caught up with the
+// last one by the time of the next (generator.cpp).
+struct ControlPace {
+    double relaxation = 1.0;  // times the under-relaxation of the update
+    double step = 1.0;        // times the largest change per update
+};
+
 class Control {
 public:
     virtual ~Control() = default;
@@ -29,7 +39,14 @@ public:
     virtual bool dynamic() const { return false; }
     // Dynamic terms: one update of the state from the grid, given the sum of
     // every static term (`others`). Called by the run before each iteration.
-    virtual void advance(const Grid &, const ControlFields & /*others*/, const Settings &) {}
+    virtual void advance(const Grid &, const ControlFields & /*others*/, const Settings &, const ControlPace &) {}
+    // Dynamic terms, after advance(): how far the state still is from the
+    // state the grid asks for, as the largest change |dR|/diag of a node
+    // equation that closing the gap would make (NUMERICS.md's residual
+    // before the division by L). A run is converged only when this is below
+    // the tolerance too: the residual alone cannot see a control that moves
+    // slowly (an under-relaxed node that oscillated and was damped).
+    virtual double mismatch() const { return 0.0; }
 };
 
 // The controls of a grid and the fields they add up to.
@@ -53,8 +70,10 @@ public:
     // Recomputes the fields if anything changed (or always at the start of a run).
     const ControlFields &update(const Grid &grid, bool start_of_run);
     // One update of the dynamic terms, then the fields (same object as fields()).
-    const ControlFields &advance(const Grid &grid, const Settings &settings);
+    const ControlFields &advance(const Grid &grid, const Settings &settings, const ControlPace &pace);
     const ControlFields &fields() const { return fields_; }
+    // The largest mismatch() of the dynamic terms (0 without any).
+    double mismatch() const;
     void invalidate() { stale_ = unsettled_ = true; }
     // True while a dynamic term has not been updated since the controls, the
     // boundary or the start grid last changed: its fields are still those of

@@ -86,10 +86,14 @@ public:
     void add_to(const Grid &g, ControlFields &fields) const override {
         for (int side = 0; side < 4; ++side) add_side(g, side, fields);
     }
+    double mismatch() const override { return mismatch_; }
 
-    void advance(const Grid &g, const ControlFields &others, const Settings &settings) override {
+    void advance(const Grid &g, const ControlFields &others, const Settings &settings,
+                 const ControlPace &pace) override {
         decay_ = settings.wall_decay;
-        const double omega = settings.wall_relaxation;
+        const double omega = std::min(1.0, pace.relaxation * settings.wall_relaxation);
+        const double step = pace.step * kStepLimit;
+        mismatch_ = 0.0;
         const double orient = orientation(g);
         for (int side = 0; side < 4; ++side) {
             if (!active(g, side)) {
@@ -112,8 +116,8 @@ public:
                 if (o != side) add_side(g, o, rest);
             const double sign = (side == 0 || side == 1) ? orient : -orient;
             for (int k = 0; k < n; ++k) {
-                double phi, psi;
-                if (target(g, side, k, sign, rest, phi, psi)) {
+                double phi, psi, unit[4];
+                if (target(g, side, k, sign, rest, phi, psi, unit)) {
                     double &p = phi_[side][k], &q = psi_[side][k], &gain = gain_[side][k];
                     // A node whose update flips direction is overshooting (a
                     // solver that converges much per iteration answers a change
@@ -124,8 +128,11 @@ public:
                     gain = turned ? std::max(0.5 * gain, kMinGain) : std::min(1.1 * gain, 1.0);
                     lp = dp;
                     lq = dq;
-                    p += std::clamp(gain * omega * dp, -kStepLimit, kStepLimit);
-                    q += std::clamp(gain * omega * dq, -kStepLimit, kStepLimit);
+                    p += std::clamp(gain * omega * dp, -step, step);
+                    q += std::clamp(gain * omega * dq, -step, step);
+                    const double gp = phi - p, gq = psi - q;
+                    mismatch_ = std::max({mismatch_, std::fabs(gp * unit[0] + gq * unit[2]),
+                                          std::fabs(gp * unit[1] + gq * unit[3])});
                 }
             }
         }
@@ -151,8 +158,10 @@ private:
     }
 
     // The coefficients that put the depth-1 node at its target.
+    // unit: the change of (R_x, R_y)/diag per unit of phi (unit[0..1]) and of
+    // psi (unit[2..3]) at that node, for mismatch().
     bool target(const Grid &g, int side, int k, double sign, const ControlFields &rest, double &phi,
-                double &psi) const {
+                double &psi, double unit[4]) const {
         if (k < k_begin(g, side) || k >= k_end(g, side)) return false;
         const Connectivity &conn = g.connectivity();
         const int n = wall_length(g, side);
@@ -221,6 +230,13 @@ private:
         psi = std::clamp(psi, -kPsiLimit * widen, kPsiLimit * widen);
         if (height_[side] == 0.0) psi = 0.0;  // the normal position is left to the equation
         if (!std::isfinite(phi) || !std::isfinite(psi)) return false;
+        const double w = scale / (2.0 * (m.alpha + m.gamma));
+        const double ax = j_side(side) ? xxi : xeta, ay = j_side(side) ? yxi : yeta;  // along the wall
+        const double cx = j_side(side) ? xeta : xxi, cy = j_side(side) ? yeta : yxi;  // across it
+        unit[0] = w * ax;
+        unit[1] = w * ay;
+        unit[2] = w * cx;
+        unit[3] = w * cy;
         return true;
     }
 
@@ -253,6 +269,7 @@ private:
     // Per node: the gain on the relaxation and the last update's direction.
     std::array<std::vector<double>, 4> gain_, lastp_, lastq_;
     double decay_ = 0.0;
+    double mismatch_ = 0.0;
 };
 }  // namespace
 

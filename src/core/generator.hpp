@@ -76,6 +76,11 @@ private:
     void ensure_ready();
     enum class RunEnd { Done, Converged, Limit };
     RunEnd run(long max_iterations, bool stop_at_tolerance);
+    // Dynamic controls have been updated since they last changed and are
+    // within the tolerance of their target (ControlSet::mismatch() / L).
+    bool settled(double extent, double tolerance) const {
+        return !controls_.dynamic_pending() && controls_.mismatch() / extent <= tolerance;
+    }
 
     Grid grid_;
     System system_ = System::Winslow;

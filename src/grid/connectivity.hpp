@@ -47,10 +47,14 @@ public:
     int i_period() const { return ni_ - 1; }
     // The connectivity of the grid coarsened by si in i and sj in j (every
     // si-th column, every sj-th row), for multigrid: a C-grid keeps its cut
-    // when the trailing edge falls on a coarse column (wake % si == 0), else
-    // the coarse cut is fixed (wake 0).
+    // up to the last coarse column at or before the trailing edge (wake/si,
+    // rounded down). When the edge falls between coarse columns, the coarse
+    // grid holds the cut node next to it fixed, an error of one fine cell
+    // there; a coarse cut held fixed as a whole cannot correct the cut's
+    // sliding at all (measured: NACA0012 C-grid 129x33 with a wake of 31,
+    // 94 cycles at 0.84 per cycle against 7 at 0.11).
     Connectivity coarsened(int si, int sj) const {
-        const int wake = (topology_ == Topology::C && wake_ % si == 0) ? wake_ / si : 0;
+        const int wake = (topology_ == Topology::C) ? wake_ / si : 0;
         return Connectivity((ni_ - 1) / si + 1, (nj_ - 1) / sj + 1, topology_, wake);
     }
     // C-grid: the trailing-edge index on JMIN (0 for the other topologies).

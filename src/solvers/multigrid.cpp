@@ -1,7 +1,9 @@
 // FAS multigrid (Brandt's full approximation scheme) for the nonlinear grid
 // equations: V or W cycles, an optional full-multigrid (FMG) start, alternating
-// line Gauss-Seidel smoothing. One iterate() is one cycle; the first after a
-// reset is the FMG start (it ends with the cycle on the fine grid).
+// nine-point ILU smoothing on single-block grids and alternating line
+// Gauss-Seidel smoothing on O- and C-grids (multigrid_smoother.cpp). One
+// iterate() is one cycle; the first after a reset is the FMG start (it ends
+// with the cycle on the fine grid).
 //
 // Coarse level c of fine level f (multigrid_hierarchy.hpp):
 //   u_c = I u_f                         injection (boundary included)
@@ -10,20 +12,27 @@
 //   solve L_c(u_c) = f_c  (recursively), then u_f += P (u_c - I u_f), bilinear.
 //
 // Defaults, W(2,1) with FMG (settings.hpp), chosen by measurement on the seed
-// 003 domains and the annulus (bench/eg2d_bench): with the over-relaxed
-// zebra/line smoother, W(2,1) gives 0.01-0.11 per cycle at 65^2..1025^2 (the
-// dome: up to 0.18; its error sits in a strip along the strongly curved top,
-// and extra relaxation of the lines there does not remove it). V(2,1) is
-// about 30% faster at 1025^2 for a somewhat worse factor (swan 0.14 vs 0.11,
-// dome 0.22 vs 0.18); V(1,1) and W(1,1) converge more slowly on the dome.
+// 003 domains and the annulus (bench/eg2d_bench). With the ILU smoother the
+// per-cycle factor on the swan is 0.002-0.006 and on the dome 0.01-0.09 at
+// 65^2..1025^2 (the dome's worst, 0.086 at 1025^2, sits at the top middle,
+// where alpha/gamma is about 3600; W(2,2) makes it 0.03 for 40% more work,
+// V(2,1) keeps these factors for about 60% of the cost). With the
+// over-relaxed zebra/line smoother (O- and C-grids) V(2,1) was about 30%
+// faster at 1025^2 for a somewhat worse factor (swan 0.14 vs 0.11, dome 0.22
+// vs 0.18); V(1,1) and W(1,1) converge more slowly on the dome.
 // Every smoothing also relaxes the nodes next to the boundary's singular
 // points (multigrid_local.hpp): an airfoil's trailing edge otherwise sets
-// the cycle's factor. The swan's obtuse corners and the C-grid's trailing
-// edge gain nothing from it (measured; left as they are).
+// the cycle's factor. The swan's obtuse corners gain nothing from it
+// (measured; left as they are). On a C-grid the eta-lines run through the
+// wake cut and the trailing edge gets a longer local round
+// (line_relax.cpp, multigrid_smoother.cpp): bench naca0012-c went from
+// 9-12 cycles at 0.13-0.24 (growing with the grid) to 5-7 at 0.04-0.08.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
+#include "quality/quality.hpp"
 #include "solvers/multigrid_hierarchy.hpp"
 #include "solvers/multigrid_local.hpp"
 #include "solvers/multigrid_smoother.hpp"
@@ -33,6 +42,8 @@ namespace eg2d {
 
 namespace {
 
+constexpr int kStallCycles = 20;
+
 class Multigrid final : public Solver {
 public:
     void iterate(Problem &p) override {
@@ -41,31 +52,70 @@ public:
             fail(Failure::State, "multigrid: the pre- and post-smoothing counts are both 0; set "
                                  "EG2D_PARAM_MG_PRE_SMOOTH or EG2D_PARAM_MG_POST_SMOOTH to at least 1");
         prepare(p);
-        if (p.dynamic_controls) {
-            // A control recomputed from the grid between iterations (the wall
-            // control) is a fixed-point iteration of its own, tuned to solvers
-            // that move the grid a little per iteration: against full cycles
-            // it overshoots (measured: NACA0012 65x33 stopped at the residual
-            // with the wall spacing 78% off; seed 000 channel 2 diverged or
-            // stalled). So an iteration is then one line Gauss-Seidel sweep in
-            // each direction (EG2D_SOLVER_LSOR at omega = 1; over-relaxed, the
-            // NACA0012 trailing edge made the residual stall at 1.3e-9).
-            MgLevel &m = levels_[0];
-            sweep_xi_lines(system_, m.level, 1.0, m.work);
-            sweep_eta_lines(system_, m.level, 1.0, m.work);
-            relax_extra_unknowns(system_, m.level, 1.0);
+        if (p.dynamic_controls && sweeps_only_) {
+            sweep();
             return;
+        }
+        // With a control recomputed from the grid between iterations (the
+        // wall control) each cycle follows one update of it (the run paces
+        // the updates for cycles: converges_each_iteration). That coupled
+        // iteration is not safe on every grid (NACA0012 257x65 at a wall
+        // spacing of 1e-5 chord: some paces fold the trailing-edge cells and
+        // stall), so a cycle that adds folded cells or non-finite values is
+        // undone, and the run goes on with sweeps.
+        const bool guard = p.dynamic_controls;
+        if (guard) {
+            saved_x_ = p.grid.x;
+            saved_y_ = p.grid.y;
+            if (folded_ < 0) folded_ = fold_summary(p.grid).folded;
         }
         if (!started_ && st.mg_fmg != 0.0) full_multigrid();
         else cycle(0);
         started_ = true;
+        if (guard) {
+            const bool finite = std::all_of(p.grid.x.begin(), p.grid.x.end(), [](double v) { return std::isfinite(v); }) &&
+                                std::all_of(p.grid.y.begin(), p.grid.y.end(), [](double v) { return std::isfinite(v); });
+            const long folded = finite ? fold_summary(p.grid).folded : folded_ + 1;
+            if (folded > folded_) {
+                p.grid.x.swap(saved_x_);
+                p.grid.y.swap(saved_y_);
+                sweeps_only_ = true;
+                sweep();
+            }
+        }
     }
     void reset() override {
         levels_.clear();
         started_ = false;
+        sweeps_only_ = false;
+        folded_ = -1;
+        stall_best_ = std::numeric_limits<double>::infinity();
+        stall_count_ = 0;
+    }
+    bool converges_each_iteration() const override { return !sweeps_only_; }
+    // Guarded cycles that stop making progress (the best residual not halved
+    // in kStallCycles cycles: seed 000's channel 2 with its sources stalled
+    // at 9e-4) also hand over to sweeps.
+    void observe(double residual) override {
+        if (sweeps_only_ || folded_ < 0) return;
+        if (residual < 0.5 * stall_best_) {
+            stall_best_ = residual;
+            stall_count_ = 0;
+        } else if (++stall_count_ >= kStallCycles) {
+            sweeps_only_ = true;
+        }
     }
 
 private:
+    // One line Gauss-Seidel sweep in each direction (EG2D_SOLVER_LSOR at
+    // omega = 1): the fallback while a dynamic control is paced for sweeps.
+    void sweep() {
+        MgLevel &m = levels_[0];
+        sweep_xi_lines(system_, m.level, 1.0, m.work);
+        sweep_eta_lines(system_, m.level, 1.0, m.work);
+        relax_extra_unknowns(system_, m.level, 1.0);
+    }
+
     // (Re)builds the hierarchy when the problem's shape changed and attaches
     // the fine grid and the controls, which may have changed since last time.
     void prepare(const Problem &p) {
@@ -178,6 +228,11 @@ private:
     int coarsest_ = 0, pre_ = 1, post_ = 1, gamma_ = 1;
     double floor_ = 0.0;
     bool started_ = false;
+    bool sweeps_only_ = false;          // a guarded cycle failed: sweeps until reset()
+    long folded_ = -1;                  // folded cells of the grid the guarded cycles started from
+    double stall_best_ = std::numeric_limits<double>::infinity();
+    int stall_count_ = 0;
+    std::vector<double> saved_x_, saved_y_;
 };
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "operator/operator.hpp"
 #include "operator/system.hpp"
 #include "solvers/line_relax.hpp"
+#include "solvers/multigrid_ilu.hpp"
 
 namespace eg2d {
 
@@ -27,6 +28,7 @@ struct MgLevel {
     std::vector<Connectivity::Node> singular;  // boundary singularities (multigrid_local.hpp)
     Level level;                     // the operator's view of this level
     LineWork work;
+    IluWork ilu;
     std::size_t size() const { return static_cast<std::size_t>(conn.ni()) * conn.nj(); }
 };
 

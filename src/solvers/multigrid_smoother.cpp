@@ -20,12 +20,38 @@ constexpr double kSmootherOmega = 1.3;
 // (0, 2), in every cycle); radius 2 is nearly as good, 8 no better.
 constexpr int kLocalRadius = 4;
 constexpr int kLocalSweeps = 2;
+// A C-grid's trailing edge (the ends of the wake cut) gets a larger, longer
+// round on top: there the Winslow grid fans out from the airfoil's fine
+// spacing to the wake's (NACA0012 C-grid 1025x257: first wake cell 0.45
+// chord against 0.004 on the airfoil), and the error gathers in that fan.
+// Measured on bench naca0012-c 65..1025 (with the lines through the cut):
+// without it 6 cycles at 0.06-0.08 up to 513, then 12 at 0.24 at 1025;
+// radius 8 and 8 sweeps 5-7 cycles at 0.04-0.08; 4 sweeps 7 at 0.09 at
+// 1025, radius 4 or 2 sweeps worse. Cost: two 17x17 boxes per smoothing.
+constexpr int kTrailingEdgeRadius = 8;
+constexpr int kTrailingEdgeSweeps = 8;
+constexpr int kCoarseSweepCap = 50;
 }  // namespace
+
+// The smoother, per topology. A single block gets the alternating ILU sweeps
+// (multigrid_ilu.hpp). Measured, the worst W(2,1) per-cycle residual ratio
+// down to 1e-10 at 65^2..1025^2 (the monitor's residuals): swan 0.09-0.18
+// with the line smoother, 0.002-0.006 with ILU; dome 0.09-0.29 with lines,
+// 0.008-0.086 with ILU. An ILU sweep pair costs about twice a line sweep
+// pair (WU per cycle 17-22 -> 25-36); fewer cycles make up for it (swan
+// 1025^2: 5 cycles, 1.41 CPU s -> 2 cycles, 0.92 s). O- and C-grids keep the
+// line smoother: ILU leaves the couplings across the branch cut or the wake
+// cut out of its factors, and there it was worse (257^2: annulus 0.019 ->
+// 0.069, NACA0012 O-grid 0.035 -> 0.082 per cycle; the C-grid unchanged at 0.16).
+static bool single_block(const Connectivity &c) { return !c.periodic_i() && c.extra_unknowns().empty(); }
 
 void smooth(System system, MgLevel &m, int sweeps, bool reverse) {
     const double omega = kSmootherOmega;
     for (int s = 0; s < sweeps; ++s) {
-        if (!reverse) {
+        if (single_block(m.conn)) {
+            ilu_sweep(system, m.level, false, 1.0, m.ilu);
+            ilu_sweep(system, m.level, true, 1.0, m.ilu);
+        } else if (!reverse) {
             sweep_xi_lines(system, m.level, omega, m.work, LineOrder::Forward);
             sweep_eta_lines(system, m.level, omega, m.work, LineOrder::Zebra);
         } else {
@@ -35,6 +61,10 @@ void smooth(System system, MgLevel &m, int sweeps, bool reverse) {
         relax_extra_unknowns(system, m.level, 1.0);
     }
     if (sweeps > 0) relax_near(system, m.level, m.singular, kLocalRadius, kLocalSweeps);
+    if (sweeps > 0 && m.conn.wake() > 0) {
+        const int ni = m.conn.ni(), wake = m.conn.wake();
+        relax_near(system, m.level, {{wake, 0}, {ni - 1 - wake, 0}}, kTrailingEdgeRadius, kTrailingEdgeSweeps);
+    }
 }
 
 void compute_residual(System system, MgLevel &m) {
@@ -67,7 +97,12 @@ void coarse_solve(System system, MgLevel &m, double floor) {
     const double target = 1e-3 * best;
     std::copy(m.level.x, m.level.x + n, m.best_x.begin());
     std::copy(m.level.y, m.level.y + n, m.best_y.begin());
-    const int cap = 10 + 2 * std::max(m.conn.ni(), m.conn.nj());
+    // At most kCoarseSweepCap sweeps: a coarsest level is large only when the
+    // coarser ones were dropped (multigrid.cpp keep_coarse), and then an
+    // accurate solve there costs more than it brings (NACA0012 257x65 with
+    // the wall control, levels below 129x33 dropped: 268 sweeps per cycle,
+    // 2.1 s; capped at 50, 0.6 s for the same cycle count).
+    const int cap = std::min(kCoarseSweepCap, 10 + 2 * std::max(m.conn.ni(), m.conn.nj()));
     for (int s = 0; s < cap && best > target && best > floor; ++s) {
         smooth(system, m, 1, (s & 1) != 0);
         const double r = residual(system, m.level, 0.0).value;

@@ -43,6 +43,11 @@ public:
     virtual void reset() {}
     // The residual of the grid after each iteration, for solvers that adapt a setting to the convergence they see.
     virtual void observe(double /*residual*/) {}
+    // True if the next iteration brings the grid close to the solution for
+    // the current control fields (a multigrid cycle), false for a sweep.
+    // With a dynamic control the run then paces its updates for that
+    // (ControlPace) and tests convergence after each update.
+    virtual bool converges_each_iteration() const { return false; }
 };
 
 struct SolverInfo {

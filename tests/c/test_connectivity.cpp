@@ -43,10 +43,14 @@ int main() {
     f[3] = 5.0;
     c.sync(f.data());
     CHECK(f[11] == 3.0 && f[9] == 5.0 && f[12] == 0.0);
-    // Coarsening by 2 keeps the cut (wake 4 -> 2); by 3 it cannot.
+    // Coarsening by 2 keeps the cut (wake 4 -> 2); by 3 it ends at the last
+    // coarse column before the trailing edge (wake 4 -> 1: no cut unknowns).
     const Connectivity c2 = c.coarsened(2, 2);
     CHECK(c2.ni() == 7 && c2.nj() == 3 && c2.wake() == 2 && c2.extra_unknowns().size() == 1);
-    CHECK(c.coarsened(3, 2).wake() == 0);
+    CHECK(c.coarsened(3, 2).wake() == 1 && c.coarsened(3, 2).extra_unknowns().empty());
+    // An odd wake: the coarse cut stops one fine node short (wake 5 -> 2).
+    const Connectivity odd = Connectivity(ni, nj, Topology::C, 5).coarsened(2, 1);
+    CHECK(odd.ni() == 7 && odd.nj() == nj && odd.wake() == 2 && odd.extra_unknowns().size() == 1);
     // Other topologies have no cut.
     CHECK(Connectivity(ni, nj, Topology::Single, 4).wake() == 0);
     std::printf("%d passed, %d failed\n", passes, failures);

@@ -100,6 +100,41 @@ static void test_wall_naca0012(void **state) {
     check_o_wall("NACA0012", 65, 33, make_naca0012, 0.001, -1);
 }
 
+/* Multigrid with the wall control at the issue's stretched target: the
+ * NACA0012 O-grid of the benchmark (r = 10) with a first cell of 1e-5 chord
+ * (aspect ratios 1.6e3 at 129x33). Each cycle follows one control update
+ * (ControlPace): 39 cycles, where the line sweeps it fell back to before
+ * took 831 iterations; the first cell must be exact (to 0.1%), not merely
+ * the residual small. */
+static void test_wall_multigrid_stretched(void **state) {
+    const int ni = 129, nj = 33;
+    const double h = 1e-5;
+    double *x = alloc(ni * nj), *y = alloc(ni * nj), dev, hmin, hmax, folded;
+    eg2d_grid *g;
+    int it;
+    (void)state;
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    assert_int_equal(domain_set_airfoil_o(g, "0012", 10.0), EG2D_OK);
+    assert_int_equal(eg2d_set_solver(g, EG2D_SOLVER_MULTIGRID), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
+    assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
+    assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
+    assert_int_equal(eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &folded), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    measure_wall(x, y, ni, nj, EG2D_SIDE_JMIN, 1, 0, ni - 1, &dev, &hmin, &hmax);
+    print_message("NACA0012 %dx%d, multigrid, wall h = %g: %d cycles, first cell %.6g..%.6g, largest deviation "
+                  "from 90 deg %.2e deg\n", ni, nj, h, it, hmin, hmax, dev);
+    assert_true(folded == 0.0);
+    assert_true(it <= 80);
+    assert_true(fabs(hmin / h - 1.0) < 1e-3 && fabs(hmax / h - 1.0) < 1e-3);
+    assert_true(dev < 0.1);
+    eg2d_destroy(g);
+    free(x);
+    free(y);
+}
+
 /* Orthogonality only (height 0) on the annulus: the exact solution is
  * radial already, so the control must leave Winslow's grid as it is. */
 /* A warm start that already solves plain Winslow: the wall control set
@@ -286,6 +321,7 @@ int main(void) {
         cmocka_unit_test(test_wall_annulus),
         cmocka_unit_test(test_wall_on_a_converged_grid),
         cmocka_unit_test(test_wall_naca0012),
+        cmocka_unit_test(test_wall_multigrid_stretched),
         cmocka_unit_test(test_wall_height_zero_keeps_radial_grid),
         cmocka_unit_test(test_wall_on_corner_walls),
         cmocka_unit_test(test_middlecoff_thomas_zero_on_straight_uniform),

@@ -251,9 +251,17 @@ static void provoke_hostile_start(eg2d_grid *g) {
     free(y);
 }
 
+/* A line attraction 100 times seed 004's (mu = 1e4): its first-order terms
+ * swamp the central differences. Multigrid with the ILU smoother recovers
+ * from the hostile start (measured: 22 cycles), not from this. */
+static void provoke_strong_source(eg2d_grid *g) {
+    assert_int_equal(eg2d_add_line_source(g, EG2D_ETA, 16.0, 1e4, 0.2), EG2D_OK);
+}
+
 static void test_every_solver_divergence_restores_the_grid(void **state) {
-    void (*const provocations[])(eg2d_grid *) = {provoke_over_relaxation, provoke_hostile_start};
-    const char *const provocation_names[] = {"over-relaxation", "hostile start"};
+    void (*const provocations[])(eg2d_grid *) = {provoke_over_relaxation, provoke_hostile_start,
+                                                  provoke_strong_source};
+    const char *const provocation_names[] = {"over-relaxation", "hostile start", "strong source"};
     const int n = 33;
     int id;
     (void)state;
@@ -261,7 +269,7 @@ static void test_every_solver_divergence_restores_the_grid(void **state) {
         const char *name = eg2d_solver_name(id);
         int p, diverged = 0;
         if (!name) continue;
-        for (p = 0; p < 2 && !diverged; ++p) {
+        for (p = 0; p < 3 && !diverged; ++p) {
             snapshot s;
             eg2d_grid *g = make_case("swan", n, EG2D_SYSTEM_WINSLOW);
             double *x = alloc(n * n), *y = alloc(n * n), r;
@@ -300,6 +308,7 @@ static void test_every_solver_divergence_restores_the_grid(void **state) {
                 assert_int_equal(eg2d_set_monitor(g, NULL, NULL), EG2D_OK);
                 assert_int_equal(eg2d_set_relaxation(g, 0), EG2D_OK);
                 assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_AF_RELAXATION, 0), EG2D_OK);
+                assert_int_equal(eg2d_clear_sources(g), EG2D_OK);
                 assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
                 if (eg2d_solve(g) != EG2D_OK) fail_msg("%s after divergence: %s", name, eg2d_last_error(g));
                 assert_int_equal(eg2d_get_residual(g, &r), EG2D_OK);
