@@ -258,12 +258,14 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
  * A direction is halved while it has an odd node count (ni-1 even; on an
  * O-grid also ni-1 >= 16) above PARAM_MG_COARSEST; Winslow coarsens one
  * direction alone when the other cannot, Laplace only both together. Sizes
- * like 2^k+1 get the most levels; any size works (fewer levels). A coarse
+ * like 2^k+1 get the most levels; any size works (fewer levels; with none,
+ * an iteration is the pre + post smoothing sweeps). A coarse
  * level whose grid breaks down (non-finite) is dropped for the rest of the
  * run, with the levels below it. While a control is recomputed from the grid
- * between iterations (wall orthogonality), an iteration is one line
- * Gauss-Seidel sweep in each direction instead of a cycle: that control's
- * update assumes each iteration moves the grid a little. */
+ * between iterations (wall orthogonality), each cycle follows one update of
+ * it (see EG2D_ORTHO_WALL); a cycle that folds cells, or 20 without
+ * progress, make the rest of the run one line Gauss-Seidel sweep in each
+ * direction per iteration. */
 #define EG2D_PARAM_MG_CYCLE         110  /* 1 = V cycle, 2 = W cycle (default)             */
 #define EG2D_PARAM_MG_PRE_SMOOTH    111  /* [0, 20], default 2: smoothing sweeps (ILU in both
                                               orderings, or xi-lines then eta-lines) before the

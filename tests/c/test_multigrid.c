@@ -216,7 +216,9 @@ static void test_c_grid_cycles(void **state) {
  * coarsened; with an odd wake the trailing edge falls between coarse
  * columns (the coarse cut stops one node short of it; before, when the
  * coarse cut was held fixed: 46 cycles at 65x17, 94 at 129x33). Multigrid
- * reaches point SOR's grid in a few cycles. */
+ * reaches point SOR's grid in a few cycles. 66x18 does not coarsen at all
+ * (ni-1, nj-1 odd): there an iteration is its 3 smoothing sweeps, and it
+ * may take at most twice point SOR's sweeps. */
 static void test_c_grid_awkward_sizes(void **state) {
     const int cases[][3] = {{66, 17, 16}, {65, 17, 15}, {66, 18, 17}, {129, 33, 31}};
     int c;
@@ -242,7 +244,8 @@ static void test_c_grid_awkward_sizes(void **state) {
         print_message("naca0012-c %dx%d wake %d: psor %d sweeps, multigrid %d cycles, grids differ by %.2e\n", ni, nj,
                       cases[c][2], it[0], it[1], dist);
         assert_true(dist < 1e-9);
-        assert_true(it[1] <= 15);
+        if (ni == 66 && nj == 18) assert_true(3 * it[1] <= 2 * it[0]);
+        else assert_true(it[1] <= 15);
         for (k = 0; k < 2; ++k) {
             free(x[k]);
             free(y[k]);
