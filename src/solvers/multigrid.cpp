@@ -77,8 +77,9 @@ public:
                                 std::all_of(p.grid.y.begin(), p.grid.y.end(), [](double v) { return std::isfinite(v); });
             const long folded = finite ? fold_summary(p.grid).folded : folded_ + 1;
             if (folded > folded_) {
-                p.grid.x.swap(saved_x_);
-                p.grid.y.swap(saved_y_);
+                // Copied back, not swapped: level 0 points into the grid's own arrays.
+                std::copy(saved_x_.begin(), saved_x_.end(), p.grid.x.begin());
+                std::copy(saved_y_.begin(), saved_y_.end(), p.grid.y.begin());
                 sweeps_only_ = true;
                 sweep();
             }

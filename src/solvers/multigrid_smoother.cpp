@@ -40,7 +40,8 @@ constexpr int kCoarseSweepCap = 50;
 // 0.008-0.086 with ILU. An ILU sweep pair costs about twice a line sweep
 // pair (WU per cycle 17-22 -> 25-36); fewer cycles make up for it (swan
 // 1025^2: 5 cycles, 1.41 CPU s -> 2 cycles, 0.92 s). O- and C-grids keep the
-// line smoother: ILU leaves the couplings across the branch cut or the wake
+// line smoother (a coarse C-grid level whose cut coarsened away is a single
+// block and gets ILU): ILU leaves the couplings across the branch cut or the wake
 // cut out of its factors, and there it was worse (257^2: annulus 0.019 ->
 // 0.069, NACA0012 O-grid 0.035 -> 0.082 per cycle; the C-grid unchanged at 0.16).
 static bool single_block(const Connectivity &c) { return !c.periodic_i() && c.extra_unknowns().empty(); }

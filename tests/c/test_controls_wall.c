@@ -103,16 +103,13 @@ static void test_wall_naca0012(void **state) {
 /* Multigrid with the wall control at the issue's stretched target: the
  * NACA0012 O-grid of the benchmark (r = 10) with a first cell of 1e-5 chord
  * (aspect ratios 1.6e3 at 129x33). Each cycle follows one control update
- * (ControlPace): 39 cycles, where the line sweeps it fell back to before
+ * (ControlPace): 47 cycles, where the line sweeps it fell back to before
  * took 831 iterations; the first cell must be exact (to 0.1%), not merely
  * the residual small. */
-static void test_wall_multigrid_stretched(void **state) {
-    const int ni = 129, nj = 33;
-    const double h = 1e-5;
+static void wall_multigrid(int ni, int nj, double h, int max_iterations) {
     double *x = alloc(ni * nj), *y = alloc(ni * nj), dev, hmin, hmax, folded;
     eg2d_grid *g;
     int it;
-    (void)state;
     assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
     assert_int_equal(domain_set_airfoil_o(g, "0012", 10.0), EG2D_OK);
     assert_int_equal(eg2d_set_solver(g, EG2D_SOLVER_MULTIGRID), EG2D_OK);
@@ -124,15 +121,23 @@ static void test_wall_multigrid_stretched(void **state) {
     assert_int_equal(eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &folded), EG2D_OK);
     assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
     measure_wall(x, y, ni, nj, EG2D_SIDE_JMIN, 1, 0, ni - 1, &dev, &hmin, &hmax);
-    print_message("NACA0012 %dx%d, multigrid, wall h = %g: %d cycles, first cell %.6g..%.6g, largest deviation "
+    print_message("NACA0012 %dx%d, multigrid, wall h = %g: %d iterations, first cell %.6g..%.6g, largest deviation "
                   "from 90 deg %.2e deg\n", ni, nj, h, it, hmin, hmax, dev);
     assert_true(folded == 0.0);
-    assert_true(it <= 80);
+    assert_true(it <= max_iterations);
     assert_true(fabs(hmin / h - 1.0) < 1e-3 && fabs(hmax / h - 1.0) < 1e-3);
     assert_true(dev < 0.1);
     eg2d_destroy(g);
     free(x);
     free(y);
+}
+
+static void test_wall_multigrid_stretched(void **state) {
+    (void)state;
+    wall_multigrid(129, 33, 1e-5, 80);
+    /* At 1e-4 a cycle folds the trailing edge: it is undone and the run
+     * ends with line sweeps (187 iterations; LSOR alone: 235). */
+    wall_multigrid(65, 17, 1e-4, 300);
 }
 
 /* Orthogonality only (height 0) on the annulus: the exact solution is
