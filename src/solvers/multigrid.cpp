@@ -140,6 +140,7 @@ private:
             sj *= static_cast<std::size_t>(levels_[l].sj);
             levels_[l].singular = coarse_nodes(levels_[0].singular, static_cast<int>(si), static_cast<int>(sj));
         }
+        for (MgLevel &m : levels_) m.trailing_edge = cut_ends(m.conn);
         pre_ = static_cast<int>(p.settings.mg_pre_smooth);
         post_ = static_cast<int>(p.settings.mg_post_smooth);
         gamma_ = static_cast<int>(p.settings.mg_cycle);

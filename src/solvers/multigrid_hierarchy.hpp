@@ -25,7 +25,8 @@ struct MgLevel {
     std::vector<double> rx, ry;      // R = L(r) - f, for the restriction
     std::vector<double> best_x, best_y;  // coarsest level: the best iterate of its solve
     ControlFields controls;          // the finer fields injected and rescaled
-    std::vector<Connectivity::Node> singular;  // boundary singularities (multigrid_local.hpp)
+    std::vector<Connectivity::Node> singular;    // boundary singularities (multigrid_local.hpp)
+    std::vector<Connectivity::Node> trailing_edge;  // a C-grid's cut ends on this level
     Level level;                     // the operator's view of this level
     LineWork work;
     IluWork ilu;

@@ -16,7 +16,8 @@ void ilu_sweep(System system, const Level &L, bool mirror, double omega, IluWork
     const std::ptrdiff_t W = -di, E = di, S = -ni, N = ni;
     double *uc = w.uc.data(), *ue = w.ue.data(), *unw = w.unw.data(), *un = w.un.data(), *une = w.une.data();
     double *zx = w.zx.data(), *zy = w.zy.data();
-    // Off the O-grid's column 0 the neighbours are at fixed offsets.
+    // A single block (the only topology it is used on): every unknown's
+    // neighbours are at fixed offsets, so no Connectivity::stencil lookups.
     auto plain = [ni](std::ptrdiff_t k) {
         return Stencil{k, k + 1, k - 1, k + ni, k - ni, k + ni + 1, k + ni - 1, k - ni + 1, k - ni - 1};
     };
@@ -25,7 +26,7 @@ void ilu_sweep(System system, const Level &L, bool mirror, double omega, IluWork
         for (int i = ib; i != ie; i += di) {
             const std::ptrdiff_t k = i + std::ptrdiff_t(ni) * j;
             Metrics m;
-            const NodeEquation eq = node_equation(system, L, i == 0 ? conn.stencil(i, j) : plain(k), &m);
+            const NodeEquation eq = node_equation(system, L, plain(k), &m);
             // Physical coefficients (line_relax.hpp; Laplace: alpha = gamma =
             // 1, beta = C = 0), then named in the ordering. The factors follow
             // from A = L U on the pattern {sw, s, se, w | c, e, nw, n, ne}.
@@ -79,15 +80,12 @@ void ilu_sweep(System system, const Level &L, bool mirror, double omega, IluWork
             zy[k] = by * uc[k];
         }
     }
-    for (int j = j0; j < j1; ++j) {
+    for (int j = j0; j < j1; ++j)
         for (int i = i0; i < i1; ++i) {
             const std::ptrdiff_t k = i + std::ptrdiff_t(ni) * j;
             L.x[k] += omega * zx[k];
             L.y[k] += omega * zy[k];
         }
-        conn.sync_node(L.x, 0, j);
-        conn.sync_node(L.y, 0, j);
-    }
 }
 
 }  // namespace eg2d

@@ -34,10 +34,10 @@ struct IluWork {
     std::vector<double> uc, ue, unw, un, une, zx, zy;
 };
 
-// One ILU correction of the unknowns [i_begin, i_end) x [j_begin, j_end).
-// mirror = false: i ascending within j ascending; true: i descending.
-// Couplings to nodes off that rectangle (a periodic direction's wrap, a
-// C-grid's cut) are left out of the factors: they enter through R only.
+// One ILU correction of the unknowns [i_begin, i_end) x [j_begin, j_end) of a
+// single-block level (no periodic wrap, no cut: multigrid_smoother.cpp uses
+// it only there). mirror = false: i ascending within j ascending; true: i
+// descending.
 void ilu_sweep(System system, const Level &L, bool mirror, double omega, IluWork &w);
 
 }  // namespace eg2d

@@ -31,10 +31,7 @@ std::vector<Connectivity::Node> singular_nodes(const Connectivity &conn, const d
             }
         return nodes;
     }
-    if (conn.wake() > 0) {  // a C-grid's trailing edge: the ends of the wake cut, however the sides turn there
-        nodes.push_back({conn.wake(), 0});
-        nodes.push_back({ni - 1 - conn.wake(), 0});
-    }
+    nodes = cut_ends(conn);  // relaxed here too: measured, the two rounds together do best
     for (int j : {0, nj - 1}) {
         nodes.push_back({0, j});
         nodes.push_back({ni - 1, j});
@@ -45,6 +42,11 @@ std::vector<Connectivity::Node> singular_nodes(const Connectivity &conn, const d
         for (int j = 1; j < nj - 1; ++j)
             if (turn(x, y, at(i, j - 1), at(i, j), at(i, j + 1)) > kSingularTurn) nodes.push_back({i, j});
     return nodes;
+}
+
+std::vector<Connectivity::Node> cut_ends(const Connectivity &conn) {
+    if (conn.wake() <= 0) return {};
+    return {{conn.wake(), 0}, {conn.ni() - 1 - conn.wake(), 0}};
 }
 
 std::vector<Connectivity::Node> coarse_nodes(const std::vector<Connectivity::Node> &fine, int si, int sj) {

@@ -13,11 +13,16 @@
 namespace eg2d {
 
 // Boundary nodes of the fine grid where the solution is singular: the corners
-// of a single block, the two ends of a C-grid's wake cut (the trailing edge,
-// where each side of the cut turns only a little) and every boundary node
-// where the boundary turns by more than kSingularTurn (an O-grid airfoil's
-// trailing edge, a kink of a side).
+// of a single block, a C-grid's cut ends (cut_ends) and every boundary node where the boundary turns by more
+// than kSingularTurn (an O-grid airfoil's trailing edge, a kink of a side).
 std::vector<Connectivity::Node> singular_nodes(const Connectivity &conn, const double *x, const double *y);
+
+// A C-grid's trailing edge, where each side of the cut turns only a little:
+// the two ends of the level's own wake cut (none without a cut). On top of
+// the round every singular node gets, they get a longer one of their own
+// (multigrid_smoother.cpp): with either round alone C-grids took more cycles
+// (odd wakes: 10 and 12 instead of 9 and 11 at 65x17 and 129x33).
+std::vector<Connectivity::Node> cut_ends(const Connectivity &conn);
 
 // The same nodes on a level whose index spacing is (si, sj) fine cells.
 std::vector<Connectivity::Node> coarse_nodes(const std::vector<Connectivity::Node> &fine, int si, int sj);

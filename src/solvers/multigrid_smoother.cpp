@@ -61,10 +61,9 @@ void smooth(System system, MgLevel &m, int sweeps, bool reverse) {
         }
         relax_extra_unknowns(system, m.level, 1.0);
     }
-    if (sweeps > 0) relax_near(system, m.level, m.singular, kLocalRadius, kLocalSweeps);
-    if (sweeps > 0 && m.conn.wake() > 0) {
-        const int ni = m.conn.ni(), wake = m.conn.wake();
-        relax_near(system, m.level, {{wake, 0}, {ni - 1 - wake, 0}}, kTrailingEdgeRadius, kTrailingEdgeSweeps);
+    if (sweeps > 0) {
+        relax_near(system, m.level, m.singular, kLocalRadius, kLocalSweeps);
+        relax_near(system, m.level, m.trailing_edge, kTrailingEdgeRadius, kTrailingEdgeSweeps);
     }
 }
 
