@@ -23,6 +23,10 @@ enum class ControlKind { Other, Sources, Arrays, Orthogonality, ParameterGrid, W
 struct ControlPace {
     double relaxation = 1.0;  // times the under-relaxation of the update
     double step = 1.0;        // times the largest change per update
+    // Accelerate the updates (Anderson, anderson.hpp): only meaningful when
+    // the grid is converged for the last update, so that the control's
+    // fixed-point map is a function of the control alone.
+    bool accelerate = false;
 };
 
 class Control {

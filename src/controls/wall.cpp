@@ -19,14 +19,21 @@
 //
 // Robustness (as in GRAPE and Hilgenstock's updates): the coefficients are
 // under-relaxed (EG2D_PARAM_WALL_RELAXATION), the normal one is limited to
-// |psi| <= 1.5 (cells at most 7 times their neighbour, central differences
-// monotone), the tangential one to |phi| <= 1; the value found at the first
+// |psi| <= 3 and the tangential one to |phi| <= 1, both relative to the
+// wall-normal metric and widened up to 4x where the along-wall metric is
+// the larger (kPsiLimit, kPhiLimit, kWidenLimit); the value found at the first
 // interior row decays as exp(-a (m - 1)) at depth m (a = EG2D_PARAM_WALL_DECAY).
+// Against a multigrid cycle, which converges the grid for each state, the
+// updates are a fixed-point iteration of the control alone, whose factor is
+// about 1 - relaxation (0.7 per cycle): past the start-up ramp they are
+// Anderson-accelerated (anderson.hpp; NACA0012 r = 10 at 1e-5 chord: 29-35
+// cycles instead of 43-48).
 // Nothing uses the wall's curvature, so straight walls with corners (seed
 // 000's channels, where Middlecoff-Thomas degenerates) are no special case.
 #include <algorithm>
 #include <cmath>
 
+#include "controls/anderson.hpp"
 #include "controls/controls.hpp"
 #include "operator/operator.hpp"
 
@@ -39,6 +46,7 @@ constexpr double kWidenLimit = 4.0;
 constexpr double kMinGain = 1e-3;   // the smallest gain an oscillating node is damped to
 constexpr double kStepLimit = 0.02;  // largest change of a coefficient per update: a ramp from the start grid
 constexpr double kDecayCutoff = 1e-4;  // depths where exp(-a (m-1)) is below this get nothing
+constexpr int kCalmUpdates = 3;        // damped updates before Anderson acceleration (advance)
 
 bool j_side(int side) { return side == 0 || side == 2; }  // JMIN, JMAX: eta = const walls
 
@@ -93,8 +101,10 @@ public:
         decay_ = settings.wall_decay;
         const double omega = std::min(1.0, pace.relaxation * settings.wall_relaxation);
         const double step = pace.step * kStepLimit;
-        mismatch_ = 0.0;
         const double orient = orientation(g);
+        // Every node's target first, all from the state as it is (the other
+        // walls' current contributions count as "others" too).
+        std::vector<Node> nodes;
         for (int side = 0; side < 4; ++side) {
             if (!active(g, side)) {
                 phi_[side].clear();
@@ -104,41 +114,98 @@ public:
                 lastq_[side].clear();
                 continue;
             }
-            const int n = wall_length(g, side);
-            phi_[side].resize(static_cast<std::size_t>(n), 0.0);
-            psi_[side].resize(static_cast<std::size_t>(n), 0.0);
-            gain_[side].resize(static_cast<std::size_t>(n), 1.0);
-            lastp_[side].resize(static_cast<std::size_t>(n), 0.0);
-            lastq_[side].resize(static_cast<std::size_t>(n), 0.0);
-            // The other walls' current contributions count as "others" too.
+            const std::size_t n = static_cast<std::size_t>(wall_length(g, side));
+            phi_[side].resize(n, 0.0);
+            psi_[side].resize(n, 0.0);
+            gain_[side].resize(n, 1.0);
+            lastp_[side].resize(n, 0.0);
+            lastq_[side].resize(n, 0.0);
             ControlFields rest = others;
             for (int o = 0; o < 4; ++o)
                 if (o != side) add_side(g, o, rest);
             const double sign = (side == 0 || side == 1) ? orient : -orient;
-            for (int k = 0; k < n; ++k) {
-                double phi, psi, unit[4];
-                if (target(g, side, k, sign, rest, phi, psi, unit)) {
-                    double &p = phi_[side][k], &q = psi_[side][k], &gain = gain_[side][k];
-                    // A node whose update flips direction is overshooting (a
-                    // solver that converges much per iteration answers a change
-                    // at once): halve its gain; let it recover slowly otherwise.
-                    const double dp = phi - p, dq = psi - q;
-                    double &lp = lastp_[side][k], &lq = lastq_[side][k];
-                    const bool turned = dp * lp < 0.0 || dq * lq < 0.0;
-                    gain = turned ? std::max(0.5 * gain, kMinGain) : std::min(1.1 * gain, 1.0);
-                    lp = dp;
-                    lq = dq;
-                    p += std::clamp(gain * omega * dp, -step, step);
-                    q += std::clamp(gain * omega * dq, -step, step);
-                    const double gp = phi - p, gq = psi - q;
-                    mismatch_ = std::max({mismatch_, std::fabs(gp * unit[0] + gq * unit[2]),
-                                          std::fabs(gp * unit[1] + gq * unit[3])});
-                }
+            for (int k = 0; k < static_cast<int>(n); ++k) {
+                Node nd{side, k, 0.0, 0.0, {}};
+                if (target(g, side, k, sign, rest, nd.phi, nd.psi, nd.unit)) nodes.push_back(nd);
             }
         }
+        const double gap = mismatch(nodes);
+        // Acceleration starts once the ramp is over (kCalmUpdates damped
+        // updates in a row that no step limit cut and that shrank the gap)
+        // and stops, back to damped updates, if the gap grows past twice its
+        // best (an extrapolation that went wrong).
+        if (pace.accelerate && calm_ >= kCalmUpdates && gap < 2.0 * best_gap_) accelerated_update(nodes, omega, step);
+        else {
+            const bool clamped = damped_update(nodes, omega, step);
+            calm_ = (clamped || !(gap < last_gap_)) ? 0 : calm_ + 1;
+            best_gap_ = gap;
+        }
+        last_gap_ = gap;
+        best_gap_ = std::min(best_gap_, gap);
+        mismatch_ = mismatch(nodes);
     }
 
 private:
+    // A depth-1 node with its target coefficients.
+    struct Node {
+        int side, k;
+        double phi, psi;
+        double unit[4];
+    };
+
+    // Control::mismatch() of the state against the nodes' targets.
+    double mismatch(const std::vector<Node> &nodes) const {
+        double mm = 0.0;
+        for (const Node &nd : nodes) {
+            const double gp = nd.phi - phi_[nd.side][nd.k], gq = nd.psi - psi_[nd.side][nd.k];
+            mm = std::max({mm, std::fabs(gp * nd.unit[0] + gq * nd.unit[2]), std::fabs(gp * nd.unit[1] + gq * nd.unit[3])});
+        }
+        return mm;
+    }
+
+    // Against sweeps, and during the ramp: under-relaxed, each node's gain
+    // halved when its update turns (a solver that converges much per
+    // iteration answers a change at once) and recovering slowly otherwise.
+    // True if a step limit cut any change.
+    bool damped_update(const std::vector<Node> &nodes, double omega, double step) {
+        accel_.restart();
+        bool clamped = false;
+        for (const Node &nd : nodes) {
+            double &p = phi_[nd.side][nd.k], &q = psi_[nd.side][nd.k], &gain = gain_[nd.side][nd.k];
+            const double dp = nd.phi - p, dq = nd.psi - q;
+            double &lp = lastp_[nd.side][nd.k], &lq = lastq_[nd.side][nd.k];
+            const bool turned = dp * lp < 0.0 || dq * lq < 0.0;
+            gain = turned ? std::max(0.5 * gain, kMinGain) : std::min(1.1 * gain, 1.0);
+            lp = dp;
+            lq = dq;
+            clamped = clamped || std::fabs(gain * omega * dp) > step || std::fabs(gain * omega * dq) > step;
+            p += std::clamp(gain * omega * dp, -step, step);
+            q += std::clamp(gain * omega * dq, -step, step);
+        }
+        return clamped;
+    }
+
+    // Against cycles (the grid converged for the last state): Anderson
+    // acceleration of the fixed point "state = target(grid(state))", with
+    // the same ramp limit on each change.
+    void accelerated_update(const std::vector<Node> &nodes, double omega, double step) {
+        std::vector<double> x(2 * nodes.size()), f(2 * nodes.size());
+        for (std::size_t n = 0; n < nodes.size(); ++n) {
+            const Node &nd = nodes[n];
+            x[2 * n] = phi_[nd.side][nd.k];
+            x[2 * n + 1] = psi_[nd.side][nd.k];
+            f[2 * n] = nd.phi - x[2 * n];
+            f[2 * n + 1] = nd.psi - x[2 * n + 1];
+        }
+        const std::vector<double> next = accel_.next(x, f, omega);
+        for (std::size_t n = 0; n < nodes.size(); ++n) {
+            const Node &nd = nodes[n];
+            phi_[nd.side][nd.k] = x[2 * n] + std::clamp(next[2 * n] - x[2 * n], -step, step);
+            psi_[nd.side][nd.k] = x[2 * n + 1] + std::clamp(next[2 * n + 1] - x[2 * n + 1], -step, step);
+            lastp_[nd.side][nd.k] = lastq_[nd.side][nd.k] = 0.0;
+        }
+    }
+
     bool active(const Grid &g, int side) const {
         return height_[side] >= 0.0 && g.has_side(static_cast<Side>(side)) && depth_count(g, side) >= 3;
     }
@@ -270,6 +337,9 @@ private:
     std::array<std::vector<double>, 4> gain_, lastp_, lastq_;
     double decay_ = 0.0;
     double mismatch_ = 0.0;
+    Anderson accel_;
+    int calm_ = 0;
+    double last_gap_ = 1e300, best_gap_ = 1e300;
 };
 }  // namespace
 

@@ -183,13 +183,16 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
             // further per update, and convergence is tested after the update:
             // the residual after such an iteration says nothing about the
             // control, which would stop a run whose wall spacing is still
-            // far off. (Bench naca0012-wall, wall spacing 1e-5 chord,
-            // multigrid: 43-48 cycles from 65x17 to 1025x257 at this pace; at
-            // 1x it needed 92-135 and stalled at 129x33; bench/RESULTS.md. At
-            // milder spacings, 1e-3 and 1e-4, the cycles fold or stall on
-            // NACA0012 65x17 and 129x33 and the run goes on with sweeps.)
+            // far off. Once past its ramp the control accelerates its updates
+            // (Anderson, wall.cpp): with the grid converged for each state
+            // they are a fixed-point iteration of the control alone. (Bench
+            // naca0012-wall, wall spacing 1e-5 chord, multigrid: 29-35 cycles
+            // from 65x17 to 1025x257, 43-48 damped only; at 1x pace it needed
+            // 92-135 and stalled at 129x33; bench/RESULTS.md. At milder
+            // spacings, 1e-3 and 1e-4, cycles can fold or stall, and the run
+            // goes on with sweeps.)
             const bool cycles = solver_->converges_each_iteration();
-            controls_.advance(grid_, settings, cycles ? ControlPace{kCyclePaceRelaxation, kCyclePaceStep} : ControlPace{});
+            controls_.advance(grid_, settings, cycles ? ControlPace{kCyclePaceRelaxation, kCyclePaceStep, true} : ControlPace{});
             if (cycles) {
                 r = eg2d::residual(system_, problem.level(), extent).value;
                 if (stop_at_tolerance && r <= settings.tolerance && settled(extent, settings.tolerance))
