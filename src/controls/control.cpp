@@ -78,10 +78,14 @@ double ControlSet::mismatch() const {
 }
 
 const ControlFields &ControlSet::advance(const Grid &grid, const Settings &settings, const ControlPace &pace) {
+    const bool changed = unsettled_;
     unsettled_ = false;
     if (stale_) update(grid, true);
     for (const auto &c : controls_)
-        if (c->dynamic()) c->advance(grid, static_, settings, pace);
+        if (c->dynamic()) {
+            if (changed) c->forget_history();
+            c->advance(grid, static_, settings, pace);
+        }
     sum_dynamic(grid);
     return fields_;
 }

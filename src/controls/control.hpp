@@ -51,6 +51,11 @@ public:
     // the tolerance too: the residual alone cannot see a control that moves
     // slowly (an under-relaxed node that oscillated and was damped).
     virtual double mismatch() const { return 0.0; }
+    // Dynamic terms: the grid, boundary or controls changed since the last
+    // update (ControlSet::dynamic_pending). The state may stay as a warm
+    // start, but what was learnt from the old grid's updates (the wall
+    // control's acceleration history) must go.
+    virtual void forget_history() {}
 };
 
 // The controls of a grid and the fields they add up to.

@@ -47,6 +47,7 @@ constexpr double kMinGain = 1e-3;   // the smallest gain an oscillating node is 
 constexpr double kStepLimit = 0.02;  // largest change of a coefficient per update: a ramp from the start grid
 constexpr double kDecayCutoff = 1e-4;  // depths where exp(-a (m-1)) is below this get nothing
 constexpr int kCalmUpdates = 3;        // damped updates before Anderson acceleration (advance)
+constexpr double kNoGap = 1e300;       // the gap before any update
 
 bool j_side(int side) { return side == 0 || side == 2; }  // JMIN, JMAX: eta = const walls
 
@@ -95,6 +96,11 @@ public:
         for (int side = 0; side < 4; ++side) add_side(g, side, fields);
     }
     double mismatch() const override { return mismatch_; }
+    void forget_history() override {
+        accel_.restart();
+        calm_ = 0;
+        last_gap_ = best_gap_ = kNoGap;
+    }
 
     void advance(const Grid &g, const ControlFields &others, const Settings &settings,
                  const ControlPace &pace) override {
@@ -339,7 +345,7 @@ private:
     double mismatch_ = 0.0;
     Anderson accel_;
     int calm_ = 0;
-    double last_gap_ = 1e300, best_gap_ = 1e300;
+    double last_gap_ = kNoGap, best_gap_ = kNoGap;
 };
 }  // namespace
 

@@ -3,7 +3,8 @@
 // Phi (a_xi) on the annulus O-grid, each solver converges to the same grid as
 // PSOR, and that grid is not the uncontrolled one. The control terms are put
 // in through the core (no public control API exists yet), the rest through
-// the C API.
+// the C API. Also: ControlSet makes a dynamic term forget what it learnt from
+// earlier updates when the grid, boundary or controls change.
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -58,9 +59,43 @@ std::vector<double> solve(int solver, bool controls, double *first_gap) {
     return status == EG2D_OK ? xy : std::vector<double>();
 }
 
+// A dynamic term that counts the calls the run makes on it.
+class ProbeControl final : public eg2d::Control {
+public:
+    explicit ProbeControl(int *forgets) : forgets_(forgets) {}
+    std::unique_ptr<eg2d::Control> clone() const override { return std::make_unique<ProbeControl>(*this); }
+    void add_to(const eg2d::Grid &, eg2d::ControlFields &) const override {}
+    bool dynamic() const override { return true; }
+    void forget_history() override { ++*forgets_; }
+
+private:
+    int *forgets_;
+};
+
+// ControlSet tells a dynamic term to forget what it learnt from earlier
+// updates exactly when the grid, boundary or controls changed in between
+// (the wall control's Anderson history belongs to the old grid), and not on
+// every update (it would never accelerate).
+void forgets_history_on_change() {
+    int forgets = 0;
+    eg2d::Grid grid(9, 5);
+    eg2d::Settings settings;
+    eg2d::ControlSet set;
+    set.add(std::make_unique<ProbeControl>(&forgets));
+    set.advance(grid, settings, eg2d::ControlPace{});
+    check(forgets == 1, "control history: forgotten at the first update");
+    set.advance(grid, settings, eg2d::ControlPace{});
+    set.advance(grid, settings, eg2d::ControlPace{});
+    check(forgets == 1, "control history: kept between updates of one grid");
+    set.invalidate();
+    set.advance(grid, settings, eg2d::ControlPace{});
+    check(forgets == 2, "control history: forgotten after a change (invalidate)");
+}
+
 }  // namespace
 
 int main() {
+    forgets_history_on_change();
     double gap_plain = 0, gap_ref = 0;
     const std::vector<double> plain = solve(EG2D_SOLVER_PSOR, false, &gap_plain);
     const std::vector<double> ref = solve(EG2D_SOLVER_PSOR, true, &gap_ref);
