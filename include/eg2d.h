@@ -672,7 +672,11 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   chord the cycles run to the end (29-35 cycles, 65x17..1025x257); at
  *   1e-4 and 1e-3 they may fold or stall and the run ends with sweeps.
  *   A run converges only when the control is settled too (its remaining
- *   change within the tolerance).
+ *   change within the tolerance). The control starts over from zero after
+ *   any change of the start grid (eg2d_initialize, eg2d_set_coordinates),
+ *   the boundary, the topology or the controls: its coefficients belong to
+ *   the grid they were found on (even a converged grid set back as the
+ *   start takes the ramp again, about 30 cycles at 1e-5 chord).
  * NONE removes either. */
 #define EG2D_ORTHO_NONE              0
 #define EG2D_ORTHO_MIDDLECOFF_THOMAS 1

@@ -83,7 +83,7 @@ const ControlFields &ControlSet::advance(const Grid &grid, const Settings &setti
     if (stale_) update(grid, true);
     for (const auto &c : controls_)
         if (c->dynamic()) {
-            if (changed) c->forget_history();
+            if (changed) c->restart();
             c->advance(grid, static_, settings, pace);
         }
     sum_dynamic(grid);

@@ -96,10 +96,13 @@ public:
         for (int side = 0; side < 4; ++side) add_side(g, side, fields);
     }
     double mismatch() const override { return mismatch_; }
-    void forget_history() override {
+    void restart() override {
+        for (int side = 0; side < 4; ++side)
+            for (auto *v : {&phi_, &psi_, &gain_, &lastp_, &lastq_}) (*v)[side].clear();
         accel_.restart();
         calm_ = 0;
         last_gap_ = best_gap_ = kNoGap;
+        mismatch_ = 0.0;
     }
 
     void advance(const Grid &g, const ControlFields &others, const Settings &settings,
@@ -108,16 +111,9 @@ public:
         const double omega = std::min(1.0, pace.relaxation * settings.wall_relaxation);
         const double step = pace.step * kStepLimit;
         const double orient = orientation(g);
-        // Every node's target first, all from the state as it is (the other
-        // walls' current contributions count as "others" too).
-        std::vector<Node> nodes;
         for (int side = 0; side < 4; ++side) {
             if (!active(g, side)) {
-                phi_[side].clear();
-                psi_[side].clear();
-                gain_[side].clear();
-                lastp_[side].clear();
-                lastq_[side].clear();
+                for (auto *v : {&phi_, &psi_, &gain_, &lastp_, &lastq_}) (*v)[side].clear();
                 continue;
             }
             const std::size_t n = static_cast<std::size_t>(wall_length(g, side));
@@ -126,23 +122,29 @@ public:
             gain_[side].resize(n, 1.0);
             lastp_[side].resize(n, 0.0);
             lastq_[side].resize(n, 0.0);
-            ControlFields rest = others;
-            for (int o = 0; o < 4; ++o)
-                if (o != side) add_side(g, o, rest);
-            const double sign = (side == 0 || side == 1) ? orient : -orient;
-            for (int k = 0; k < static_cast<int>(n); ++k) {
-                Node nd{side, k, 0.0, 0.0, {}};
-                if (target(g, side, k, sign, rest, nd.phi, nd.psi, nd.unit)) nodes.push_back(nd);
-            }
         }
+        std::vector<Node> nodes;
+        if (!pace.accelerate) {
+            damped_update(g, others, orient, omega, step, nodes);
+            accel_.restart();
+            calm_ = 0;
+            mismatch_ = mismatch(nodes);
+            return;
+        }
+        // Every node's target from the state as it is, for the gap and the
+        // accelerated step (a fixed point of all walls at once).
+        for (int side = 0; side < 4; ++side) add_targets(g, others, orient, side, nodes);
         const double gap = mismatch(nodes);
         // Acceleration starts once the ramp is over (kCalmUpdates damped
         // updates in a row that no step limit cut and that shrank the gap)
         // and stops, back to damped updates, if the gap grows past twice its
         // best (an extrapolation that went wrong).
-        if (pace.accelerate && calm_ >= kCalmUpdates && gap < 2.0 * best_gap_) accelerated_update(nodes, omega, step);
-        else {
-            const bool clamped = damped_update(nodes, omega, step);
+        if (calm_ >= kCalmUpdates && gap < 2.0 * best_gap_) {
+            accelerated_update(nodes, omega, step);
+        } else {
+            nodes.clear();
+            const bool clamped = damped_update(g, others, orient, omega, step, nodes);
+            accel_.restart();
             calm_ = (clamped || !(gap < last_gap_)) ? 0 : calm_ + 1;
             best_gap_ = gap;
         }
@@ -173,22 +175,43 @@ private:
     // halved when its update turns (a solver that converges much per
     // iteration answers a change at once) and recovering slowly otherwise.
     // True if a step limit cut any change.
-    bool damped_update(const std::vector<Node> &nodes, double omega, double step) {
-        accel_.restart();
+    bool damped_update(const Grid &g, const ControlFields &others, double orient, double omega, double step,
+                       std::vector<Node> &nodes) {
         bool clamped = false;
-        for (const Node &nd : nodes) {
-            double &p = phi_[nd.side][nd.k], &q = psi_[nd.side][nd.k], &gain = gain_[nd.side][nd.k];
-            const double dp = nd.phi - p, dq = nd.psi - q;
-            double &lp = lastp_[nd.side][nd.k], &lq = lastq_[nd.side][nd.k];
-            const bool turned = dp * lp < 0.0 || dq * lq < 0.0;
-            gain = turned ? std::max(0.5 * gain, kMinGain) : std::min(1.1 * gain, 1.0);
-            lp = dp;
-            lq = dq;
-            clamped = clamped || std::fabs(gain * omega * dp) > step || std::fabs(gain * omega * dq) > step;
-            p += std::clamp(gain * omega * dp, -step, step);
-            q += std::clamp(gain * omega * dq, -step, step);
+        for (int side = 0; side < 4; ++side) {
+            // Wall by wall: a wall's targets see the walls updated before it.
+            const std::size_t first = nodes.size();
+            add_targets(g, others, orient, side, nodes);
+            for (std::size_t m = first; m < nodes.size(); ++m) {
+                const Node &nd = nodes[m];
+                double &p = phi_[nd.side][nd.k], &q = psi_[nd.side][nd.k], &gain = gain_[nd.side][nd.k];
+                const double dp = nd.phi - p, dq = nd.psi - q;
+                double &lp = lastp_[nd.side][nd.k], &lq = lastq_[nd.side][nd.k];
+                const bool turned = dp * lp < 0.0 || dq * lq < 0.0;
+                gain = turned ? std::max(0.5 * gain, kMinGain) : std::min(1.1 * gain, 1.0);
+                lp = dp;
+                lq = dq;
+                clamped = clamped || std::fabs(gain * omega * dp) > step || std::fabs(gain * omega * dq) > step;
+                p += std::clamp(gain * omega * dp, -step, step);
+                q += std::clamp(gain * omega * dq, -step, step);
+            }
         }
         return clamped;
+    }
+
+    // The targets of one wall's nodes, from the state as it is (the other
+    // walls' current contributions count as "others" too).
+    void add_targets(const Grid &g, const ControlFields &others, double orient, int side, std::vector<Node> &nodes) const {
+        if (!active(g, side)) return;
+        ControlFields rest = others;
+        for (int o = 0; o < 4; ++o)
+            if (o != side) add_side(g, o, rest);
+        const double sign = (side == 0 || side == 1) ? orient : -orient;
+        const int n = wall_length(g, side);
+        for (int k = 0; k < n; ++k) {
+            Node nd{side, k, 0.0, 0.0, {}};
+            if (target(g, side, k, sign, rest, nd.phi, nd.psi, nd.unit)) nodes.push_back(nd);
+        }
     }
 
     // Against cycles (the grid converged for the last state): Anderson

@@ -150,6 +150,46 @@ static void test_wall_multigrid_stretched(void **state) {
     wall_multigrid(129, 33, 3e-3, 1500, 0.1);
 }
 
+/* A new start or a new boundary after a converged wall run: the control
+ * starts over. Kept, its converged coefficients applied to the TFI start (or
+ * to a far field of radius 15) folded 8 cells and did not converge in 100000
+ * iterations (NACA0012 65x17, first cell 1e-5); a fresh handle needs 32. */
+static void solve_wall_o(eg2d_grid *g, int ni, int nj, double h, const char *what) {
+    double *x = alloc(ni * nj), *y = alloc(ni * nj), dev, hmin, hmax, folded;
+    int it;
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
+    assert_int_equal(eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &folded), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    measure_wall(x, y, ni, nj, EG2D_SIDE_JMIN, 1, 0, ni - 1, &dev, &hmin, &hmax);
+    print_message("NACA0012 %dx%d, wall h = %g, %s: %d iterations, first cell %.6g..%.6g\n", ni, nj, h, what, it,
+                  hmin, hmax);
+    assert_true(folded == 0.0);
+    assert_true(it <= 60);
+    assert_true(fabs(hmin / h - 1.0) < 1e-3 && fabs(hmax / h - 1.0) < 1e-3);
+    free(x);
+    free(y);
+}
+
+static void test_wall_restarts_on_new_start(void **state) {
+    const int ni = 65, nj = 17;
+    const double h = 1e-5;
+    eg2d_grid *g;
+    (void)state;
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    assert_int_equal(domain_set_airfoil_o(g, "0012", 10.0), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MAX_ITERATIONS, 500), EG2D_OK);
+    assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
+    assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h), EG2D_OK);
+    solve_wall_o(g, ni, nj, h, "first solve");
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
+    solve_wall_o(g, ni, nj, h, "again from TFI");
+    assert_int_equal(domain_set_airfoil_o(g, "0012", 15.0), EG2D_OK);
+    solve_wall_o(g, ni, nj, h, "far field r = 15");
+    eg2d_destroy(g);
+}
+
 /* Orthogonality only (height 0) on the annulus: the exact solution is
  * radial already, so the control must leave Winslow's grid as it is. */
 /* A warm start that already solves plain Winslow: the wall control set
@@ -337,6 +377,7 @@ int main(void) {
         cmocka_unit_test(test_wall_on_a_converged_grid),
         cmocka_unit_test(test_wall_naca0012),
         cmocka_unit_test(test_wall_multigrid_stretched),
+        cmocka_unit_test(test_wall_restarts_on_new_start),
         cmocka_unit_test(test_wall_height_zero_keeps_radial_grid),
         cmocka_unit_test(test_wall_on_corner_walls),
         cmocka_unit_test(test_middlecoff_thomas_zero_on_straight_uniform),

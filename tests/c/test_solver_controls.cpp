@@ -3,8 +3,8 @@
 // Phi (a_xi) on the annulus O-grid, each solver converges to the same grid as
 // PSOR, and that grid is not the uncontrolled one. The control terms are put
 // in through the core (no public control API exists yet), the rest through
-// the C API. Also: ControlSet makes a dynamic term forget what it learnt from
-// earlier updates when the grid, boundary or controls change.
+// the C API. Also: ControlSet restarts a dynamic term when the grid,
+// boundary or controls change.
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -62,40 +62,40 @@ std::vector<double> solve(int solver, bool controls, double *first_gap) {
 // A dynamic term that counts the calls the run makes on it.
 class ProbeControl final : public eg2d::Control {
 public:
-    explicit ProbeControl(int *forgets) : forgets_(forgets) {}
+    explicit ProbeControl(int *restarts) : restarts_(restarts) {}
     std::unique_ptr<eg2d::Control> clone() const override { return std::make_unique<ProbeControl>(*this); }
     void add_to(const eg2d::Grid &, eg2d::ControlFields &) const override {}
     bool dynamic() const override { return true; }
-    void forget_history() override { ++*forgets_; }
+    void restart() override { ++*restarts_; }
 
 private:
-    int *forgets_;
+    int *restarts_;
 };
 
-// ControlSet tells a dynamic term to forget what it learnt from earlier
-// updates exactly when the grid, boundary or controls changed in between
-// (the wall control's Anderson history belongs to the old grid), and not on
-// every update (it would never accelerate).
-void forgets_history_on_change() {
-    int forgets = 0;
+// ControlSet restarts a dynamic term exactly when the grid, boundary or
+// controls changed since its last update (its state belongs to the old
+// grid), and not between updates of one grid (each eg2d_iterate call is a
+// run: the state must carry over).
+void restarts_on_change() {
+    int restarts = 0;
     eg2d::Grid grid(9, 5);
     eg2d::Settings settings;
     eg2d::ControlSet set;
-    set.add(std::make_unique<ProbeControl>(&forgets));
+    set.add(std::make_unique<ProbeControl>(&restarts));
     set.advance(grid, settings, eg2d::ControlPace{});
-    check(forgets == 1, "control history: forgotten at the first update");
+    check(restarts == 1, "dynamic control: restarted at its first update");
     set.advance(grid, settings, eg2d::ControlPace{});
     set.advance(grid, settings, eg2d::ControlPace{});
-    check(forgets == 1, "control history: kept between updates of one grid");
+    check(restarts == 1, "dynamic control: kept between updates of one grid");
     set.invalidate();
     set.advance(grid, settings, eg2d::ControlPace{});
-    check(forgets == 2, "control history: forgotten after a change (invalidate)");
+    check(restarts == 2, "dynamic control: restarted after a change (invalidate)");
 }
 
 }  // namespace
 
 int main() {
-    forgets_history_on_change();
+    restarts_on_change();
     double gap_plain = 0, gap_ref = 0;
     const std::vector<double> plain = solve(EG2D_SOLVER_PSOR, false, &gap_plain);
     const std::vector<double> ref = solve(EG2D_SOLVER_PSOR, true, &gap_ref);
