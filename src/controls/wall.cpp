@@ -159,6 +159,7 @@ private:
         int side, k;
         double phi, psi;
         double unit[4];
+        double widen;  // the node's limits are kPhiLimit, kPsiLimit times this
     };
 
     // Control::mismatch() of the state against the nodes' targets.
@@ -209,8 +210,8 @@ private:
         const double sign = (side == 0 || side == 1) ? orient : -orient;
         const int n = wall_length(g, side);
         for (int k = 0; k < n; ++k) {
-            Node nd{side, k, 0.0, 0.0, {}};
-            if (target(g, side, k, sign, rest, nd.phi, nd.psi, nd.unit)) nodes.push_back(nd);
+            Node nd{side, k, 0.0, 0.0, {}, 1.0};
+            if (target(g, side, k, sign, rest, nd.phi, nd.psi, nd.unit, nd.widen)) nodes.push_back(nd);
         }
     }
 
@@ -229,8 +230,11 @@ private:
         const std::vector<double> next = accel_.next(x, f, omega);
         for (std::size_t n = 0; n < nodes.size(); ++n) {
             const Node &nd = nodes[n];
-            phi_[nd.side][nd.k] = x[2 * n] + std::clamp(next[2 * n] - x[2 * n], -step, step);
-            psi_[nd.side][nd.k] = x[2 * n + 1] + std::clamp(next[2 * n + 1] - x[2 * n + 1], -step, step);
+            // The ramp limit on the change, and the targets' limits on the
+            // value (a combination of past states can leave them).
+            const double lp = kPhiLimit * nd.widen, lq = kPsiLimit * nd.widen;
+            phi_[nd.side][nd.k] = std::clamp(x[2 * n] + std::clamp(next[2 * n] - x[2 * n], -step, step), -lp, lp);
+            psi_[nd.side][nd.k] = std::clamp(x[2 * n + 1] + std::clamp(next[2 * n + 1] - x[2 * n + 1], -step, step), -lq, lq);
             lastp_[nd.side][nd.k] = lastq_[nd.side][nd.k] = 0.0;
         }
     }
@@ -257,7 +261,7 @@ private:
     // unit: the change of (R_x, R_y)/diag per unit of phi (unit[0..1]) and of
     // psi (unit[2..3]) at that node, for mismatch().
     bool target(const Grid &g, int side, int k, double sign, const ControlFields &rest, double &phi,
-                double &psi, double unit[4]) const {
+                double &psi, double unit[4], double &widen_out) const {
         if (k < k_begin(g, side) || k >= k_end(g, side)) return false;
         const Connectivity &conn = g.connectivity();
         const int n = wall_length(g, side);
@@ -324,6 +328,7 @@ private:
         const double widen = std::min((m.alpha + m.gamma) / scale, kWidenLimit);
         phi = std::clamp(phi, -kPhiLimit * widen, kPhiLimit * widen);
         psi = std::clamp(psi, -kPsiLimit * widen, kPsiLimit * widen);
+        widen_out = widen;
         if (height_[side] == 0.0) psi = 0.0;  // the normal position is left to the equation
         if (!std::isfinite(phi) || !std::isfinite(psi)) return false;
         const double w = scale / (2.0 * (m.alpha + m.gamma));
