@@ -667,8 +667,8 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   With EG2D_SOLVER_MULTIGRID each cycle follows one update, taken 3x
  *   (relaxation) and 5x (step) larger than for the sweeping solvers and,
  *   once the start-up ramp is over, Anderson-accelerated; a cycle that
- *   folds cells, or 20 cycles without progress, hand the run over to line
- *   sweeps. Measured on NACA0012 O-grids (r = 10): at a first cell of 1e-5
+ *   folds cells, or 20 cycles in which neither the residual nor the
+ *   control's remaining change halves, hand the run over to line sweeps. Measured on NACA0012 O-grids (r = 10): at a first cell of 1e-5
  *   chord the cycles run to the end (29-35 cycles, 65x17..1025x257); at
  *   1e-4 and 1e-3 they may fold or stall and the run ends with sweeps.
  *   A run converges only when the control is settled too (its remaining

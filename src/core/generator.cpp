@@ -220,7 +220,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
         }
         ++iterations_;
         r = ri.value;
-        solver_->observe(r);
+        solver_->observe(r, controls_.has_dynamic() ? controls_.mismatch() / extent : 0.0);
         best = std::min(best, r);
         if (monitor && monitor(iterations_, r))
             fail(Failure::Interrupted,

@@ -86,7 +86,7 @@ double af_relaxation(const Settings &st) { return st.af_relaxation > 0.0 ? st.af
 
 class ApproximateFactorisation final : public Solver {
 public:
-    void observe(double residual) override {
+    void observe(double residual, double /*control_gap*/) override {
         if (!(residual == residual)) return;  // NaN: the run loop handles divergence
         if (residual > kRiseFactor * best_) {
             top_ /= kTopShrink;

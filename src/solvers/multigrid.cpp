@@ -96,11 +96,16 @@ public:
     bool converges_each_iteration() const override { return !sweeps_only_; }
     // Guarded cycles that stop making progress (the best residual not halved
     // in kStallCycles cycles: seed 000's channel 2 with its sources stalled
-    // at 9e-4) also hand over to sweeps.
-    void observe(double residual) override {
+    // at 9e-4) also hand over to sweeps. Progress is the larger of residual
+    // and control gap going down: while the wall control ramps, the residual
+    // alone stalls, and counting it handed the annulus (1e-4 wall) to sweeps
+    // just as the control's acceleration began (65x33: 150 iterations, 30
+    // when the gap counts).
+    void observe(double residual, double control_gap) override {
         if (sweeps_only_ || folded_ < 0) return;
-        if (residual < 0.5 * stall_best_) {
-            stall_best_ = residual;
+        const double progress = std::max(residual, control_gap);
+        if (progress < 0.5 * stall_best_) {
+            stall_best_ = progress;
             stall_count_ = 0;
         } else if (++stall_count_ >= kStallCycles) {
             sweeps_only_ = true;

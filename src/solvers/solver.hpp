@@ -41,8 +41,11 @@ public:
     // Called when the problem changed shape (topology, size, a new start):
     // drop any cached hierarchy or time-step cycle.
     virtual void reset() {}
-    // The residual of the grid after each iteration, for solvers that adapt a setting to the convergence they see.
-    virtual void observe(double /*residual*/) {}
+    // The residual of the grid after each iteration, for solvers that adapt a
+    // setting to the convergence they see; control_gap is the dynamic
+    // controls' remaining change (Control::mismatch / L, 0 without), which
+    // must reach the tolerance too.
+    virtual void observe(double /*residual*/, double /*control_gap*/) {}
     // True if the next iteration brings the grid close to the solution for
     // the current control fields (a multigrid cycle), false for a sweep.
     // With a dynamic control the run then paces its updates for that

@@ -190,6 +190,36 @@ static void test_wall_restarts_on_new_start(void **state) {
     eg2d_destroy(g);
 }
 
+/* The annulus 1..3 (65x33) with a first cell of 1e-4 at the inner wall:
+ * the cycles run to the end, 30 of them. Before the stall rule of multigrid
+ * counted the control's progress, 20 cycles of the control's ramp without
+ * the residual halving handed the run to line sweeps: 150 iterations (171
+ * before the control's updates were accelerated). */
+static void test_wall_annulus_multigrid_cycles(void **state) {
+    const int ni = 65, nj = 33;
+    const double h = 1e-4;
+    double *x = alloc(ni * nj), *y = alloc(ni * nj), dev, hmin, hmax;
+    eg2d_grid *g;
+    int it;
+    (void)state;
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    assert_int_equal(domain_set_annulus(g, 1.0, 3.0), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
+    assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
+    assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    measure_wall(x, y, ni, nj, EG2D_SIDE_JMIN, 1, 0, ni - 1, &dev, &hmin, &hmax);
+    print_message("annulus %dx%d, multigrid, wall h = %g: %d iterations, first cell %.6g..%.6g\n", ni, nj, h, it,
+                  hmin, hmax);
+    assert_true(it <= 50);
+    assert_true(fabs(hmin / h - 1.0) < 1e-3 && fabs(hmax / h - 1.0) < 1e-3);
+    eg2d_destroy(g);
+    free(x);
+    free(y);
+}
+
 /* Orthogonality only (height 0) on the annulus: the exact solution is
  * radial already, so the control must leave Winslow's grid as it is. */
 /* A warm start that already solves plain Winslow: the wall control set
@@ -378,6 +408,7 @@ int main(void) {
         cmocka_unit_test(test_wall_naca0012),
         cmocka_unit_test(test_wall_multigrid_stretched),
         cmocka_unit_test(test_wall_restarts_on_new_start),
+        cmocka_unit_test(test_wall_annulus_multigrid_cycles),
         cmocka_unit_test(test_wall_height_zero_keeps_radial_grid),
         cmocka_unit_test(test_wall_on_corner_walls),
         cmocka_unit_test(test_middlecoff_thomas_zero_on_straight_uniform),
