@@ -146,7 +146,8 @@ static void test_wall_multigrid_stretched(void **state) {
     /* At 3e-3: 792 iterations. Before the control's updates were
      * Anderson-accelerated the control did not settle in 100000 (residual
      * 1e-11, remaining change 3.4e-8). The trailing-edge node ends 6.6%
-     * below the height (found here, not investigated). */
+     * below the height: its normal coefficient would need 6.05 and is held
+     * at its limit, 5.9 (eg2d.h, EG2D_ORTHO_WALL). */
     wall_multigrid(129, 33, 3e-3, 1500, 0.1);
 }
 
