@@ -97,8 +97,7 @@ public:
     }
     double mismatch() const override { return mismatch_; }
     void restart() override {
-        for (int side = 0; side < 4; ++side)
-            for (auto *v : {&phi_, &psi_, &gain_, &lastp_, &lastq_}) (*v)[side].clear();
+        for (int side = 0; side < 4; ++side) clear_side(side);
         accel_.restart();
         calm_ = 0;
         last_gap_ = best_gap_ = kNoGap;
@@ -113,7 +112,7 @@ public:
         const double orient = orientation(g);
         for (int side = 0; side < 4; ++side) {
             if (!active(g, side)) {
-                for (auto *v : {&phi_, &psi_, &gain_, &lastp_, &lastq_}) (*v)[side].clear();
+                clear_side(side);
                 continue;
             }
             const std::size_t n = static_cast<std::size_t>(wall_length(g, side));
@@ -124,32 +123,28 @@ public:
             lastq_[side].resize(n, 0.0);
         }
         std::vector<Node> nodes;
-        if (!pace.accelerate) {
-            damped_update(g, others, orient, omega, step, nodes);
-            accel_.restart();
-            calm_ = 0;
-            mismatch_ = mismatch(nodes);
-            return;
-        }
-        // Every node's target from the state as it is, for the gap and the
-        // accelerated step (a fixed point of all walls at once).
-        for (int side = 0; side < 4; ++side) add_targets(g, others, orient, side, nodes);
-        const double gap = mismatch(nodes);
-        // Acceleration starts once the ramp is over (kCalmUpdates damped
-        // updates in a row that no step limit cut and that shrank the gap)
-        // and stops, back to damped updates, if the gap grows past twice its
-        // best (an extrapolation that went wrong).
-        if (calm_ >= kCalmUpdates && gap < 2.0 * best_gap_) {
-            accelerated_update(nodes, omega, step);
-        } else {
+        // Acceleration once the ramp is over (kCalmUpdates damped updates in
+        // a row that no step limit cut and that shrank the gap), from every
+        // node's target at the state as it is (a fixed point of all walls at
+        // once); back to damped updates if the gap grows past twice its best
+        // (an extrapolation that went wrong).
+        if (pace.accelerate && calm_ >= kCalmUpdates) {
+            for (int side = 0; side < 4; ++side) add_targets(g, others, orient, side, nodes);
+            const double gap = mismatch(nodes);
+            if (gap < 2.0 * best_gap_) {
+                accelerated_update(nodes, omega, step);
+                last_gap_ = gap;
+                best_gap_ = std::min(best_gap_, gap);
+                mismatch_ = mismatch(nodes);
+                return;
+            }
             nodes.clear();
-            const bool clamped = damped_update(g, others, orient, omega, step, nodes);
-            accel_.restart();
-            calm_ = (clamped || !(gap < last_gap_)) ? 0 : calm_ + 1;
-            best_gap_ = gap;
         }
-        last_gap_ = gap;
-        best_gap_ = std::min(best_gap_, gap);
+        double gap = 0.0;
+        const bool clamped = damped_update(g, others, orient, omega, step, nodes, gap);
+        accel_.restart();
+        calm_ = (pace.accelerate && !clamped && gap < last_gap_) ? calm_ + 1 : 0;
+        last_gap_ = best_gap_ = gap;
         mismatch_ = mismatch(nodes);
     }
 
@@ -162,22 +157,24 @@ private:
         double widen;  // the node's limits are kPhiLimit, kPsiLimit times this
     };
 
-    // Control::mismatch() of the state against the nodes' targets.
+    // The change |dR|/diag of the node's equation that closing its gap
+    // (target - state) would make: Control::mismatch() per node.
+    double gap_of(const Node &nd) const {
+        const double gp = nd.phi - phi_[nd.side][nd.k], gq = nd.psi - psi_[nd.side][nd.k];
+        return std::max(std::fabs(gp * nd.unit[0] + gq * nd.unit[2]), std::fabs(gp * nd.unit[1] + gq * nd.unit[3]));
+    }
     double mismatch(const std::vector<Node> &nodes) const {
         double mm = 0.0;
-        for (const Node &nd : nodes) {
-            const double gp = nd.phi - phi_[nd.side][nd.k], gq = nd.psi - psi_[nd.side][nd.k];
-            mm = std::max({mm, std::fabs(gp * nd.unit[0] + gq * nd.unit[2]), std::fabs(gp * nd.unit[1] + gq * nd.unit[3])});
-        }
+        for (const Node &nd : nodes) mm = std::max(mm, gap_of(nd));
         return mm;
     }
 
     // Against sweeps, and during the ramp: under-relaxed, each node's gain
     // halved when its update turns (a solver that converges much per
     // iteration answers a change at once) and recovering slowly otherwise.
-    // True if a step limit cut any change.
+    // True if a step limit cut any change; gap: the largest gap before it.
     bool damped_update(const Grid &g, const ControlFields &others, double orient, double omega, double step,
-                       std::vector<Node> &nodes) {
+                       std::vector<Node> &nodes, double &gap) {
         bool clamped = false;
         for (int side = 0; side < 4; ++side) {
             // Wall by wall: a wall's targets see the walls updated before it.
@@ -185,6 +182,7 @@ private:
             add_targets(g, others, orient, side, nodes);
             for (std::size_t m = first; m < nodes.size(); ++m) {
                 const Node &nd = nodes[m];
+                gap = std::max(gap, gap_of(nd));
                 double &p = phi_[nd.side][nd.k], &q = psi_[nd.side][nd.k], &gain = gain_[nd.side][nd.k];
                 const double dp = nd.phi - p, dq = nd.psi - q;
                 double &lp = lastp_[nd.side][nd.k], &lq = lastq_[nd.side][nd.k];
@@ -237,6 +235,10 @@ private:
             psi_[nd.side][nd.k] = std::clamp(x[2 * n + 1] + std::clamp(next[2 * n + 1] - x[2 * n + 1], -step, step), -lq, lq);
             lastp_[nd.side][nd.k] = lastq_[nd.side][nd.k] = 0.0;
         }
+    }
+
+    void clear_side(int side) {
+        for (auto *v : {&phi_, &psi_, &gain_, &lastp_, &lastq_}) (*v)[side].clear();
     }
 
     bool active(const Grid &g, int side) const {
