@@ -27,6 +27,10 @@ struct ControlPace {
     // the grid is converged for the last update, so that the control's
     // fixed-point map is a function of the control alone.
     bool accelerate = false;
+    // One relaxation gain per node for both coefficients (wall.cpp,
+    // damped_update): for a solver that marches in pseudo-time (AF), whose
+    // grid answers a change over many steps.
+    bool one_gain = false;
 };
 
 class Control {

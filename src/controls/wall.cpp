@@ -27,7 +27,8 @@
 // updates are a fixed-point iteration of the control alone, whose factor is
 // about 1 - relaxation (0.7 per cycle): past the start-up ramp they are
 // Anderson-accelerated (anderson.hpp; NACA0012 r = 10 at 1e-5 chord: 29-35
-// cycles instead of 43-48).
+// cycles instead of 43-48; 25-32 since psi has a gain of its own,
+// damped_update).
 // Nothing uses the wall's curvature, so straight walls with corners (seed
 // 000's channels, where Middlecoff-Thomas degenerates) are no special case.
 #include <algorithm>
@@ -118,7 +119,8 @@ public:
             const std::size_t n = static_cast<std::size_t>(wall_length(g, side));
             phi_[side].resize(n, 0.0);
             psi_[side].resize(n, 0.0);
-            gain_[side].resize(n, 1.0);
+            gain_phi_[side].resize(n, 1.0);
+            gain_psi_[side].resize(n, 1.0);
             lastp_[side].resize(n, 0.0);
             lastq_[side].resize(n, 0.0);
         }
@@ -141,7 +143,7 @@ public:
             nodes.clear();
         }
         double gap = 0.0;
-        const bool clamped = damped_update(g, others, orient, omega, step, nodes, gap);
+        const bool clamped = damped_update(g, others, orient, omega, step, pace.one_gain, nodes, gap);
         accel_.restart();
         calm_ = (pace.accelerate && !clamped && gap < last_gap_) ? calm_ + 1 : 0;
         last_gap_ = best_gap_ = gap;
@@ -172,9 +174,21 @@ private:
     // Against sweeps, and during the ramp: under-relaxed, each node's gain
     // halved when its update turns (a solver that converges much per
     // iteration answers a change at once) and recovering slowly otherwise.
+    // psi has a gain of its own, halved only by its own turns: it is the
+    // coefficient that ramps for many updates, and where phi's target is
+    // near zero (a symmetric trailing edge) phi turns on noise, which with
+    // one gain per node held psi back. phi's gain still halves on either
+    // turn: at the NACA0012 trailing edge phi's target jumps between its
+    // limits for a small change of phi, and a lagging grid then drives a
+    // slow oscillation (AF, 65x33 at 1e-3: not converged in 100000 steps
+    // when phi had its own gain too). NACA0012 r = 10, multigrid,
+    // iterations with one gain -> with two: 257x65 at 1e-4 chord 1264 ->
+    // 29, 513x129 at 1e-4 4062 -> 41, 129x33 at 1e-3 617 -> 196
+    // (bench/RESULTS.md). AF keeps one gain (ControlPace::one_gain): with
+    // two, naca0012-wall 257x65 converged to a folded grid.
     // True if a step limit cut any change; gap: the largest gap before it.
     bool damped_update(const Grid &g, const ControlFields &others, double orient, double omega, double step,
-                       std::vector<Node> &nodes, double &gap) {
+                       bool one_gain, std::vector<Node> &nodes, double &gap) {
         bool clamped = false;
         for (int side = 0; side < 4; ++side) {
             // Wall by wall: a wall's targets see the walls updated before it.
@@ -183,16 +197,19 @@ private:
             for (std::size_t m = first; m < nodes.size(); ++m) {
                 const Node &nd = nodes[m];
                 gap = std::max(gap, gap_of(nd));
-                double &p = phi_[nd.side][nd.k], &q = psi_[nd.side][nd.k], &gain = gain_[nd.side][nd.k];
+                double &p = phi_[nd.side][nd.k], &q = psi_[nd.side][nd.k];
+                double &gp = gain_phi_[nd.side][nd.k], &gq = gain_psi_[nd.side][nd.k];
                 const double dp = nd.phi - p, dq = nd.psi - q;
                 double &lp = lastp_[nd.side][nd.k], &lq = lastq_[nd.side][nd.k];
                 const bool turned = dp * lp < 0.0 || dq * lq < 0.0;
-                gain = turned ? std::max(0.5 * gain, kMinGain) : std::min(1.1 * gain, 1.0);
+                gp = turned ? std::max(0.5 * gp, kMinGain) : std::min(1.1 * gp, 1.0);
+                if (one_gain) gq = gp;
+                else gq = dq * lq < 0.0 ? std::max(0.5 * gq, kMinGain) : std::min(1.1 * gq, 1.0);
                 lp = dp;
                 lq = dq;
-                clamped = clamped || std::fabs(gain * omega * dp) > step || std::fabs(gain * omega * dq) > step;
-                p += std::clamp(gain * omega * dp, -step, step);
-                q += std::clamp(gain * omega * dq, -step, step);
+                clamped = clamped || std::fabs(gp * omega * dp) > step || std::fabs(gq * omega * dq) > step;
+                p += std::clamp(gp * omega * dp, -step, step);
+                q += std::clamp(gq * omega * dq, -step, step);
             }
         }
         return clamped;
@@ -238,7 +255,7 @@ private:
     }
 
     void clear_side(int side) {
-        for (auto *v : {&phi_, &psi_, &gain_, &lastp_, &lastq_}) (*v)[side].clear();
+        for (auto *v : {&phi_, &psi_, &gain_phi_, &gain_psi_, &lastp_, &lastq_}) (*v)[side].clear();
     }
 
     bool active(const Grid &g, int side) const {
@@ -369,8 +386,9 @@ private:
     // The state: tangential (phi) and normal (psi) coefficients at depth 1,
     // per along-wall index, and the decay they were made with.
     std::array<std::vector<double>, 4> phi_, psi_;
-    // Per node: the gain on the relaxation and the last update's direction.
-    std::array<std::vector<double>, 4> gain_, lastp_, lastq_;
+    // Per node: the gains on the relaxation of phi and psi and the last
+    // update's direction.
+    std::array<std::vector<double>, 4> gain_phi_, gain_psi_, lastp_, lastq_;
     double decay_ = 0.0;
     double mismatch_ = 0.0;
     Anderson accel_;

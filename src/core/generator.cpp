@@ -186,13 +186,16 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
             // far off. Once past its ramp the control accelerates its updates
             // (Anderson, wall.cpp): with the grid converged for each state
             // they are a fixed-point iteration of the control alone. (Bench
-            // naca0012-wall, wall spacing 1e-5 chord, multigrid: 29-35 cycles
+            // naca0012-wall, wall spacing 1e-5 chord, multigrid: 25-32 cycles
             // from 65x17 to 1025x257, 43-48 damped only; at 1x pace it needed
             // 92-135 and stalled at 129x33; bench/RESULTS.md. At milder
-            // spacings, 1e-3 and 1e-4, cycles can fold or stall, and the run
-            // goes on with sweeps.)
+            // spacings cycles can still fold or stall, and the run goes on
+            // with sweeps: at 1e-4 on 65x17 and 1025x257, at 1e-3 from 65x17
+            // to 513x129.)
             const bool cycles = solver_->converges_each_iteration();
-            controls_.advance(grid_, settings, cycles ? ControlPace{kCyclePaceRelaxation, kCyclePaceStep, true} : ControlPace{});
+            ControlPace pace = cycles ? ControlPace{kCyclePaceRelaxation, kCyclePaceStep, true} : ControlPace{};
+            pace.one_gain = solver_->marches_in_time();
+            controls_.advance(grid_, settings, pace);
             if (cycles) {
                 r = eg2d::residual(system_, problem.level(), extent).value;
                 if (stop_at_tolerance && r <= settings.tolerance && settled(extent, settings.tolerance))

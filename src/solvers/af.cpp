@@ -86,6 +86,7 @@ double af_relaxation(const Settings &st) { return st.af_relaxation > 0.0 ? st.af
 
 class ApproximateFactorisation final : public Solver {
 public:
+    bool marches_in_time() const override { return true; }
     void observe(double residual, double /*control_gap*/) override {
         if (!(residual == residual)) return;  // NaN: the run loop handles divergence
         if (residual > kRiseFactor * best_) {

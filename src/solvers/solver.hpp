@@ -51,6 +51,10 @@ public:
     // With a dynamic control the run then paces its updates for that
     // (ControlPace) and tests convergence after each update.
     virtual bool converges_each_iteration() const { return false; }
+    // True for a solver whose iterations march in pseudo-time (AF): its grid
+    // follows a change of the controls over many iterations, and a dynamic
+    // control damps its updates more (ControlPace::one_gain).
+    virtual bool marches_in_time() const { return false; }
 };
 
 struct SolverInfo {
