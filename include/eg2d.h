@@ -673,9 +673,10 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   folds cells, or 20 cycles in which neither the residual nor the
  *   control's remaining change halves, hand the run over to line sweeps. Measured on NACA0012 O-grids (r = 10): at a first cell of 1e-5
  *   chord the cycles run to the end (25-32 cycles, 65x17..1025x257); at
- *   1e-4 too from 129x33 to 513x129 (28-41 cycles), but at 65x17 and
- *   1025x257, and at 1e-3, they fold or stall and the run ends with sweeps
- *   (183-2670 iterations at 1e-4, 196-7103 at 1e-3).
+ *   1e-4 too from 129x33 to 513x129 (28-41 cycles), but at 1e-4 on 65x17
+ *   and 1025x257, and at 1e-3 from 65x17 to 513x129, they fold or stall
+ *   and the run ends with sweeps (183-2670 iterations at 1e-4, 196-7103
+ *   at 1e-3).
  *   A run converges only when the control is settled too (its remaining
  *   change within the tolerance). The control starts over from zero after
  *   any change of the start grid (eg2d_initialize, eg2d_set_coordinates),

@@ -51,9 +51,11 @@ public:
     // With a dynamic control the run then paces its updates for that
     // (ControlPace) and tests convergence after each update.
     virtual bool converges_each_iteration() const { return false; }
-    // True for a solver whose iterations march in pseudo-time (AF): its grid
-    // follows a change of the controls over many iterations, and a dynamic
-    // control damps its updates more (ControlPace::one_gain).
+    // True for AF, whose iterations march in pseudo-time: a dynamic control
+    // then damps its updates the way it did before session 5
+    // (ControlPace::one_gain). Not a general rule for slow solvers: it was
+    // measured for AF alone (PSOR, LSOR and nested do as well or better
+    // without it). A new solver should be measured both ways.
     virtual bool marches_in_time() const { return false; }
 };
 
