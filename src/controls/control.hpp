@@ -27,11 +27,8 @@ struct ControlPace {
     // the grid is converged for the last update, so that the control's
     // fixed-point map is a function of the control alone.
     bool accelerate = false;
-    // One relaxation gain per node for both coefficients (wall.cpp,
-    // damped_update), as before session 5: a measured choice for AF only
-    // (with two gains AF converged NACA0012 257x65 at 1e-5 chord to a
-    // folded grid; PSOR, LSOR and nested were as good or better with two;
-    // bench/RESULTS.md, "Session 5"). Set from Solver::marches_in_time.
+    // One relaxation gain per node for both coefficients (why: wall.cpp,
+    // damped_update). Set from Solver::marches_in_time.
     bool one_gain = false;
 };
 

@@ -185,7 +185,8 @@ private:
     // iterations with one gain -> with two: 257x65 at 1e-4 chord 1264 ->
     // 29, 513x129 at 1e-4 4062 -> 41, 129x33 at 1e-3 617 -> 196
     // (bench/RESULTS.md). AF keeps one gain (ControlPace::one_gain): with
-    // two, naca0012-wall 257x65 converged to a folded grid.
+    // two, naca0012-wall 257x65 converged to a folded grid; PSOR, LSOR and
+    // nested do as well or better with two.
     // True if a step limit cut any change; gap: the largest gap before it.
     bool damped_update(const Grid &g, const ControlFields &others, double orient, double omega, double step,
                        bool one_gain, std::vector<Node> &nodes, double &gap) {
@@ -201,10 +202,12 @@ private:
                 double &gp = gain_phi_[nd.side][nd.k], &gq = gain_psi_[nd.side][nd.k];
                 const double dp = nd.phi - p, dq = nd.psi - q;
                 double &lp = lastp_[nd.side][nd.k], &lq = lastq_[nd.side][nd.k];
-                const bool turned = dp * lp < 0.0 || dq * lq < 0.0;
-                gp = turned ? std::max(0.5 * gp, kMinGain) : std::min(1.1 * gp, 1.0);
-                if (one_gain) gq = gp;
-                else gq = dq * lq < 0.0 ? std::max(0.5 * gq, kMinGain) : std::min(1.1 * gq, 1.0);
+                auto adapt = [](double gain, bool turned) {
+                    return turned ? std::max(0.5 * gain, kMinGain) : std::min(1.1 * gain, 1.0);
+                };
+                const bool turned_psi = dq * lq < 0.0;
+                gp = adapt(gp, dp * lp < 0.0 || turned_psi);
+                gq = one_gain ? gp : adapt(gq, turned_psi);
                 lp = dp;
                 lq = dq;
                 clamped = clamped || std::fabs(gp * omega * dp) > step || std::fabs(gq * omega * dq) > step;

@@ -51,11 +51,10 @@ public:
     // With a dynamic control the run then paces its updates for that
     // (ControlPace) and tests convergence after each update.
     virtual bool converges_each_iteration() const { return false; }
-    // True for AF, whose iterations march in pseudo-time: a dynamic control
-    // then damps its updates the way it did before session 5
-    // (ControlPace::one_gain). Not a general rule for slow solvers: it was
-    // measured for AF alone (PSOR, LSOR and nested do as well or better
-    // without it). A new solver should be measured both ways.
+    // True for AF (pseudo-time marching): the wall control then keeps one
+    // relaxation gain per node (ControlPace::one_gain). A measured choice for
+    // AF alone, not a rule for slow solvers (wall.cpp, damped_update): a new
+    // solver should be measured both ways.
     virtual bool marches_in_time() const { return false; }
 };
 
