@@ -166,6 +166,57 @@ static void test_wall_multigrid_stretched(void **state) {
     wall_multigrid(129, 33, 3e-3, 1500, 0.1);
 }
 
+static int cmp_double(const void *a, const void *b) {
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The median over an O-grid's JMIN wall of the second cell's height over the
+ * first's (heights as distances between the nodes of rows 0, 1, 2). */
+static double median_wall_growth(const eg2d_grid *g, int ni, int nj) {
+    double *x = alloc(ni * nj), *y = alloc(ni * nj), *r = alloc(ni), m;
+    int i;
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    for (i = 0; i < ni - 1; ++i)
+        r[i] = hypot(x[i + 2 * ni] - x[i + ni], y[i + 2 * ni] - y[i + ni]) / hypot(x[i + ni] - x[i], y[i + ni] - y[i]);
+    qsort(r, (size_t)(ni - 1), sizeof r[0], cmp_double);
+    m = r[(ni - 1) / 2];
+    free(x);
+    free(y);
+    free(r);
+    return m;
+}
+
+/* What eg2d.h says of the layer the control makes: it is not smoothly
+ * stretched. NACA0012 129x33 at 1e-5 chord: the second cell is about 24
+ * times the first (the plain grid: about 1), and EG2D_QUALITY_SMOOTHNESS_J
+ * says so. If the control learns to make a graded layer, this test and the
+ * manual change together. */
+static void test_wall_layer_growth(void **state) {
+    const int ni = 129, nj = 33;
+    double growth, plain, smooth;
+    eg2d_grid *g;
+    (void)state;
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    assert_int_equal(set_naca0012_r10(g), EG2D_OK);
+    assert_int_equal(eg2d_set_solver(g, EG2D_SOLVER_MULTIGRID), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    plain = median_wall_growth(g, ni, nj);
+    assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
+    assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 1e-5), EG2D_OK);
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    growth = median_wall_growth(g, ni, nj);
+    assert_int_equal(eg2d_get_quality(g, EG2D_QUALITY_SMOOTHNESS_J, &smooth), EG2D_OK);
+    print_message("NACA0012 %dx%d: second/first cell at the wall, median %.3g plain, %.3g with a "
+                  "1e-5 wall; SMOOTHNESS_J %.3g\n", ni, nj, plain, growth, smooth);
+    assert_true(plain > 0.8 && plain < 1.25);
+    assert_true(growth > 18.0 && growth < 30.0);
+    assert_true(smooth >= growth);
+    eg2d_destroy(g);
+}
+
 /* A new start or a new boundary after a converged wall run: the control
  * starts over. Kept, its converged coefficients applied to the TFI start (or
  * to a far field of radius 15) folded 8 cells and did not converge in 100000
@@ -403,6 +454,7 @@ int main(void) {
         cmocka_unit_test(test_wall_on_a_converged_grid),
         cmocka_unit_test(test_wall_naca0012),
         cmocka_unit_test(test_wall_multigrid_stretched),
+        cmocka_unit_test(test_wall_layer_growth),
         cmocka_unit_test(test_wall_restarts_on_new_start),
         cmocka_unit_test(test_wall_annulus_multigrid_cycles),
         cmocka_unit_test(test_wall_height_zero_keeps_radial_grid),
