@@ -189,8 +189,8 @@ static double median_wall_growth(const eg2d_grid *g, int ni, int nj) {
 
 /* What eg2d.h says of the layer the control makes: it is not smoothly
  * stretched. NACA0012 129x33 at 1e-5 chord: the second cell is about 24
- * times the first (the plain grid: about 1), and EG2D_QUALITY_SMOOTHNESS_J
- * says so. If the control learns to make a graded layer, this test and the
+ * times the first (median over the wall; the plain grid: about 1), and
+ * EG2D_QUALITY_SMOOTHNESS_J, a largest ratio, is within 30% of that. If the control learns to make a graded layer, this test and the
  * manual change together. */
 static void test_wall_layer_growth(void **state) {
     const int ni = 129, nj = 33;
@@ -213,7 +213,7 @@ static void test_wall_layer_growth(void **state) {
                   "1e-5 wall; SMOOTHNESS_J %.3g\n", ni, nj, plain, growth, smooth);
     assert_true(plain > 0.8 && plain < 1.25);
     assert_true(growth > 18.0 && growth < 30.0);
-    assert_true(smooth >= growth);
+    assert_true(smooth >= growth && smooth < 1.3 * growth);
     eg2d_destroy(g);
 }
 
