@@ -680,6 +680,15 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   A flow solver that needs a bounded growth from the wall should check
  *   EG2D_QUALITY_SMOOTHNESS_J (its per-cell values in the first rows show
  *   where the jump is).
+ *   On a C-grid the wake cut of JMIN counts as wall too: the nodes next to
+ *   it on both sides get the height, so the first row runs on past the
+ *   trailing edge. The cut's nodes are solved for, and the control ties
+ *   the rows beside the cut to them. NACA0012 C-grids (r = 5, ni/4 wake
+ *   nodes a side) at 1e-5 chord converge through line sweeps (129x33: 507
+ *   iterations, 257x65: 2035), but at 1e-3 (65x17, 129x33) and 1e-4
+ *   (97x33, 161x33) they do not converge in 20000 iterations: the cut node
+ *   next to the trailing edge keeps sliding along the cut (65x17 at 1e-3:
+ *   about 1e-6 chord per iteration).
  *   While it is active, the automatic relaxation (EG2D_PARAM_RELAXATION 0)
  *   is 1: over-relaxing its strong terms diverges at sharp trailing edges.
  *   With EG2D_SOLVER_MULTIGRID each cycle follows one update, taken 3x
