@@ -178,7 +178,10 @@ EG2D_API int eg2d_set_boundary(eg2d_grid *grid, const double *x, const double *y
                                 EG2D_PARAM_HERMITE_SPACING; linear TFI in xi (none on an
                                 O-grid). Can fold on strongly curved sides. */
 
-/* Fills the interior from the boundary. Needs the whole boundary. */
+/* Fills the interior from the boundary. Needs the whole boundary. The
+ * boundary is the one set: a C-grid's wake cut and sliding sides, which a
+ * solve moves, start again from the points given, so a handle re-initialised
+ * after a solve runs exactly as a new one. */
 EG2D_API int eg2d_initialize(eg2d_grid *grid, int method);
 
 /* A start grid of the user's own: whole ni*nj arrays, boundary included

@@ -101,11 +101,13 @@ void Generator::initialize(int method) {
         fail(Failure::State, format("the boundary is not complete: side %s not set", missing_sides(grid_).c_str()));
     check_extent(grid_);
     Grid next(grid_);
+    next.restore_boundary();
     m->fill(next, settings);
     check_coordinates("initial x", next.x.data(), next.size());
     check_coordinates("initial y", next.y.data(), next.size());
     next.mark_initialized();
     grid_ = std::move(next);
+    for (const auto &mo : motions_) mo->restart();
     changed_start();
     controls_.invalidate();
 }

@@ -30,8 +30,10 @@ public:
         }
         s_.front() = 0.0;
         s_.back() = 1.0;
+        s0_ = s_;
     }
     Side side() const override { return side_; }
+    void restart() const override { s_ = s0_; }
 
     void apply(Grid &g) const override {
         const int n = static_cast<int>(s_.size());
@@ -94,6 +96,7 @@ private:
     Side side_;
     std::vector<double> x_, y_;
     mutable std::vector<double> s_;  // the nodes' normalized arc lengths, updated by apply
+    std::vector<double> s0_;         // and as the side was set
 };
 
 }  // namespace

@@ -11,6 +11,9 @@ public:
     virtual Side side() const = 0;
     // Moves the side's nodes (never the corners) from the grid as it is.
     virtual void apply(Grid &grid) const = 0;
+    // Back to the state the side was set with, for a new start grid
+    // (eg2d_initialize restores the side's points too).
+    virtual void restart() const {}
 };
 
 }  // namespace eg2d

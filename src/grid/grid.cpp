@@ -88,6 +88,10 @@ void Grid::set_topology(Topology t) {
         fail(Failure::Argument, format("ni = %d: a C-grid needs at least 7 (wake, airfoil, wake)", ni_));
     connectivity_ = Connectivity(ni_, nj_, t);
     sides_set_ = 0;
+    for (int si = 0; si < 4; ++si) {
+        user_x_[si].clear();
+        user_y_[si].clear();
+    }
     initialized_ = false;
     std::fill(x.begin(), x.end(), 0.0);
     std::fill(y.begin(), y.end(), 0.0);
@@ -228,7 +232,28 @@ void Grid::set_side(Side s, const double *px, const double *py) {
         }
         connectivity_ = Connectivity(ni_, nj_, Topology::C, wake);
     }
-    sides_set_ |= 1u << static_cast<int>(s);
+    const int si = static_cast<int>(s);
+    user_x_[si].resize(static_cast<std::size_t>(n));
+    user_y_[si].resize(static_cast<std::size_t>(n));
+    for (int p = 0; p < n; ++p) {
+        const std::size_t k = side_index(ni_, nj_, s, p);
+        user_x_[si][static_cast<std::size_t>(p)] = x[k];
+        user_y_[si][static_cast<std::size_t>(p)] = y[k];
+    }
+    sides_set_ |= 1u << si;
+}
+
+void Grid::restore_boundary() {
+    for (int si = 0; si < 4; ++si) {
+        const Side s = static_cast<Side>(si);
+        if (!side_set(s)) continue;
+        const int n = side_length(s);
+        for (int p = 0; p < n; ++p) {
+            const std::size_t k = side_index(ni_, nj_, s, p);
+            x[k] = user_x_[si][static_cast<std::size_t>(p)];
+            y[k] = user_y_[si][static_cast<std::size_t>(p)];
+        }
+    }
 }
 
 void Grid::set_boundary(const double *px, const double *py) {

@@ -38,6 +38,11 @@ public:
     void set_boundary(const double *px, const double *py);   // ring of ni*nj arrays
     void set_coordinates(const double *px, const double *py);  // whole grid
 
+    // Puts the user's points back on every set side. Solving moves some of
+    // them (a C-grid's wake cut is solved for, sliding sides slide), and a
+    // new start must begin from the boundary as set, as a fresh handle does.
+    void restore_boundary();
+
     bool initialized() const { return initialized_; }
     void mark_initialized() { initialized_ = true; }
 
@@ -57,6 +62,7 @@ private:
     int ni_, nj_;
     Connectivity connectivity_;
     unsigned sides_set_ = 0;
+    std::vector<double> user_x_[4], user_y_[4];  // each set side's points as set_side wrote them
     bool initialized_ = false;
 };
 
