@@ -685,13 +685,17 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   where the jump is).
  *   On a C-grid the wake cut of JMIN counts as wall too: the nodes next to
  *   it on both sides get the height, so the first row runs on past the
- *   trailing edge. The cut's nodes are solved for, and the control ties
- *   the rows beside the cut to them. NACA0012 C-grids (r = 5, ni/4 wake
- *   nodes a side) at 1e-5 chord converge through line sweeps (129x33: 507
- *   iterations, 257x65: 2035), but at 1e-3 (65x17, 129x33) and 1e-4
- *   (97x33, 161x33) they do not converge in 20000 iterations: the cut node
- *   next to the trailing edge keeps sliding along the cut (65x17 at 1e-3:
- *   about 1e-6 chord per iteration).
+ *   trailing edge. NACA0012 C-grids (r = 5, ni/4 wake nodes a side),
+ *   iterations to the default tolerance 1e-8 / to 1e-10 (multigrid falls
+ *   back to line sweeps): 1e-5 chord 129x33 329 / 507, 257x65 1169 / 2035;
+ *   1e-4 97x33 265 / -, 161x33 335 / -; 1e-3 65x17 and 129x33 - / -
+ *   ("-": not converged in 20000, the residual stalling at 2e-9 (1e-4) and
+ *   5e-8..9e-8 (1e-3)). There the cut node next to the trailing edge keeps
+ *   sliding along the cut (65x17 at 1e-3: about 1e-6 chord per iteration)
+ *   while the first cells already have the height to 4 digits on the
+ *   airfoil and both sides of the cut: eg2d_solve returns
+ *   EG2D_ERR_NOT_CONVERGED with that grid, which is usable once its first
+ *   cells are checked; more iterations only move that node.
  *   While it is active, the automatic relaxation (EG2D_PARAM_RELAXATION 0)
  *   is 1: over-relaxing its strong terms diverges at sharp trailing edges.
  *   With EG2D_SOLVER_MULTIGRID each cycle follows one update, taken 3x
