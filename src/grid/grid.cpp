@@ -215,11 +215,7 @@ void Grid::set_side(Side s, const double *px, const double *py) {
     if (connectivity_.periodic_i()) check_closed(s, px, py, n);
     else check_corners(s, px, py);
     const int wake = (topology() == Topology::C && s == Side::JMin) ? detect_wake(px, py) : -1;
-    for (int p = 0; p < n; ++p) {
-        const std::size_t k = side_index(ni_, nj_, s, p);
-        x[k] = px[p];
-        y[k] = py[p];
-    }
+    write_side(s, px, py);
     if (connectivity_.periodic_i()) {  // the cut column holds the same point exactly
         const std::size_t k0 = side_index(ni_, nj_, s, 0), k1 = side_index(ni_, nj_, s, n - 1);
         x[k1] = x[k0];
@@ -233,27 +229,33 @@ void Grid::set_side(Side s, const double *px, const double *py) {
         connectivity_ = Connectivity(ni_, nj_, Topology::C, wake);
     }
     const int si = static_cast<int>(s);
-    user_x_[si].resize(static_cast<std::size_t>(n));
-    user_y_[si].resize(static_cast<std::size_t>(n));
-    for (int p = 0; p < n; ++p) {
-        const std::size_t k = side_index(ni_, nj_, s, p);
-        user_x_[si][static_cast<std::size_t>(p)] = x[k];
-        user_y_[si][static_cast<std::size_t>(p)] = y[k];
-    }
+    read_side(s, user_x_[si], user_y_[si]);  // after the cut's copies: the ring as set
     sides_set_ |= 1u << si;
 }
 
-void Grid::restore_boundary() {
-    for (int si = 0; si < 4; ++si) {
-        const Side s = static_cast<Side>(si);
-        if (!side_set(s)) continue;
-        const int n = side_length(s);
-        for (int p = 0; p < n; ++p) {
-            const std::size_t k = side_index(ni_, nj_, s, p);
-            x[k] = user_x_[si][static_cast<std::size_t>(p)];
-            y[k] = user_y_[si][static_cast<std::size_t>(p)];
-        }
+void Grid::write_side(Side s, const double *px, const double *py) {
+    const int n = side_length(s);
+    for (int p = 0; p < n; ++p) {
+        const std::size_t k = side_index(ni_, nj_, s, p);
+        x[k] = px[p];
+        y[k] = py[p];
     }
+}
+
+void Grid::read_side(Side s, std::vector<double> &px, std::vector<double> &py) const {
+    const int n = side_length(s);
+    px.resize(static_cast<std::size_t>(n));
+    py.resize(static_cast<std::size_t>(n));
+    for (int p = 0; p < n; ++p) {
+        const std::size_t k = side_index(ni_, nj_, s, p);
+        px[static_cast<std::size_t>(p)] = x[k];
+        py[static_cast<std::size_t>(p)] = y[k];
+    }
+}
+
+void Grid::restore_boundary() {
+    for (int si = 0; si < 4; ++si)
+        if (side_set(static_cast<Side>(si))) write_side(static_cast<Side>(si), user_x_[si].data(), user_y_[si].data());
 }
 
 void Grid::set_boundary(const double *px, const double *py) {
