@@ -229,7 +229,7 @@ void Grid::set_side(Side s, const double *px, const double *py) {
         connectivity_ = Connectivity(ni_, nj_, Topology::C, wake);
     }
     const int si = static_cast<int>(s);
-    read_side(s, user_x_[si], user_y_[si]);  // after the cut's copies: the ring as set
+    read_side(s, x.data(), y.data(), user_x_[si], user_y_[si]);  // after the cut's copies: the ring as set
     sides_set_ |= 1u << si;
 }
 
@@ -242,14 +242,15 @@ void Grid::write_side(Side s, const double *px, const double *py) {
     }
 }
 
-void Grid::read_side(Side s, std::vector<double> &px, std::vector<double> &py) const {
+void Grid::read_side(Side s, const double *fx, const double *fy, std::vector<double> &px,
+                     std::vector<double> &py) const {
     const int n = side_length(s);
     px.resize(static_cast<std::size_t>(n));
     py.resize(static_cast<std::size_t>(n));
     for (int p = 0; p < n; ++p) {
         const std::size_t k = side_index(ni_, nj_, s, p);
-        px[static_cast<std::size_t>(p)] = x[k];
-        py[static_cast<std::size_t>(p)] = y[k];
+        px[static_cast<std::size_t>(p)] = fx[k];
+        py[static_cast<std::size_t>(p)] = fy[k];
     }
 }
 
@@ -261,18 +262,8 @@ void Grid::restore_boundary() {
 void Grid::set_boundary(const double *px, const double *py) {
     // Validate every side against the others before changing anything.
     std::vector<double> sx[4], sy[4];
-    for (int s = 0; s < 4; ++s) {
-        const Side side = static_cast<Side>(s);
-        if (!has_side(side)) continue;
-        const int n = side_length(side);
-        sx[s].resize(static_cast<std::size_t>(n));
-        sy[s].resize(static_cast<std::size_t>(n));
-        for (int p = 0; p < n; ++p) {
-            const std::size_t k = side_index(ni_, nj_, side, p);
-            sx[s][static_cast<std::size_t>(p)] = px[k];
-            sy[s][static_cast<std::size_t>(p)] = py[k];
-        }
-    }
+    for (int s = 0; s < 4; ++s)
+        if (has_side(static_cast<Side>(s))) read_side(static_cast<Side>(s), px, py, sx[s], sy[s]);
     Grid trial(*this);
     trial.sides_set_ = 0;
     for (int s = 0; s < 4; ++s)

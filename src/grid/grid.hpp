@@ -58,9 +58,11 @@ private:
     void check_closed(Side s, const double *px, const double *py, int n) const;
     // C-grid: the trailing-edge index of a JMIN side (throws Boundary).
     int detect_wake(const double *px, const double *py) const;
-    // A side's points from or into x, y (side_length(s) each).
+    // A side's points (side_length(s) each) into x, y, and out of any
+    // ni*nj arrays (x, y or a caller's ring).
     void write_side(Side s, const double *px, const double *py);
-    void read_side(Side s, std::vector<double> &px, std::vector<double> &py) const;
+    void read_side(Side s, const double *fx, const double *fy, std::vector<double> &px,
+                   std::vector<double> &py) const;
 
     int ni_, nj_;
     Connectivity connectivity_;
