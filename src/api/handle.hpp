@@ -7,8 +7,8 @@
 #include <new>
 #include <string>
 
-#include "core/error.hpp"
-#include "core/generator.hpp"
+#include "base/error.hpp"
+#include "generator/generator.hpp"
 #include "eg2d.h"
 
 struct eg2d_grid {

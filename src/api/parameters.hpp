@@ -1,5 +1,5 @@
 #pragma once
-#include "core/settings.hpp"
+#include "base/settings.hpp"
 
 namespace eg2d {
 namespace api {

@@ -5,9 +5,9 @@
 #include <memory>
 #include <vector>
 
-#include "controls/control_fields.hpp"
-#include "core/settings.hpp"
-#include "grid/grid.hpp"
+#include "operator/control_fields.hpp"
+#include "base/settings.hpp"
+#include "base/grid.hpp"
 
 namespace eg2d {
 

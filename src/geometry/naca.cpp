@@ -12,7 +12,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "geometry/curve.hpp"
 
 namespace eg2d {

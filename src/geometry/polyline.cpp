@@ -2,9 +2,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "geometry/curve.hpp"
-#include "grid/grid.hpp"
+#include "base/grid.hpp"
 
 namespace eg2d {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "geometry/distribution.hpp"
 #include "geometry/sliding.hpp"
 

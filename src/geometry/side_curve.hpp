@@ -3,7 +3,7 @@
 #pragma once
 #include <vector>
 
-#include "core/generator.hpp"
+#include "generator/generator.hpp"
 #include "geometry/curve.hpp"
 
 namespace eg2d {

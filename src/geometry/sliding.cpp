@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 
 namespace eg2d {
 

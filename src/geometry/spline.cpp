@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "geometry/curve.hpp"
-#include "grid/grid.hpp"
-#include "solvers/tridiagonal.hpp"
+#include "base/grid.hpp"
+#include "base/tridiagonal.hpp"
 
 namespace eg2d {
 

@@ -1,7 +1,7 @@
 // A boundary whose nodes move during the run (a sliding side). The Generator
 // applies every motion after each solver iteration, so all solvers get it.
 #pragma once
-#include "grid/grid.hpp"
+#include "base/grid.hpp"
 
 namespace eg2d {
 

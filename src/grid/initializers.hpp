@@ -1,8 +1,8 @@
 // Initial-grid methods, selected by their EG2D_INIT_* id. Adding one is adding
 // a file with its function and a line in initializers.cpp.
 #pragma once
-#include "core/settings.hpp"
-#include "grid/grid.hpp"
+#include "base/settings.hpp"
+#include "base/grid.hpp"
 
 namespace eg2d {
 

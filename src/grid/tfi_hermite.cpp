@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "grid/initializers.hpp"
 
 namespace eg2d {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "io/cgns_plugin.h"
 #include "io/formats.hpp"
 #include "quality/quality.hpp"

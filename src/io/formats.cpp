@@ -1,6 +1,6 @@
 #include "io/formats.hpp"
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "eg2d.h"
 
 namespace eg2d {

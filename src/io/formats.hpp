@@ -2,8 +2,8 @@
 // formats.cpp's table (format id -> writer); a format that accepts variant
 // flags (EG2D_PLOT3D_*, OR-ed into the id) lists them.
 #pragma once
-#include "core/settings.hpp"
-#include "grid/grid.hpp"
+#include "base/settings.hpp"
+#include "base/grid.hpp"
 #include "io/output_file.hpp"
 
 namespace eg2d {

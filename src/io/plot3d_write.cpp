@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "eg2d.h"
 #include "io/formats.hpp"
 #include "io/plot3d.hpp"

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <vector>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 
 namespace eg2d {
 

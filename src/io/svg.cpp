@@ -6,9 +6,9 @@
 #include <cmath>
 #include <limits>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "io/formats.hpp"
-#include "quality/cell.hpp"
+#include "base/cell.hpp"
 #include "quality/quality.hpp"
 
 namespace eg2d {

@@ -4,8 +4,8 @@
 #pragma once
 #include <cstddef>
 
-#include "controls/control_fields.hpp"
-#include "grid/connectivity.hpp"
+#include "operator/control_fields.hpp"
+#include "base/connectivity.hpp"
 #include "operator/system.hpp"
 
 namespace eg2d {

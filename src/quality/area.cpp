@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "quality/cell.hpp"
+#include "base/cell.hpp"
 #include "quality/quality.hpp"
 
 namespace eg2d {

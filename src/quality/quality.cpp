@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "eg2d.h"
-#include "quality/cell.hpp"
+#include "base/cell.hpp"
 
 namespace eg2d {
 

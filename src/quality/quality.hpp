@@ -5,19 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "grid/grid.hpp"
+#include "base/folds.hpp"
+#include "base/grid.hpp"
 
 namespace eg2d {
 
-// Orientation and folding of the cells (i, j), i < ni-1, j < nj-1.
-struct FoldSummary {
-    int orientation = 1;      // +1 right-handed (counter-clockwise cells), -1 left-handed
-    long folded = 0;          // cells with a corner turning against the orientation
-    int first_i = -1, first_j = -1;  // the first folded cell in storage order
-    double min_area = 0.0;    // smallest cell area times the orientation
-};
-
-FoldSummary fold_summary(const Grid &grid);
 
 // Per-cell families: each writes (ni-1)*(nj-1) values, cell (i, j) at i + (ni-1)*j.
 void cell_folded(const Grid &grid, double *out);        // folding.cpp: 1 folded, 0 not

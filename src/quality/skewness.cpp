@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "quality/cell.hpp"
+#include "base/cell.hpp"
 #include "quality/quality.hpp"
 
 namespace eg2d {

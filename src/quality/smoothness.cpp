@@ -7,7 +7,7 @@
 #include <limits>
 #include <vector>
 
-#include "quality/cell.hpp"
+#include "base/cell.hpp"
 #include "quality/quality.hpp"
 
 namespace eg2d {

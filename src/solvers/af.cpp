@@ -35,7 +35,7 @@
 #include <vector>
 
 #include "solvers/solver.hpp"
-#include "solvers/tridiagonal.hpp"
+#include "base/tridiagonal.hpp"
 
 namespace eg2d {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "solvers/tridiagonal.hpp"
+#include "base/tridiagonal.hpp"
 
 namespace eg2d {
 

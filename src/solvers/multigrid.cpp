@@ -31,8 +31,8 @@
 #include <cmath>
 #include <limits>
 
-#include "core/error.hpp"
-#include "quality/quality.hpp"
+#include "base/error.hpp"
+#include "base/folds.hpp"
 #include "solvers/multigrid_hierarchy.hpp"
 #include "solvers/multigrid_local.hpp"
 #include "solvers/multigrid_smoother.hpp"

@@ -6,8 +6,8 @@
 #pragma once
 #include <vector>
 
-#include "controls/control_fields.hpp"
-#include "grid/connectivity.hpp"
+#include "operator/control_fields.hpp"
+#include "base/connectivity.hpp"
 #include "operator/operator.hpp"
 #include "operator/system.hpp"
 #include "solvers/line_relax.hpp"

@@ -7,7 +7,7 @@
 #pragma once
 #include <vector>
 
-#include "grid/connectivity.hpp"
+#include "base/connectivity.hpp"
 #include "operator/operator.hpp"
 
 namespace eg2d {

@@ -21,7 +21,7 @@
 #include <cmath>
 #include <vector>
 
-#include "quality/quality.hpp"
+#include "base/folds.hpp"
 #include "solvers/auto_relaxation.hpp"
 #include "solvers/solver.hpp"
 

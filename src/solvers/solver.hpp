@@ -4,9 +4,9 @@
 #pragma once
 #include <memory>
 
-#include "controls/control_fields.hpp"
-#include "core/settings.hpp"
-#include "grid/grid.hpp"
+#include "operator/control_fields.hpp"
+#include "base/settings.hpp"
+#include "base/grid.hpp"
 #include "operator/operator.hpp"
 #include "operator/system.hpp"
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "grid/connectivity.hpp"
+#include "base/connectivity.hpp"
 #include "solvers/auto_relaxation.hpp"
 #include "solvers/solver.hpp"
 

@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "grid/connectivity.hpp"
+#include "base/connectivity.hpp"
 
 using namespace eg2d;
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "controls/control.hpp"
-#include "core/generator.hpp"
+#include "generator/generator.hpp"
 #include "eg2d.h"
 #include "operator/operator.hpp"
 #include "solvers/multigrid_hierarchy.hpp"

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "solvers/tridiagonal.hpp"
+#include "base/tridiagonal.hpp"
 
 static int failures = 0, passes = 0;
 static void check(bool ok, const char *what, double err) {

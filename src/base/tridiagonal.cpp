@@ -1,4 +1,4 @@
-#include "solvers/tridiagonal.hpp"
+#include "base/tridiagonal.hpp"
 
 namespace eg2d {
 

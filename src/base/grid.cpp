@@ -1,11 +1,11 @@
-#include "grid/grid.hpp"
+#include "base/grid.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <new>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 
 namespace eg2d {
 

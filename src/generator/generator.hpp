@@ -8,8 +8,8 @@
 
 #include "controls/control.hpp"
 #include "grid/boundary_motion.hpp"
-#include "core/settings.hpp"
-#include "grid/grid.hpp"
+#include "base/settings.hpp"
+#include "base/grid.hpp"
 #include "operator/operator.hpp"
 #include "solvers/solver.hpp"
 

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "grid/connectivity.hpp"
+#include "base/connectivity.hpp"
 
 namespace eg2d {
 

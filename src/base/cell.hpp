@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstddef>
 
-#include "grid/grid.hpp"
+#include "base/grid.hpp"
 
 namespace eg2d {
 
@@ -53,8 +53,5 @@ inline std::size_t cell_count(const Grid &g) {
 inline std::size_t cell_index(const Grid &g, int i, int j) {
     return static_cast<std::size_t>(i) + static_cast<std::size_t>(g.ni() - 1) * static_cast<std::size_t>(j);
 }
-
-// +1 for a right-handed grid (total area positive), -1 for a left-handed one.
-int grid_orientation(const Grid &g);
 
 }  // namespace eg2d

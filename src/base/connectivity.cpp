@@ -1,4 +1,4 @@
-#include "grid/connectivity.hpp"
+#include "base/connectivity.hpp"
 
 namespace eg2d {
 

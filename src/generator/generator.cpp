@@ -1,10 +1,10 @@
-#include "core/generator.hpp"
+#include "generator/generator.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "eg2d.h"
 #include "grid/initializers.hpp"
 #include "quality/quality.hpp"

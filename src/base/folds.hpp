@@ -1,0 +1,26 @@
+// Orientation and folding of a grid's cells: what the run, the solvers'
+// divergence checks and the quality metrics all ask of a grid.
+#pragma once
+#include "base/cell.hpp"
+#include "base/grid.hpp"
+
+namespace eg2d {
+
+// Orientation and folding of the cells (i, j), i < ni-1, j < nj-1.
+struct FoldSummary {
+    int orientation = 1;      // +1 right-handed (counter-clockwise cells), -1 left-handed
+    long folded = 0;          // cells with a corner turning against the orientation
+    int first_i = -1, first_j = -1;  // the first folded cell in storage order
+    double min_area = 0.0;    // smallest cell area times the orientation
+};
+
+FoldSummary fold_summary(const Grid &grid);
+
+// +1 for a right-handed grid (total area positive), -1 for a left-handed one.
+int grid_orientation(const Grid &g);
+
+// A folded cell has a corner whose turn (the cross product of the two edges
+// leaving it) has the sign opposite to the grid's orientation.
+bool is_folded(const Cell &c, int orientation);
+
+}  // namespace eg2d
