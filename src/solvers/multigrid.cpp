@@ -140,11 +140,7 @@ private:
         for (std::size_t l = 1; l < levels_.size(); ++l)
             restrict_controls(levels_[l - 1].level.controls, levels_[l - 1].conn, levels_[l]);
         levels_[0].singular = singular_nodes(conn, fine.x, fine.y);
-        for (std::size_t l = 1, si = 1, sj = 1; l < levels_.size(); ++l) {
-            si *= static_cast<std::size_t>(levels_[l].si);
-            sj *= static_cast<std::size_t>(levels_[l].sj);
-            levels_[l].singular = coarse_nodes(levels_[0].singular, static_cast<int>(si), static_cast<int>(sj));
-        }
+        for (std::size_t l = 1; l < levels_.size(); ++l) levels_[l].singular = coarse_nodes(levels_[l - 1].singular, levels_[l]);
         for (MgLevel &m : levels_) m.trailing_edge = cut_ends(m.conn);
         pre_ = static_cast<int>(p.settings.mg_pre_smooth);
         post_ = static_cast<int>(p.settings.mg_post_smooth);
@@ -175,7 +171,7 @@ private:
         std::copy(c.x0.begin(), c.x0.end(), c.x.begin());
         std::copy(c.y0.begin(), c.y0.end(), c.y.begin());
         // f_c = L_c(I u) - s W R: first W R into f_c, then add L_c(I u) node by node.
-        restrict_residual(m, c, operator_scale(system_, c), c.fx.data(), c.fy.data());
+        restrict_residual(system_, m, c, c.fx.data(), c.fy.data());
         Level plain = c.level;
         plain.fx = plain.fy = nullptr;
         auto add_plain = [&](int I, int J) {

@@ -6,12 +6,12 @@ namespace eg2d {
 
 namespace {
 
-// Can this direction (n nodes) be halved and keep a sound coarse grid?
-bool can_coarsen(int n, bool periodic, int coarsest) {
-    if (n <= coarsest || (n - 1) % 2 != 0) return false;
+// Can a direction of n nodes become nc nodes and keep a sound coarse grid?
+bool can_coarsen(int n, int nc, bool periodic, int coarsest) {
+    if (n <= coarsest || nc >= n) return false;
     // A periodic direction goes round a body: keep at least 8 cells on it
     // (with 4, an airfoil is a diamond and the coarse problem breaks down).
-    return periodic ? (n - 1) / 2 >= 8 : (n - 1) / 2 + 1 >= 3;
+    return periodic ? nc - 1 >= 8 : nc >= 3;
 }
 
 }  // namespace
@@ -19,18 +19,25 @@ bool can_coarsen(int n, bool periodic, int coarsest) {
 std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, int coarsest) {
     std::vector<MgLevel> levels;
     levels.emplace_back(fine);
+    levels.back().ai = identity_axis(fine.ni(), fine.periodic_i());
+    levels.back().aj = identity_axis(fine.nj(), false);
     for (;;) {
         const Connectivity &c = levels.back().conn;
-        const bool ci = can_coarsen(c.ni(), c.periodic_i(), coarsest);
-        const bool cj = can_coarsen(c.nj(), false, coarsest);
+        // A C-grid's trailing edges stay coarse nodes: the cut ends there.
+        std::vector<int> anchors;
+        if (c.wake() > 0) anchors = {c.wake(), c.ni() - 1 - c.wake()};
+        const bool ci = can_coarsen(c.ni(), coarse_count(c.ni(), anchors), c.periodic_i(), coarsest);
+        const bool cj = can_coarsen(c.nj(), coarse_count(c.nj(), {}), false, coarsest);
         // Laplace in index units is not invariant under coarsening one
         // direction only (x_xixi + x_etaeta would change its anisotropy), so
         // it coarsens in both or stops; Winslow's equation is invariant.
         if (system == System::Laplace ? !(ci && cj) : !(ci || cj)) break;
-        const int si = ci ? 2 : 1, sj = cj ? 2 : 1;
-        levels.emplace_back(c.coarsened(si, sj));
-        levels.back().si = si;
-        levels.back().sj = sj;
+        CoarseAxis ai = make_axis(c.ni(), c.periodic_i(), anchors, ci);
+        CoarseAxis aj = make_axis(c.nj(), false, {}, cj);
+        const int wake = c.wake() > 0 ? ai.nearest(c.wake()) : 0;
+        levels.emplace_back(Connectivity(ai.nc, aj.nc, c.topology(), wake));
+        levels.back().ai = std::move(ai);
+        levels.back().aj = std::move(aj);
     }
     for (std::size_t l = 0; l < levels.size(); ++l) {
         MgLevel &m = levels[l];
@@ -55,8 +62,8 @@ std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, in
     return levels;
 }
 
-double operator_scale(System system, const MgLevel &coarse) {
-    const double s = static_cast<double>(coarse.si * coarse.sj);
+double operator_scale(System system, const MgLevel &coarse, int I, int J) {
+    const double s = coarse.ai.h[static_cast<std::size_t>(I)] * coarse.aj.h[static_cast<std::size_t>(J)];
     return system == System::Laplace ? s : s * s;
 }
 
@@ -65,14 +72,14 @@ double operator_scale(System system, const MgLevel &coarse) {
 // and the coarse equation (si sj)^2 times the fine one, C_xi r_xi needs
 // C_xi,c = si sj^2 C_xi, C_eta,c = si^2 sj C_eta; written in the coarse metrics:
 //   a_xi*si, b_xi*sj, c_xi*sj^2/si, d_xi/si;  a_eta*si^2/sj, b_eta*si, c_eta*sj, d_eta/sj.
-// For si = sj = 2: a, b, c double and d halves (control_fields.hpp).
+// For si = sj = 2: a, b, c double and d halves (control_fields.hpp). Here si,
+// sj are the local spacings hi(I), hj(J) of the coarse axes.
 void restrict_controls(const ControlFields *fine, const Connectivity &fine_conn, MgLevel &coarse) {
     if (!fine || fine->empty()) {
         coarse.level.controls = nullptr;
         return;
     }
-    const double si = coarse.si, sj = coarse.sj;
-    const double scale[kTermCount] = {si, sj, sj * sj / si, 1.0 / si, si * si / sj, si, sj, 1.0 / sj};
+    const int nic = coarse.conn.ni(), njc = coarse.conn.nj();
     for (int t = 0; t < kTermCount; ++t) {
         const double *f = fine->data(static_cast<Term>(t));
         std::vector<double> &dst = coarse.controls.term[t];
@@ -82,7 +89,12 @@ void restrict_controls(const ControlFields *fine, const Connectivity &fine_conn,
         }
         dst.resize(coarse.size());
         inject(fine_conn, f, coarse, dst.data());
-        for (double &v : dst) v *= scale[t];
+        for (int J = 0; J < njc; ++J)
+            for (int I = 0; I < nic; ++I) {
+                const double si = coarse.ai.h[static_cast<std::size_t>(I)], sj = coarse.aj.h[static_cast<std::size_t>(J)];
+                const double scale[kTermCount] = {si, sj, sj * sj / si, 1.0 / si, si * si / sj, si, sj, 1.0 / sj};
+                dst[static_cast<std::size_t>(I) + static_cast<std::size_t>(nic) * J] *= scale[t];
+            }
     }
     coarse.level.controls = &coarse.controls;
 }

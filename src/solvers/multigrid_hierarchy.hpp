@@ -1,15 +1,17 @@
-// The grid levels of the FAS multigrid solver and the transfers between them.
-// Level 0 is the user's grid; each coarser level takes every other line in
-// each direction that can be coarsened (ni-1 even and at least 3 nodes left;
-// on the periodic direction of an O-grid a period of at least 8 cells), or in
-// one direction only (semicoarsening, Winslow) when the other cannot.
+// The grid levels of the FAS multigrid solver (and of the nested solver's
+// coarse-to-fine start) and the transfers between them. Level 0 is the
+// user's grid; each coarser level has about half the cells in each direction
+// that can be coarsened (coarse_axis.hpp: any node count; at least 3 nodes
+// left, on the periodic direction of an O-grid at least 8 cells), or in one
+// direction only (semicoarsening, Winslow) when the other cannot.
 #pragma once
 #include <vector>
 
-#include "operator/control_fields.hpp"
 #include "base/connectivity.hpp"
+#include "operator/control_fields.hpp"
 #include "operator/operator.hpp"
 #include "operator/system.hpp"
+#include "solvers/coarse_axis.hpp"
 #include "solvers/line_relax.hpp"
 #include "solvers/multigrid_ilu.hpp"
 
@@ -18,7 +20,7 @@ namespace eg2d {
 struct MgLevel {
     explicit MgLevel(const Connectivity &c) : conn(c) {}
     Connectivity conn;
-    int si = 1, sj = 1;              // coarsening factor from the finer level, per direction
+    CoarseAxis ai, aj;               // where the nodes sit in the finer level, per direction
     std::vector<double> x, y;        // coordinates (empty on level 0: the grid's own)
     std::vector<double> x0, y0;      // I u: the finer solution injected (FAS)
     std::vector<double> fx, fy;      // FAS right-hand side (level 0 has none)
@@ -39,26 +41,29 @@ struct MgLevel {
 std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, int coarsest);
 
 // How much larger the coarse operator is than the fine one for the same
-// smooth grid (the operator is written in index units): (si*sj)^2 for
-// Winslow, whose terms are quartic in index spacing, si*sj for Laplace.
-double operator_scale(System system, const MgLevel &coarse);
+// smooth grid at coarse node (I, J) (the operator is written in index units):
+// (hi*hj)^2 for Winslow, whose terms are quartic in index spacing, hi*hj for
+// Laplace, with hi, hj the fine cells per coarse cell there (coarse_axis.hpp).
+double operator_scale(System system, const MgLevel &coarse, int I, int J);
 
 // coarse.controls = the fine fields at the coarse nodes, rescaled to the
 // coarse index units (controls/control_fields.hpp; derivation in the .cpp).
 void restrict_controls(const ControlFields *fine, const Connectivity &fine_conn, MgLevel &coarse);
 
-// dst (coarse) = src (fine) at the coarse nodes: coordinates, boundary included.
+// dst (coarse) = src (fine) sampled at the coarse nodes (interpolated between
+// fine nodes where a coarse node falls between them): coordinates, boundary
+// included.
 void inject(const Connectivity &fine_conn, const double *src, const MgLevel &coarse, double *dst);
 
-// dst (coarse unknowns) = scale * full weighting of src (fine).
-void full_weighting(const Connectivity &fine_conn, const double *src, const MgLevel &coarse, double scale,
-                    double *dst);
+// Full weighting of fine.rx, fine.ry at the coarse unknowns, times
+// operator_scale at each coarse node, into out_x, out_y (coarse-sized).
+void restrict_residual(System system, const MgLevel &fine, const MgLevel &coarse, double *out_x, double *out_y);
 
-// Full weighting of fine.rx, fine.ry at the coarse unknowns, times `scale`,
-// into out_x, out_y (coarse-sized).
-void restrict_residual(const MgLevel &fine, const MgLevel &coarse, double scale, double *out_x, double *out_y);
+// The nodes of `fine` (a level's nodes) on the next coarser level: the nearest coarse node of each.
+std::vector<Connectivity::Node> coarse_nodes(const std::vector<Connectivity::Node> &fine, const MgLevel &coarse);
 
 // Fine unknowns += bilinear interpolation of (coarse x - coarse x0).
+// Also the nested solver's coarse-to-fine step (x0: its start injected).
 void prolong_correction(const MgLevel &coarse, const Level &fine);
 
 }  // namespace eg2d

@@ -49,16 +49,6 @@ std::vector<Connectivity::Node> cut_ends(const Connectivity &conn) {
     return {{conn.wake(), 0}, {conn.ni() - 1 - conn.wake(), 0}};
 }
 
-std::vector<Connectivity::Node> coarse_nodes(const std::vector<Connectivity::Node> &fine, int si, int sj) {
-    std::vector<Connectivity::Node> out;
-    for (const Connectivity::Node &n : fine) {
-        const Connectivity::Node c{(n.i + si / 2) / si, (n.j + sj / 2) / sj};
-        if (std::none_of(out.begin(), out.end(), [&](const Connectivity::Node &o) { return o.i == c.i && o.j == c.j; }))
-            out.push_back(c);
-    }
-    return out;
-}
-
 void relax_near(System system, const Level &L, const std::vector<Connectivity::Node> &nodes, int radius,
                 int sweeps) {
     const Connectivity &conn = *L.conn;

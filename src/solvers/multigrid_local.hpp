@@ -24,8 +24,6 @@ std::vector<Connectivity::Node> singular_nodes(const Connectivity &conn, const d
 // (odd wakes: 10 and 12 instead of 9 and 11 at 65x17 and 129x33).
 std::vector<Connectivity::Node> cut_ends(const Connectivity &conn);
 
-// The same nodes on a level whose index spacing is (si, sj) fine cells.
-std::vector<Connectivity::Node> coarse_nodes(const std::vector<Connectivity::Node> &fine, int si, int sj);
 
 // `sweeps` symmetric point Gauss-Seidel sweeps over the unknowns within
 // `radius` index steps of each node.
