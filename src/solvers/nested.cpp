@@ -1,28 +1,28 @@
-// Coarse-to-fine ("nested") iteration, seed 000's main program with
-// `interpol` and `nsub`: the equations are first converged on every s-th grid
-// line (s = 2^k, the largest power of two that divides ni-1 and nj-1 and
-// leaves at least one interior line), the result is interpolated linearly to
-// every s/2-th line, converged again, and so on down to the full grid; then
-// plain point SOR sweeps continue on the full grid.
+// Coarse-to-fine ("nested") iteration, after the main program of the
+// Phoenix grid code with `interpol` and `nsub`: the equations are first
+// converged on a coarse grid, the result is interpolated to the next finer
+// grid, converged again, and so on up to the full grid; then plain point SOR
+// sweeps continue on the full grid.
 //
 // One iteration is one point SOR sweep of the full grid; the first iteration
-// after a new start also does the whole coarse-to-fine phase. Each coarse
-// level is a grid of its own (the fine nodes at stride s, the fine control
-// fields sampled there and rescaled to its index units, control_fields.hpp)
-// and is swept with the relaxation setting (automatic: the optimal SOR factor
-// of its size) until its residual is
-// below max(tolerance, kCoarseTolerance). Like seed 000, the start replaces
-// the interior: of a warm start only the nodes of the coarsest level are used.
-// (Right after interpolation the max-norm residual is larger than a smooth
-// start's, from the kinks of linear interpolation, though the error is
-// smaller; so the residual cannot judge which start is better.) A start
-// with more folded cells than the grid had is dropped.
+// after a new start also does the whole coarse-to-fine phase. The coarse
+// grids are the multigrid hierarchy's (multigrid_hierarchy.hpp: any size, the
+// control fields sampled and rescaled to each level's index units), each
+// swept with the relaxation setting (automatic: the optimal SOR factor of its
+// size) until its residual is below max(tolerance, kCoarseTolerance). Each
+// finer level takes the coarser one's change as a correction,
+// u += P(u_c - I u), so a warm start keeps its fine detail. (Right after
+// interpolation the max-norm residual is larger than a smooth start's, from
+// the kinks of linear interpolation, though the error is smaller; so the
+// residual cannot judge which start is better.) A start with more folded
+// cells than the grid had is dropped.
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "base/folds.hpp"
 #include "solvers/auto_relaxation.hpp"
+#include "solvers/multigrid_hierarchy.hpp"
 #include "solvers/solver.hpp"
 
 namespace eg2d {
@@ -32,48 +32,8 @@ namespace {
 // interpolation error of the next level dominates anyway.
 constexpr double kCoarseTolerance = 1e-7;
 
-// The largest power-of-two stride with a coarse grid that still has an
-// interior (and, periodic in i, at least three distinct columns).
-int coarsest_stride(const Connectivity &c) {
-    const int mi = c.ni() - 1, mj = c.nj() - 1, min_i = c.periodic_i() ? 3 : 2;
-    int s = 1;
-    while (mi % (2 * s) == 0 && mj % (2 * s) == 0 && mi / (2 * s) >= min_i && mj / (2 * s) >= 2) s *= 2;
-    return s;
-}
-
-// Control fields at the nodes of stride s, in the coarse grid's index units:
-// r_xi grows by s, so a, b, c terms scale by s and d terms by 1/s.
-ControlFields coarse_controls(const ControlFields &fine, int ni, int s, int nci, int ncj) {
-    ControlFields out;
-    for (int t = 0; t < kTermCount; ++t) {
-        const Term term = static_cast<Term>(t);
-        const double *f = fine.data(term);
-        if (!f) continue;
-        const bool d_term = term == Term::DXi || term == Term::DEta;
-        const double scale = d_term ? 1.0 / s : static_cast<double>(s);
-        std::vector<double> &v = out.at(term, static_cast<std::size_t>(nci) * ncj);
-        for (int j = 0; j < ncj; ++j)
-            for (int i = 0; i < nci; ++i)
-                v[i + static_cast<std::size_t>(nci) * j] = scale * f[i * s + static_cast<std::size_t>(ni) * j * s];
-    }
-    return out;
-}
-
-// Seed 000's `interpol(s)`: the nodes on every s/2-th line that are not on
-// an s-th line get the mean of their two neighbours at distance s/2, first
-// along eta (on the s-th columns), then along xi. Only unknown nodes change.
-void interpolate(const Connectivity &c, double *f, int s) {
-    const int ni = c.ni(), h = s / 2;
-    auto at = [&](int i, int j) -> double & { return f[i + static_cast<std::size_t>(ni) * j]; };
-    for (int i = c.i_begin(); i < c.i_end(); ++i) {
-        if (i % s != 0) continue;
-        for (int j = h; j < c.nj() - 1; j += s) at(i, j) = 0.5 * (at(i, j - h) + at(i, j + h));
-    }
-    c.sync(f);  // the cut column, read by the xi pass
-    for (int j = h; j < c.nj() - 1; j += h)
-        for (int i = h; i < c.i_end(); i += s) at(i, j) = 0.5 * (at(i - h, j) + at(i + h, j));
-    c.sync(f);
-}
+// Nested coarsens down to 3 nodes a direction: every coarse solve is cheap.
+constexpr int kCoarsestNodes = 3;
 
 class Nested final : public Solver {
 public:
@@ -94,38 +54,30 @@ public:
 private:
     void coarse_to_fine(Problem &p) {
         const Level fine = p.level();
-        const Connectivity &conn = *fine.conn;
-        const int top = coarsest_stride(conn);
-        if (top == 1) return;
+        std::vector<MgLevel> levels = build_hierarchy(*fine.conn, p.system, kCoarsestNodes);
+        if (levels.size() < 2) return;
         const double extent = p.grid.extent();
         const std::vector<double> start_x = p.grid.x, start_y = p.grid.y;
         const long folded_before = fold_summary(p.grid).folded;
-        const int ni = conn.ni();
         const double target = std::max(p.settings.tolerance, kCoarseTolerance);
-        for (int s = top; s > 1; s /= 2) {
-            const int nci = (ni - 1) / s + 1, ncj = (conn.nj() - 1) / s + 1;
-            const Connectivity cc = conn.coarsened(s, s);
-            std::vector<double> cx(static_cast<std::size_t>(nci) * ncj), cy(cx.size());
-            auto fine_index = [&](int i, int j) { return i * s + static_cast<std::size_t>(ni) * j * s; };
-            for (int j = 0; j < ncj; ++j)
-                for (int i = 0; i < nci; ++i) {
-                    cx[i + static_cast<std::size_t>(nci) * j] = p.grid.x[fine_index(i, j)];
-                    cy[i + static_cast<std::size_t>(nci) * j] = p.grid.y[fine_index(i, j)];
-                }
-            const ControlFields cf = p.controls.empty() ? ControlFields{} : coarse_controls(p.controls, ni, s, nci, ncj);
-            Level coarse;
-            coarse.conn = &cc;
-            coarse.x = cx.data();
-            coarse.y = cy.data();
-            coarse.controls = cf.empty() ? nullptr : &cf;
-            converge(p.system, coarse, extent, target, p.settings);
-            for (int j = 0; j < ncj; ++j)
-                for (int i = 0; i < nci; ++i) {
-                    p.grid.x[fine_index(i, j)] = cx[i + static_cast<std::size_t>(nci) * j];
-                    p.grid.y[fine_index(i, j)] = cy[i + static_cast<std::size_t>(nci) * j];
-                }
-            interpolate(conn, fine.x, s);
-            interpolate(conn, fine.y, s);
+        levels[0].level = fine;
+        levels[0].level.conn = &levels[0].conn;
+        for (std::size_t l = 1; l < levels.size(); ++l) {
+            MgLevel &c = levels[l];
+            const MgLevel &f = levels[l - 1];
+            inject(f.conn, f.level.x, c, c.x0.data());
+            inject(f.conn, f.level.y, c, c.y0.data());
+            c.x = c.x0;
+            c.y = c.y0;
+            c.level.x = c.x.data();
+            c.level.y = c.y.data();
+            c.level.fx = c.level.fy = nullptr;  // the plain equations on every level
+            restrict_controls(f.level.controls, f.conn, c);
+        }
+        converge(p.system, levels.back().level, extent, target, p.settings);
+        for (std::size_t l = levels.size() - 1; l > 0; --l) {
+            prolong_correction(levels[l], levels[l - 1].level);
+            if (l > 1) converge(p.system, levels[l - 1].level, extent, target, p.settings);
         }
         // A coarse grid can misrepresent strong control terms (an attraction
         // that decays within a few fine lines) and fold; such a start is
