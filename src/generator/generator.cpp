@@ -91,6 +91,7 @@ void Generator::set_coordinates(const double *x, const double *y) {
     grid_.set_coordinates(x, y);
     motions_.clear();  // the user's boundary is the boundary now
     changed_start();
+    fresh_start_ = false;
     controls_.invalidate();
 }
 
@@ -109,6 +110,7 @@ void Generator::initialize(int method) {
     grid_ = std::move(next);
     for (const auto &mo : motions_) mo->restart();
     changed_start();
+    fresh_start_ = true;
     controls_.invalidate();
 }
 
@@ -171,7 +173,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
     // over-relaxation diverge: automatic means 1 then.
     Settings run_settings = settings;
     if (controls_.has_dynamic() && run_settings.relaxation == 0.0) run_settings.relaxation = 1.0;
-    Problem problem{grid_, system_, fields, run_settings, controls_.has_dynamic()};
+    Problem problem{grid_, system_, fields, run_settings, controls_.has_dynamic(), fresh_start_};
     const double extent = grid_.extent();
     double r = finite_residual(system_, problem.level(), extent).value;
     double best = r;
@@ -224,6 +226,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
                         ri.j, iterations_));
         }
         ++iterations_;
+        fresh_start_ = problem.fresh_start = false;
         r = ri.value;
         solver_->observe(r, controls_.has_dynamic() ? controls_.mismatch() / extent : 0.0);
         best = std::min(best, r);

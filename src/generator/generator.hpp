@@ -88,6 +88,7 @@ private:
     const SolverInfo *solver_info_;
     std::unique_ptr<Solver> solver_;
     int iterations_ = 0;
+    bool fresh_start_ = false;  // the interior is an initializer's and no iteration ran (Problem::fresh_start)
     std::vector<double> saved_x_, saved_y_;  // the last good grid of a run
     std::vector<std::shared_ptr<const BoundaryMotion>> motions_;
 };

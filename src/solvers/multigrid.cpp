@@ -69,7 +69,10 @@ public:
             saved_y_ = p.grid.y;
             if (folded_ < 0) folded_ = fold_summary(p.grid).folded;
         }
-        if (!started_ && st.mg_fmg != 0.0) full_multigrid();
+        // FMG builds a start from the coarsest grid: better than TFI, worse
+        // than a grid the user set or one already solved (a restart, a
+        // boundary moved a little), which the cycles take as it is.
+        if (!started_ && st.mg_fmg != 0.0 && p.fresh_start) full_multigrid();
         else cycle(0);
         started_ = true;
         if (guard) {

@@ -21,6 +21,11 @@ struct Problem {
     // iterations (wall orthogonality): its update assumes each iteration
     // moves the grid a little, which a multilevel cycle does not.
     bool dynamic_controls = false;
+    // True while the interior is an initial-grid method's (TFI) and no
+    // iteration has run: a multilevel solver may then build its own start
+    // from the coarsest grid (FMG). A grid the user set, or one already
+    // iterated, is a better start than that, and is kept.
+    bool fresh_start = true;
 
     // The fine grid as an operator Level.
     Level level() const {

@@ -70,8 +70,9 @@ static void test_same_grid_as_psor(void **state) {
     }
 }
 
-/* Sizes with few factors of two: odd counts stop coarsening early, Winslow
- * semicoarsens the direction that still can, 4 x 4 has no coarse level. */
+/* Sizes with few factors of two (they coarsen with uneven coarse spacing),
+ * Winslow semicoarsening the direction that still can, 4 x 4 with no coarse
+ * level. */
 static void test_awkward_sizes(void **state) {
     (void)state;
     check_same_as_psor("swan", 37, 23, EG2D_SYSTEM_WINSLOW);
@@ -296,6 +297,105 @@ static void test_long_thin_grid(void **state) {
     free(y);
 }
 
+/* Cycles to 1e-10 of an n x n (or n x (n/2+1), annulus) grid, with FMG. */
+static int cycles_at(const char *domain, int ni, int nj) {
+    eg2d_grid *g;
+    int it;
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    if (!strcmp(domain, "annulus")) assert_int_equal(domain_set_annulus(g, 1.0, 3.0), EG2D_OK);
+    else if (!strcmp(domain, "naca0012-c")) assert_int_equal(domain_set_airfoil_c(g, "0012", ni / 4, 5.0), EG2D_OK);
+    else assert_int_equal(domain_set(g, domain), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
+    eg2d_destroy(g);
+    return it;
+}
+
+/* Any size coarsens: every n from 17 to 70 on the swan converges within 2
+ * cycles of 65 x 65 (before any-size coarsening, 18 x 18 took 40 and
+ * 64 x 64 over 170). */
+static void test_every_size_from_17_to_70(void **state) {
+    const int ref = cycles_at("swan", 65, 65);
+    int n, worst = ref;
+    (void)state;
+    for (n = 17; n <= 70; ++n) {
+        const int k = cycles_at("swan", n, n);
+        if (abs(k - ref) > 2) fail_msg("swan %dx%d: %d cycles, 65x65: %d", n, n, k, ref);
+        if (k > worst) worst = k;
+    }
+    print_message("multigrid swan 17^2..70^2: at most %d cycles (65^2: %d)\n", worst, ref);
+}
+
+/* O- and C-grids with even and odd counts round the body and across it take
+ * the cycles of the 2^k+1 size. */
+static void test_o_and_c_grids_odd_and_even(void **state) {
+    const char *domains[] = {"annulus", "naca0012-c"};
+    const int sizes[][2] = {{64, 33}, {66, 34}, {100, 51}, {128, 65}, {130, 66}};
+    int d, s;
+    (void)state;
+    for (d = 0; d < 2; ++d) {
+        const int c = d == 1;
+        const int ref = c ? cycles_at(domains[d], 129, 33) : cycles_at(domains[d], 129, 65);
+        for (s = 0; s < 5; ++s) {
+            const int ni = sizes[s][0], nj = c ? ni / 4 + 1 : sizes[s][1];
+            const int k = cycles_at(domains[d], ni, nj);
+            print_message("multigrid %-10s %3dx%-3d: %d cycles (129: %d)\n", domains[d], ni, nj, k, ref);
+            if (k > ref + 1 || k < ref - 1) fail_msg("%s %dx%d: %d cycles, 129: %d", domains[d], ni, nj, k, ref);
+        }
+    }
+}
+
+/* A converged grid moved by 1e-3 of its local spacing and handed back
+ * (a restart, a design loop) is not thrown away by the FMG start: the cycles
+ * start from it and converge in at most 3. */
+static void test_restart_keeps_the_start(void **state) {
+    const char *domains[] = {"swan", "annulus", "naca0012-c"};
+    const int ni[] = {250, 130, 130}, nj[] = {250, 66, 33};
+    int d;
+    (void)state;
+    for (d = 0; d < 3; ++d) {
+        const int n = ni[d] * nj[d];
+        double *x = alloc(n), *y = alloc(n);
+        eg2d_grid *g;
+        int i, j, it;
+        unsigned seed = 12345u;
+        assert_int_equal(eg2d_create(ni[d], nj[d], &g), EG2D_OK);
+        if (d == 1) assert_int_equal(domain_set_annulus(g, 1.0, 3.0), EG2D_OK);
+        else if (d == 2) assert_int_equal(domain_set_airfoil_c(g, "0012", ni[d] / 4, 5.0), EG2D_OK);
+        else assert_int_equal(domain_set(g, domains[d]), EG2D_OK);
+        assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
+        assert_int_equal(eg2d_solve(g), EG2D_OK);
+        assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+        for (j = 1; j < nj[d] - 1; ++j)
+            for (i = 1; i < ni[d] - 1; ++i) {
+                const int k = i + ni[d] * j;
+                const double h = hypot(x[k + 1] - x[k], y[k + 1] - y[k]);
+                double u, v;
+                seed = seed * 1103515245u + 12345u;
+                u = (double)(seed >> 8) / 16777216.0 - 0.5;
+                seed = seed * 1103515245u + 12345u;
+                v = (double)(seed >> 8) / 16777216.0 - 0.5;
+                x[k] += 2e-3 * h * u;
+                y[k] += 2e-3 * h * v;
+            }
+        if (d == 1) /* the O-grid's cut column ni-1 is column 0 */
+            for (j = 0; j < nj[d]; ++j) {
+                x[ni[d] - 1 + ni[d] * j] = x[ni[d] * j];
+                y[ni[d] - 1 + ni[d] * j] = y[ni[d] * j];
+            }
+        assert_int_equal(eg2d_set_coordinates(g, x, y), EG2D_OK);
+        assert_int_equal(eg2d_solve(g), EG2D_OK);
+        assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
+        print_message("multigrid %-10s %dx%d restart from the solution moved by 1e-3 h: %d cycles\n", domains[d],
+                      ni[d], nj[d], it);
+        assert_true(it <= 3);
+        eg2d_destroy(g);
+        free(x);
+        free(y);
+    }
+}
+
 static void test_parameters_and_default(void **state) {
     eg2d_grid *g;
     double v, lo, hi, def, x[9 * 9], y[9 * 9], x2[9 * 9], y2[9 * 9], r;
@@ -352,6 +452,9 @@ int main(void) {
         cmocka_unit_test(test_cycle_options),
         cmocka_unit_test(test_long_thin_grid),
         cmocka_unit_test(test_parameters_and_default),
+        cmocka_unit_test(test_every_size_from_17_to_70),
+        cmocka_unit_test(test_o_and_c_grids_odd_and_even),
+        cmocka_unit_test(test_restart_keeps_the_start),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
