@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "bench.h"
+#include "domains.h"
 
 typedef struct {
     eg2d_grid *g;
@@ -32,32 +33,6 @@ static int watch_change(void *user, int iteration, double residual) {
     return 0;
 }
 
-/* The body r = 1 + 0.25 cos 2t + 0.15 sin 3t + 0.08 cos 5t inside the circle r = 8. */
-static int set_blob(eg2d_grid *g, int ni) {
-    double *x = malloc(sizeof(double) * (size_t)ni * 2), *y = x + ni;
-    int i, status;
-    for (i = 0; i < ni; ++i) {
-        const double t = 2 * 3.14159265358979323846 * i / (ni - 1);
-        const double r = 1 + 0.25 * cos(2 * t) + 0.15 * sin(3 * t) + 0.08 * cos(5 * t);
-        x[i] = r * cos(t);
-        y[i] = r * sin(t);
-    }
-    x[ni - 1] = x[0];
-    y[ni - 1] = y[0];
-    status = eg2d_set_topology(g, EG2D_TOPO_O);
-    if (!status) status = eg2d_set_side(g, EG2D_SIDE_JMIN, x, y);
-    for (i = 0; i < ni; ++i) {
-        const double t = 2 * 3.14159265358979323846 * i / (ni - 1);
-        x[i] = 8 * cos(t);
-        y[i] = 8 * sin(t);
-    }
-    x[ni - 1] = x[0];
-    y[ni - 1] = y[0];
-    if (!status) status = eg2d_set_side(g, EG2D_SIDE_JMAX, x, y);
-    free(x);
-    return status;
-}
-
 typedef struct {
     int e_iterations, iterations; /* to E < 5e-5; to the residual 1e-10 (-1: never) */
     double e_residual;
@@ -67,7 +42,7 @@ static seed004_result seed004_run(int solver, double omega) {
     const int ni = 87, nj = 31;
     seed004_result out = {-1, -1, 0};
     change_watch c;
-    if (eg2d_create(ni, nj, &c.g) || set_blob(c.g, ni) || eg2d_set_solver(c.g, solver) ||
+    if (eg2d_create(ni, nj, &c.g) || domain_set_blob(c.g) || eg2d_set_solver(c.g, solver) ||
         eg2d_initialize(c.g, EG2D_INIT_TFI)) {
         eg2d_destroy(c.g);
         return out;

@@ -195,3 +195,32 @@ int domain_set_rectangle_columns(eg2d_grid *g, const double *X, double height) {
     free(y);
     return status;
 }
+
+int domain_set_blob(eg2d_grid *g) {
+    int ni, nj, i, status;
+    double *x, *y;
+    if ((status = eg2d_get_size(g, &ni, &nj))) return status;
+    x = malloc(sizeof(double) * (size_t)ni * 2);
+    if (!x) return EG2D_ERR_MEMORY;
+    y = x + ni;
+    for (i = 0; i < ni; ++i) {
+        const double t = 2 * EG2D_TEST_PI * i / (ni - 1);
+        const double r = 1 + 0.25 * cos(2 * t) + 0.15 * sin(3 * t) + 0.08 * cos(5 * t);
+        x[i] = r * cos(t);
+        y[i] = r * sin(t);
+    }
+    x[ni - 1] = x[0];
+    y[ni - 1] = y[0];
+    status = eg2d_set_topology(g, EG2D_TOPO_O);
+    if (!status) status = eg2d_set_side(g, EG2D_SIDE_JMIN, x, y);
+    for (i = 0; i < ni; ++i) {
+        const double t = 2 * EG2D_TEST_PI * i / (ni - 1);
+        x[i] = 8 * cos(t);
+        y[i] = 8 * sin(t);
+    }
+    x[ni - 1] = x[0];
+    y[ni - 1] = y[0];
+    if (!status) status = eg2d_set_side(g, EG2D_SIDE_JMAX, x, y);
+    free(x);
+    return status;
+}

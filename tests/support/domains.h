@@ -31,6 +31,11 @@ int domain_set_airfoil_o(eg2d_grid *grid, const char *digits, double radius);
  * the outflow lines. ni - 2 wake points lie on the section. */
 int domain_set_airfoil_c(eg2d_grid *grid, const char *digits, int wake, double radius);
 
+/* The body r = 1 + 0.25 cos 2t + 0.15 sin 3t + 0.08 cos 5t (an irregular
+ * blob) inside the circle r = 8, as an O-grid: the setup of Tai, Chiang &
+ * Su's comparison of point, line and AF schemes (87 x 31 there). */
+int domain_set_blob(eg2d_grid *grid);
+
 /* The rectangle [0,1] x [0,height] whose bottom and top nodes sit at x = X[i]
  * (ni values from 0 to 1) and whose left and right sides are uniform in y.
  * Sets the four sides; returns the eg2d status. */
