@@ -39,26 +39,26 @@ inline Row line_row(System system, const Level &L, const Stencil &s, bool along_
 
 // A periodic xi-line (an O-grid's ring j) moves as a whole: its uniform mode
 // is held only by 2*gamma in the line matrix, while a strong eta source
-// (Ly & Norrison's 2007 eq. 14 control, mu >= 12, next to the wall) enters through the
-// explicit eta-neighbours, and the ring's correction can exceed the distance
-// to the next ring; the sweep then folds the rings one after another and
-// diverges. The correction is scaled so that no node of the ring moves more
-// than its distance to the nearest neighbour (kRingStep = 1). A smooth
-// iteration's corrections are far smaller, and are not changed.
-constexpr double kRingStep = 1.0;
+// (Ly & Norrison's 2007 eq. 14 control, mu >= 12, next to the wall) enters
+// through the explicit eta-neighbours, and the ring's correction can carry
+// it onto the next ring; the sweep then folds the rings one after another
+// and diverges. The correction is scaled so that no node moves more than
+// kRingStep of the way toward its neighbours on the rings j-1 and j+1; moves
+// along the ring, and the smooth corrections of a converging iteration, are
+// far smaller and are not changed.
+constexpr double kRingStep = 0.5;
 inline double ring_step_limit(const Level &L, int j, const LineWork &w) {
     const Connectivity &conn = *L.conn;
     double scale = 1.0;
     for (int i = 0; i < conn.i_end(); ++i) {
         const Stencil s = conn.stencil(i, j);
-        auto dist2 = [&](std::ptrdiff_t o) {
-            const double dx = L.x[o] - L.x[s.c], dy = L.y[o] - L.y[s.c];
-            return dx * dx + dy * dy;
-        };
-        const double h2 = std::min({dist2(s.e), dist2(s.w), dist2(s.n), dist2(s.s)});
-        const double d2 = w.dx[static_cast<std::size_t>(i)] * w.dx[static_cast<std::size_t>(i)] +
-                          w.dy[static_cast<std::size_t>(i)] * w.dy[static_cast<std::size_t>(i)];
-        if (d2 * scale * scale > kRingStep * kRingStep * h2) scale = kRingStep * std::sqrt(h2 / d2);
+        const double dx = w.dx[static_cast<std::size_t>(i)], dy = w.dy[static_cast<std::size_t>(i)];
+        for (const std::ptrdiff_t o : {s.n, s.s}) {
+            const double ex = L.x[o] - L.x[s.c], ey = L.y[o] - L.y[s.c];
+            // The fraction of the way to neighbour o: (d . e) / |e|^2.
+            const double toward = (dx * ex + dy * ey) * scale, room = kRingStep * (ex * ex + ey * ey);
+            if (toward > room) scale *= room / toward;
+        }
     }
     return scale;
 }
@@ -99,7 +99,7 @@ void relax_xi_line(System system, const Level &L, int j, double omega, LineWork 
         solve_tridiagonal2(n, w.a.data(), w.b.data(), w.c.data(), w.dx.data(), w.dy.data());
     }
     double *x = L.x + row + i0, *y = L.y + row + i0;
-    const double step = omega * (conn.periodic_i() ? ring_step_limit(L, j, w) : 1.0);
+    const double step = omega * (conn.periodic_i() && w.limit_ring_steps ? ring_step_limit(L, j, w) : 1.0);
     for (std::size_t k = 0; k < n; ++k) {
         x[k] += step * w.dx[k];
         y[k] += step * w.dy[k];

@@ -20,6 +20,12 @@ namespace eg2d {
 struct LineWork {
     std::vector<double> a, b, c, dx, dy, cyclic;
     std::vector<double> grid_c, grid_dx, grid_dy;  // zebra eta sweeps: all lines of a colour at once
+    // Scale an O-grid ring's correction so that no node moves more than half
+    // way to the next ring (line_relax.cpp, ring_step_limit). Off while the
+    // wall control is updated between iterations: its ramp moves the first
+    // rings by about their spacing per iteration, and limiting that slowed
+    // it 3x (test_controls_wall); the wall layer's redesign will revisit it.
+    bool limit_ring_steps = true;
     void reserve(int n);
 };
 

@@ -25,6 +25,7 @@ class LineSor final : public Solver {
 public:
     void iterate(Problem &p) override {
         const Level L = p.level();
+        work_.limit_ring_steps = !p.dynamic_controls;
         const double given = p.settings.relaxation;
         if (given > 0.0) return sweep(p.system, L, LineOmega{given, given});
         const LineOmega target = optimal_line_sor_omega(*L.conn);

@@ -145,6 +145,7 @@ private:
         levels_[0].singular = singular_nodes(conn, fine.x, fine.y);
         for (std::size_t l = 1; l < levels_.size(); ++l) levels_[l].singular = coarse_nodes(levels_[l - 1].singular, levels_[l]);
         for (MgLevel &m : levels_) m.trailing_edge = cut_ends(m.conn);
+        for (MgLevel &m : levels_) m.work.limit_ring_steps = !p.dynamic_controls;
         pre_ = static_cast<int>(p.settings.mg_pre_smooth);
         post_ = static_cast<int>(p.settings.mg_post_smooth);
         gamma_ = static_cast<int>(p.settings.mg_cycle);
