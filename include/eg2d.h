@@ -478,6 +478,25 @@ EG2D_API int eg2d_get_residual(const eg2d_grid *grid, double *residual);
 /* Iterations done since the grid was last initialised or given coordinates. */
 EG2D_API int eg2d_get_iterations(const eg2d_grid *grid, int *iterations);
 
+/* What the last eg2d_iterate or eg2d_solve actually ran, so that no change of
+ * strategy is silent: eg2d_get_run_info gives one figure, eg2d_get_run_event
+ * the k-th change of strategy (k from 0 to EG2D_RUN_EVENTS - 1) with the
+ * iteration during which it happened and a sentence that says what and why
+ * ("multigrid: the 9x5 level went non-finite ...; it and the 1 coarser ones
+ * are dropped, ..."; "multigrid: a cycle under the wall control added folded
+ * cells ...; the run goes on with line sweeps"). Both may be called from the
+ * monitor, where they describe the run so far. Before any run: solver -1, 1
+ * level, no events. EG2D_ERR_ARGUMENT for an unknown `what`, an index out of
+ * range or a NULL pointer; the message is cut to size - 1 bytes and always
+ * terminated (size 0 with message NULL asks for nothing but the iteration;
+ * size < 0 is an error). */
+#define EG2D_RUN_SOLVER       0  /* the EG2D_SOLVER_* that ran */
+#define EG2D_RUN_LEVELS       1  /* grid levels in use at the end (1: the fine grid alone) */
+#define EG2D_RUN_LEVELS_BUILT 2  /* levels the grid's size allowed (multigrid, nested) */
+#define EG2D_RUN_EVENTS       3  /* changes of strategy during the run */
+EG2D_API int eg2d_get_run_info(const eg2d_grid *grid, int what, int *value);
+EG2D_API int eg2d_get_run_event(const eg2d_grid *grid, int index, int *iteration, char *message, int size);
+
 /*=====================================================================
  * Quality
  *===================================================================*/

@@ -364,6 +364,22 @@ public:
         check(::eg2d_get_iterations(g_, &n));
         return n;
     }
+    // What the last iterate/solve ran (EG2D_RUN_*), and its changes of strategy.
+    int get_run_info(int what) const {
+        int v = 0;
+        check(::eg2d_get_run_info(g_, what, &v));
+        return v;
+    }
+    std::vector<std::pair<int, std::string>> get_run_events() const {
+        std::vector<std::pair<int, std::string>> out;
+        char buf[512];
+        for (int k = 0, n = get_run_info(EG2D_RUN_EVENTS); k < n; ++k) {
+            int it = 0;
+            check(::eg2d_get_run_event(g_, k, &it, buf, static_cast<int>(sizeof buf)));
+            out.emplace_back(it, buf);
+        }
+        return out;
+    }
     double get_quality(int metric) const {
         double v = 0;
         check(::eg2d_get_quality(g_, metric, &v));

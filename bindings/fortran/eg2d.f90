@@ -62,6 +62,8 @@ module eg2d
     procedure :: get_coordinates => grid_get_coordinates
     procedure :: get_residual => grid_get_residual
     procedure :: get_iterations => grid_get_iterations
+    procedure :: get_run_info => grid_get_run_info
+    procedure :: get_run_event => grid_get_run_event
     procedure :: get_quality => grid_get_quality
     procedure :: get_cell_quality => grid_get_cell_quality
     procedure :: write => grid_write
@@ -499,6 +501,39 @@ contains
     call finish(self, eg2d_get_iterations(self%handle, n), status)
     iterations = int(n)
   end subroutine grid_get_iterations
+
+  ! What the last iterate/solve ran: what = EG2D_RUN_SOLVER, _LEVELS, _LEVELS_BUILT, _EVENTS.
+  subroutine grid_get_run_info(self, what, value, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: what
+    integer, intent(out) :: value
+    integer, intent(out), optional :: status
+    integer(c_int) :: v
+    v = 0
+    call finish(self, eg2d_get_run_info(self%handle, int(what, c_int), v), status)
+    value = int(v)
+  end subroutine grid_get_run_info
+
+  ! The k-th change of strategy of the last run (k from 0): its iteration and message.
+  subroutine grid_get_run_event(self, index, iteration, message, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: index
+    integer, intent(out) :: iteration
+    character(len=*), intent(out) :: message
+    integer, intent(out), optional :: status
+    character(kind=c_char) :: buf(512)
+    integer(c_int) :: it
+    integer :: k
+    it = 0
+    buf = c_null_char
+    call finish(self, eg2d_get_run_event(self%handle, int(index, c_int), it, buf, int(size(buf), c_int)), status)
+    iteration = int(it)
+    message = ''
+    do k = 1, min(len(message), size(buf))
+      if (buf(k) == c_null_char) exit
+      message(k:k) = buf(k)
+    end do
+  end subroutine grid_get_run_event
 
   subroutine grid_get_quality(self, metric, value, status)
     class(eg2d_grid_t), intent(inout) :: self

@@ -42,6 +42,38 @@ EG2D_API int eg2d_get_iterations(const eg2d_grid *grid, int *iterations) {
     });
 }
 
+EG2D_API int eg2d_get_run_info(const eg2d_grid *grid, int what, int *value) {
+    return guard(grid, "eg2d_get_run_info", [&] {
+        require_ptr(value, "value");
+        const RunReport &r = grid->gen.report();
+        switch (what) {
+        case EG2D_RUN_SOLVER: *value = r.solver; break;
+        case EG2D_RUN_LEVELS: *value = r.levels; break;
+        case EG2D_RUN_LEVELS_BUILT: *value = r.levels_built; break;
+        case EG2D_RUN_EVENTS: *value = static_cast<int>(r.events.size()); break;
+        default: require(false, format("what = %d: not an EG2D_RUN_* id", what));
+        }
+    });
+}
+
+EG2D_API int eg2d_get_run_event(const eg2d_grid *grid, int index, int *iteration, char *message, int size) {
+    return guard(grid, "eg2d_get_run_event", [&] {
+        const RunReport &r = grid->gen.report();
+        require(index >= 0 && static_cast<std::size_t>(index) < r.events.size(),
+                format("index = %d: the last run has %zu event%s", index, r.events.size(),
+                       r.events.size() == 1 ? "" : "s"));
+        require(size >= 0, format("size = %d: must be >= 0", size));
+        require(size == 0 || message != nullptr, format("message is NULL but size is %d", size));
+        const RunEvent &e = r.events[static_cast<std::size_t>(index)];
+        if (iteration) *iteration = e.iteration;
+        if (size > 0) {
+            const std::size_t n = std::min(static_cast<std::size_t>(size) - 1, e.message.size());
+            std::copy(e.message.begin(), e.message.begin() + static_cast<std::ptrdiff_t>(n), message);
+            message[n] = '\0';
+        }
+    });
+}
+
 EG2D_API int eg2d_get_quality(const eg2d_grid *grid, int metric, double *value) {
     return guard(grid, "eg2d_get_quality", [&] {
         require_ptr(value, "value");

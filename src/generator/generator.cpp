@@ -173,7 +173,9 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
     // over-relaxation diverge: automatic means 1 then.
     Settings run_settings = settings;
     if (controls_.has_dynamic() && run_settings.relaxation == 0.0) run_settings.relaxation = 1.0;
-    Problem problem{grid_, system_, fields, run_settings, controls_.has_dynamic(), fresh_start_};
+    report_ = RunReport{};
+    report_.solver = solver_info_->id;
+    Problem problem{grid_, system_, fields, run_settings, controls_.has_dynamic(), fresh_start_, &report_};
     const double extent = grid_.extent();
     double r = finite_residual(system_, problem.level(), extent).value;
     double best = r;
@@ -206,6 +208,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
                     return RunEnd::Converged;
             }
         }
+        report_.iteration = iterations_ + 1;
         solver_->iterate(problem);
         for (const auto &m : motions_) m->apply(grid_);  // sliding sides follow the interior
         const ResidualInfo ri = eg2d::residual(system_, problem.level(), extent);

@@ -65,6 +65,8 @@ public:
     // NUMERICS.md's residual of the grid as it is. Needs an initialised grid.
     ResidualInfo residual() const;
     int iterations() const { return iterations_; }
+    // What the last eg2d_iterate/eg2d_solve ran (solvers/run_report.hpp).
+    const RunReport &report() const { return report_; }
 
     // Throws State unless the boundary is complete and the grid initialised.
     void require_initialized(const char *what) const;
@@ -88,7 +90,8 @@ private:
     const SolverInfo *solver_info_;
     std::unique_ptr<Solver> solver_;
     int iterations_ = 0;
-    bool fresh_start_ = false;  // the interior is an initializer's and no iteration ran (Problem::fresh_start)
+    bool fresh_start_ = false;
+    RunReport report_;  // the interior is an initializer's and no iteration ran (Problem::fresh_start)
     std::vector<double> saved_x_, saved_y_;  // the last good grid of a run
     std::vector<std::shared_ptr<const BoundaryMotion>> motions_;
 };

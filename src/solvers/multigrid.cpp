@@ -80,6 +80,10 @@ public:
                                 std::all_of(p.grid.y.begin(), p.grid.y.end(), [](double v) { return std::isfinite(v); });
             const long folded = finite ? fold_summary(p.grid).folded : folded_ + 1;
             if (folded > folded_) {
+                note(finite ? format("multigrid: a cycle under the wall control added folded cells (%ld, from %ld); "
+                                     "it is undone and the run goes on with line sweeps", folded, folded_)
+                            : std::string("multigrid: a cycle under the wall control went non-finite; it is undone "
+                                          "and the run goes on with line sweeps"));
                 // Copied back, not swapped: level 0 points into the grid's own arrays.
                 std::copy(saved_x_.begin(), saved_x_.end(), p.grid.x.begin());
                 std::copy(saved_y_.begin(), saved_y_.end(), p.grid.y.begin());
@@ -112,6 +116,8 @@ public:
             stall_count_ = 0;
         } else if (++stall_count_ >= kStallCycles) {
             sweeps_only_ = true;
+            note(format("multigrid: under the wall control no progress in %d cycles (best %.3g); the run goes on "
+                        "with line sweeps", kStallCycles, stall_best_));
         }
     }
 
@@ -146,6 +152,14 @@ private:
         for (std::size_t l = 1; l < levels_.size(); ++l) levels_[l].singular = coarse_nodes(levels_[l - 1].singular, levels_[l]);
         for (MgLevel &m : levels_) m.trailing_edge = cut_ends(m.conn);
         for (MgLevel &m : levels_) m.work.limit_ring_steps = !p.dynamic_controls;
+        report_ = p.report;
+        if (report_) {
+            report_->levels = static_cast<int>(levels_.size());
+            report_->levels_built = std::max(report_->levels_built, static_cast<int>(levels_.size()));
+            if (levels_.size() == 1 && report_->events.empty())
+                note(format("multigrid: the %dx%d grid has no coarse level (a direction of %d nodes or fewer "
+                            "stays); a cycle is its smoothing sweeps", conn.ni(), conn.nj(), coarsest));
+        }
         pre_ = static_cast<int>(p.settings.mg_pre_smooth);
         post_ = static_cast<int>(p.settings.mg_post_smooth);
         gamma_ = static_cast<int>(p.settings.mg_cycle);
@@ -204,7 +218,14 @@ private:
         const MgLevel &c = levels_[l + 1];
         for (std::size_t k = 0; k < c.size(); ++k)
             if (!std::isfinite(c.x[k]) || !std::isfinite(c.y[k])) {
+                const std::size_t below = levels_.size() - l - 2;
+                std::string why = format("multigrid: the %dx%d level went non-finite (too coarse for the geometry); "
+                                         "it is dropped%s, and the cycles go on with %zu level%s",
+                                         c.conn.ni(), c.conn.nj(),
+                                         below ? format(" with the %zu coarser", below).c_str() : "", l + 1,
+                                         l ? "s" : "");
                 levels_.erase(levels_.begin() + static_cast<std::ptrdiff_t>(l) + 1, levels_.end());
+                note(std::move(why));
                 return false;
             }
         return true;
@@ -243,7 +264,15 @@ private:
         }
     }
 
+    void note(std::string message) {
+        if (report_) {
+            report_->note(std::move(message));
+            report_->levels = static_cast<int>(levels_.size());
+        }
+    }
+
     std::vector<MgLevel> levels_;
+    RunReport *report_ = nullptr;  // the run's, set by prepare()
     System system_ = System::Winslow;
     int coarsest_ = 0, pre_ = 1, post_ = 1, gamma_ = 1;
     double floor_ = 0.0;

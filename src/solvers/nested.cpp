@@ -20,6 +20,7 @@
 #include <cmath>
 #include <vector>
 
+#include "base/error.hpp"
 #include "base/folds.hpp"
 #include "solvers/auto_relaxation.hpp"
 #include "solvers/multigrid_hierarchy.hpp"
@@ -55,6 +56,7 @@ private:
     void coarse_to_fine(Problem &p) {
         const Level fine = p.level();
         std::vector<MgLevel> levels = build_hierarchy(*fine.conn, p.system, kCoarsestNodes);
+        if (p.report) p.report->levels = p.report->levels_built = static_cast<int>(levels.size());
         if (levels.size() < 2) return;
         const double extent = p.grid.extent();
         const std::vector<double> start_x = p.grid.x, start_y = p.grid.y;
@@ -82,7 +84,10 @@ private:
         // A coarse grid can misrepresent strong control terms (an attraction
         // that decays within a few fine lines) and fold; such a start is
         // worse than none.
-        if (fold_summary(p.grid).folded > folded_before) {
+        const long folded = fold_summary(p.grid).folded;
+        if (folded > folded_before) {
+            p.note(format("nested: the coarse-to-fine start folded %ld cells (the start had %ld); it is dropped "
+                          "and point SOR goes on from the start", folded, folded_before));
             p.grid.x = start_x;
             p.grid.y = start_y;
         }

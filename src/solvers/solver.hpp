@@ -9,6 +9,7 @@
 #include "base/grid.hpp"
 #include "operator/operator.hpp"
 #include "operator/system.hpp"
+#include "solvers/run_report.hpp"
 
 namespace eg2d {
 
@@ -26,6 +27,12 @@ struct Problem {
     // from the coarsest grid (FMG). A grid the user set, or one already
     // iterated, is a better start than that, and is kept.
     bool fresh_start = true;
+    // Where the solver says what it did (levels, fallbacks); may be null.
+    RunReport *report = nullptr;
+
+    void note(std::string message) const {
+        if (report) report->note(std::move(message));
+    }
 
     // The fine grid as an operator Level.
     Level level() const {

@@ -396,6 +396,83 @@ static void test_restart_keeps_the_start(void **state) {
     }
 }
 
+/* The monitor sees what the run is running. */
+static int run_solver_seen;
+static int watch_solver(void *user, int iteration, double residual) {
+    (void)iteration;
+    (void)residual;
+    assert_int_equal(eg2d_get_run_info((const eg2d_grid *)user, EG2D_RUN_SOLVER, &run_solver_seen), EG2D_OK);
+    return 0;
+}
+
+/* What ran: the solver and its levels, and every change of strategy with its
+ * iteration and reason; a forced fallback (cycles under the wall control
+ * that fold a cell, NACA 0012 65x17 at a 1e-4 wall) is reported. */
+static void test_run_report(void **state) {
+    eg2d_grid *g;
+    int v, it, n, k, found = 0;
+    char msg[512];
+    (void)state;
+    /* Before any run. */
+    assert_int_equal(eg2d_create(65, 65, &g), EG2D_OK);
+    assert_int_equal(eg2d_get_run_info(g, EG2D_RUN_SOLVER, &v), EG2D_OK);
+    assert_int_equal(v, -1);
+    /* A plain run: all levels, no event; the monitor sees the solver. */
+    assert_int_equal(domain_set(g, "swan"), EG2D_OK);
+    assert_int_equal(eg2d_set_monitor(g, watch_solver, g), EG2D_OK);
+    run_solver_seen = -2;
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    assert_int_equal(run_solver_seen, EG2D_SOLVER_MULTIGRID);
+    assert_int_equal(eg2d_get_run_info(g, EG2D_RUN_SOLVER, &v), EG2D_OK);
+    assert_int_equal(v, EG2D_SOLVER_MULTIGRID);
+    assert_int_equal(eg2d_get_run_info(g, EG2D_RUN_LEVELS, &v), EG2D_OK);
+    assert_int_equal(v, 5); /* 65, 33, 17, 9, 5 */
+    assert_int_equal(eg2d_get_run_info(g, EG2D_RUN_LEVELS_BUILT, &v), EG2D_OK);
+    assert_int_equal(v, 5);
+    assert_int_equal(eg2d_get_run_info(g, EG2D_RUN_EVENTS, &v), EG2D_OK);
+    assert_int_equal(v, 0);
+    /* Bad arguments: an error that names them, nothing written. */
+    v = 7;
+    assert_int_equal(eg2d_get_run_info(g, 99, &v), EG2D_ERR_ARGUMENT);
+    assert_string_equal(eg2d_last_error(g), "eg2d_get_run_info: what = 99: not an EG2D_RUN_* id");
+    assert_int_equal(v, 7);
+    assert_int_equal(eg2d_get_run_info(g, EG2D_RUN_LEVELS, NULL), EG2D_ERR_ARGUMENT);
+    assert_int_equal(eg2d_get_run_event(g, 0, &it, msg, (int)sizeof msg), EG2D_ERR_ARGUMENT);
+    assert_string_equal(eg2d_last_error(g), "eg2d_get_run_event: index = 0: the last run has 0 events");
+    eg2d_destroy(g);
+    /* A grid without a coarse level says so. */
+    assert_int_equal(eg2d_create(4, 4, &g), EG2D_OK);
+    assert_int_equal(domain_set(g, "dome"), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    assert_int_equal(eg2d_get_run_info(g, EG2D_RUN_EVENTS, &v), EG2D_OK);
+    assert_int_equal(v, 1);
+    assert_int_equal(eg2d_get_run_event(g, 0, &it, msg, (int)sizeof msg), EG2D_OK);
+    assert_int_equal(it, 1);
+    assert_contains(msg, "multigrid: the 4x4 grid has no coarse level");
+    assert_int_equal(eg2d_get_run_event(g, 0, &it, msg, -1), EG2D_ERR_ARGUMENT);
+    assert_int_equal(eg2d_get_run_event(g, 0, &it, NULL, 0), EG2D_OK); /* the iteration alone */
+    assert_int_equal(eg2d_get_run_event(g, 0, NULL, msg, 10), EG2D_OK); /* cut, terminated */
+    assert_string_equal(msg, "multigrid");
+    eg2d_destroy(g);
+    /* A forced fallback. */
+    assert_int_equal(eg2d_create(65, 17, &g), EG2D_OK);
+    assert_int_equal(domain_set_airfoil_o(g, "0012", 10.0), EG2D_OK);
+    assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
+    assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 1e-4), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    assert_int_equal(eg2d_get_run_info(g, EG2D_RUN_EVENTS, &n), EG2D_OK);
+    for (k = 0; k < n; ++k) {
+        assert_int_equal(eg2d_get_run_event(g, k, &it, msg, (int)sizeof msg), EG2D_OK);
+        print_message("NACA0012 65x17, 1e-4 wall, event %d at iteration %d: %s\n", k, it, msg);
+        assert_true(it >= 1);
+        if (strstr(msg, "the run goes on with line sweeps")) found = 1;
+    }
+    assert_true(found);
+    assert_int_equal(eg2d_get_run_info(g, EG2D_RUN_LEVELS, &v), EG2D_OK);
+    assert_true(v < 4); /* levels were dropped, and said so */
+    eg2d_destroy(g);
+}
+
 static void test_parameters_and_default(void **state) {
     eg2d_grid *g;
     double v, lo, hi, def, x[9 * 9], y[9 * 9], x2[9 * 9], y2[9 * 9], r;
@@ -455,6 +532,7 @@ int main(void) {
         cmocka_unit_test(test_every_size_from_17_to_70),
         cmocka_unit_test(test_o_and_c_grids_odd_and_even),
         cmocka_unit_test(test_restart_keeps_the_start),
+        cmocka_unit_test(test_run_report),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -33,6 +33,7 @@ program test_wrappers
   real(eg2d_dp), allocatable :: xr(:, :), yr(:, :), px(:), py(:)
   integer :: st, m, n, k, it, u, fmt, nb
   integer(c_int), target :: calls
+  character(len=200) :: g_msg
 
   ! ---- free functions
   call check(eg2d_version_string() == '1.0.0', 'version string')
@@ -166,6 +167,19 @@ program test_wrappers
   call check(st == EG2D_OK .and. r > 0, 'iterate 2 with the residual')
   call g%iterate(1, status=st)
   call check_status(st, EG2D_OK, 'iterate 1 without the residual')
+  ! ---- what the run ran
+  call g%get_run_info(EG2D_RUN_SOLVER, m, st)
+  call check(st == EG2D_OK .and. m == EG2D_SOLVER_PSOR, 'run info: point SOR ran')
+  call g%get_run_info(EG2D_RUN_LEVELS, m, st)
+  call check(st == EG2D_OK .and. m == 1, 'run info: point SOR runs on the fine grid alone')
+  call g%get_run_info(EG2D_RUN_EVENTS, n, st)
+  call check(st == EG2D_OK .and. n == 0, 'run info: no change of strategy')
+  call g%get_run_info(99, n, st)
+  call check_status(st, EG2D_ERR_ARGUMENT, 'run info 99')
+  call check_contains(g%last_error(), 'not an EG2D_RUN_* id', 'its message')
+  call g%get_run_event(0, it, g_msg, st)
+  call check_status(st, EG2D_ERR_ARGUMENT, 'run event 0 of none')
+  call check_contains(g%last_error(), 'the last run has 0 events', 'its message')
   call g%solve(st)
   call check_status(st, EG2D_OK, 'solve')
   call g%get_residual(r, st)

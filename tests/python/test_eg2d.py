@@ -193,6 +193,22 @@ def test_solve_converges_and_quality():
             g.get_quality(99)
 
 
+def test_run_report():
+    with swan(33) as g:
+        g.solve()
+        assert g.get_run_info(eg2d.RUN_SOLVER) == eg2d.SOLVER_MULTIGRID
+        assert g.get_run_info(eg2d.RUN_LEVELS) == 4  # 33, 17, 9, 5
+        assert g.get_run_events() == []
+        with pytest.raises(eg2d.Error) as e:
+            g.get_run_info(99)
+        assert "not an EG2D_RUN_* id" in str(e.value)
+    with swan(4) as g:
+        g.solve()
+        events = g.get_run_events()
+        assert len(events) == 1 and events[0][0] == 1
+        assert events[0][1].startswith("multigrid: the 4x4 grid has no coarse level")
+
+
 def test_not_converged_keeps_iterations():
     with swan(33) as g:
         g.set_tolerance(1e-15)  # out of reach of 3 multigrid cycles

@@ -78,6 +78,8 @@ PROTOTYPES = {
     "eg2d_get_iterations": (c_int, [grid_p, int_p]),
     "eg2d_get_quality": (c_int, [grid_p, c_int, double_p]),
     "eg2d_get_cell_quality": (c_int, [grid_p, c_int, double_p]),
+    "eg2d_get_run_info": (c_int, [grid_p, c_int, int_p]),
+    "eg2d_get_run_event": (c_int, [grid_p, c_int, int_p, c_char_p, c_int]),
     # files (paths as bytes: os.fsencode)
     "eg2d_write": (c_int, [grid_p, c_char_p, c_int]),
     "eg2d_read_plot3d": (c_int, [c_char_p, c_int, int_p, int_p, int_p, int_p, double_p, double_p]),

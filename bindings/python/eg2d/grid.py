@@ -11,7 +11,7 @@ library's message; the grid is left as it was (runs keep their iterations,
 see eg2d.h). Node (i, j) of the C manual is x[i, j].
 """
 import os
-from ctypes import POINTER, byref, c_double, c_int
+from ctypes import POINTER, byref, c_double, c_int, create_string_buffer
 
 import numpy as np
 
@@ -239,6 +239,22 @@ class Grid(Handle):
         n = c_int()
         self._check(lib.eg2d_get_iterations(self._handle(), byref(n)))
         return n.value
+
+    def get_run_info(self, what):
+        """What the last iterate/solve ran: what is RUN_SOLVER, RUN_LEVELS, RUN_LEVELS_BUILT or RUN_EVENTS."""
+        v = c_int()
+        self._check(lib.eg2d_get_run_info(self._handle(), int(what), byref(v)))
+        return v.value
+
+    def get_run_events(self):
+        """The last run's changes of strategy, as (iteration, message) pairs."""
+        out = []
+        buf = create_string_buffer(512)
+        for k in range(self.get_run_info(C.RUN_EVENTS)):
+            it = c_int()
+            self._check(lib.eg2d_get_run_event(self._handle(), k, byref(it), buf, len(buf)))
+            out.append((it.value, buf.value.decode()))
+        return out
 
     def get_quality(self, metric):
         v = c_double()
