@@ -166,6 +166,24 @@ class ErrorMessages(unittest.TestCase):
         self.check('size = [9, 9]\n[solver]\nmethod = "multigrid"\nmg_fmg = "no"\n' + self.GOOD_SIDES, 3,
                    "CASE:4:10: key 'solver.mg_fmg': bad formula \"no\": Unexpected token \"no\" found at position 0.")
 
+    def test_prints_what_ran(self):
+        """The command says which solver ran on how many levels, and every change of strategy."""
+        with tempfile.TemporaryDirectory() as d:
+            for size, levels, note in (("[65, 65]", "solver multigrid, 5 grid levels (5 at the end)", None),
+                                       ("[4, 4]", "solver multigrid",
+                                        "note, iteration 1: multigrid: the 4x4 grid has no coarse level")):
+                path = os.path.join(d, "case.toml")
+                with open(path, "w") as f:
+                    f.write("size = " + size + '\n[solver]\nmethod = "multigrid"\n' +
+                            self.GOOD_SIDES.replace('y = "1"', 'y = "1 + 0.3 * s * (1 - s)"'))
+                code, stdout, stderr = run("run", path, "-o", os.path.join(d, "out"))
+                self.assertEqual(code, 0, stdout + stderr)
+                self.assertIn(levels + "\n", stdout)
+                if note:
+                    self.assertIn(note, stdout)
+                else:
+                    self.assertNotIn("note,", stdout)
+
     def test_toml_syntax(self):
         self.check('size = [9, 9\n', 3, "CASE:1:14: TOML syntax error: Error while parsing array: encountered end-of-file")
 

@@ -147,6 +147,28 @@ void write_outputs(eg2d_grid *g, const Case &c, const RunOptions &o) {
 
 }  // namespace
 
+// The solver that ran, its levels, and every change of strategy on the way
+// (eg2d_get_run_event): a fallback is never silent.
+static void print_what_ran(const eg2d_grid *g) {
+    int solver = -1, levels = 1, built = 1, events = 0;
+    eg2d_get_run_info(g, EG2D_RUN_SOLVER, &solver);
+    eg2d_get_run_info(g, EG2D_RUN_LEVELS, &levels);
+    eg2d_get_run_info(g, EG2D_RUN_LEVELS_BUILT, &built);
+    eg2d_get_run_info(g, EG2D_RUN_EVENTS, &events);
+    const char *name = eg2d_solver_name(solver);
+    if (!name) return;
+    if (built > 1)
+        std::printf("solver %s, %d grid level%s (%d at the end)\n", name, built, built == 1 ? "" : "s", levels);
+    else
+        std::printf("solver %s\n", name);
+    for (int k = 0; k < events; ++k) {
+        char message[512];
+        int iteration = 0;
+        if (eg2d_get_run_event(g, k, &iteration, message, static_cast<int>(sizeof message)) == EG2D_OK)
+            std::printf("  note, iteration %d: %s\n", iteration, message);
+    }
+}
+
 int run_case(const Case &c, const RunOptions &o) {
     eg2d_grid *raw = nullptr;
     check(nullptr, eg2d_create(c.ni, c.nj, &raw), c.size_at);
@@ -196,6 +218,7 @@ int run_case(const Case &c, const RunOptions &o) {
     }
     if (status == EG2D_OK)
         std::printf("converged in %d iterations, residual %.3e, %.2f s\n", iterations, residual, seconds);
+    print_what_ran(g);
     print_quality(g, c.topology);
     if (status != EG2D_OK)
         throw Failure(exit_code_for_status(status), c.file + ": " + eg2d_last_error(g) + " (no files written)");
