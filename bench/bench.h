@@ -24,6 +24,25 @@ const bench_case *bench_find_case(const char *name); /* NULL if none */
  * airfoils); the median, since the sharp trailing edge pinches a few cells. */
 double bench_wall_spacing(const eg2d_grid *g);
 
+/* One benchmark run (median times of `repeats`): TFI start, eg2d_solve. */
+typedef struct {
+    int iterations;
+    double wall, cpu, r0, r1, residual;
+    double residual_cpu;              /* CPU seconds of one eg2d_get_residual: 1 WU */
+    double wall_spacing, aspect_ratio; /* of the final grid */
+    const char *status;               /* "ok", "capped", "diverged", ... */
+    char message[200];
+    int levels, levels_built, events; /* what ran (eg2d_get_run_info) */
+    char event[200];                  /* the first change of strategy, if any */
+} bench_result;
+
+bench_result bench_run(const bench_case *c, int ni, int nj, int solver, double omega, int system, double tol,
+                       double cap, int repeats);
+
+/* The any-size sweep (--sweep): cycles, seconds and microseconds per node
+ * at sizes round 2^k, against the nearest 2^k+1 in the same run. */
+void bench_sweep(int repeats, const char *svg_path);
+
 /* Seed 004 Table 2 (--seed004). */
 void bench_seed004(void);
 

@@ -9,6 +9,9 @@
  *              multigrid in one run; swan 1025^2 multigrid against the point
  *              Gauss-Seidel extrapolated from its sweeps at 65^2 and 129^2
  *   eg2d_bench --seed004     seed 004 Table 2: an 87x31 O-grid, E < 5e-5 and 1e-10
+ *   eg2d_bench --sweep [--repeats N] [--svg FILE]
+ *              multigrid at 2^k, 2^k+1, 2^k+2 and round sizes from 65 to
+ *              1025 against the nearest 2^k+1 size (sweep.c)
  *
  * Cases (cases.c): swan, valley, annulus, annulus-source, naca0012,
  * naca0012-c, naca0012-wall. A solver name may carry ":omega" (psor:1
@@ -65,14 +68,7 @@ static int stop_at_cap(void *user, int iteration, double residual) {
     return 0;
 }
 
-typedef struct {
-    int iterations;
-    double wall, cpu, r0, r1, residual;
-    double residual_cpu;              /* CPU seconds of one eg2d_get_residual: 1 WU */
-    double wall_spacing, aspect_ratio; /* of the final grid */
-    const char *status;               /* "ok", "capped", "diverged", ... */
-    char message[200];
-} result;
+typedef bench_result result;
 
 /* The CPU seconds of one residual evaluation: the mean of at least 3 and at
  * least 0.02 s of them (the clock's resolution is far below that). */
@@ -88,7 +84,8 @@ static double residual_seconds(const eg2d_grid *g) {
     return c / k;
 }
 
-static result run_once(const bench_case *c, int n, int solver, double omega, int system, double tol, double cap) {
+static result run_once(const bench_case *c, int n, int nj, int solver, double omega, int system, double tol,
+                       double cap) {
     result res;
     eg2d_grid *g = NULL;
     watch w;
@@ -96,7 +93,7 @@ static result run_once(const bench_case *c, int n, int solver, double omega, int
     int status;
     memset(&res, 0, sizeof res);
     res.status = "error";
-    if (eg2d_create(n, c->size_nj(n), &g) != EG2D_OK || c->set(g) != EG2D_OK || eg2d_set_solver(g, solver) ||
+    if (eg2d_create(n, nj, &g) != EG2D_OK || c->set(g) != EG2D_OK || eg2d_set_solver(g, solver) ||
         eg2d_set_system(g, system) || eg2d_set_tolerance(g, tol) || eg2d_set_max_iterations(g, 1000000000) ||
         eg2d_set_relaxation(g, omega) || eg2d_set_parameter(g, EG2D_PARAM_FOLD_CHECK, 0) ||
         eg2d_initialize(g, EG2D_INIT_TFI) || eg2d_get_residual(g, &res.r0)) {
@@ -116,6 +113,14 @@ static result run_once(const bench_case *c, int n, int solver, double omega, int
     res.r1 = w.r1;
     eg2d_get_iterations(g, &res.iterations);
     eg2d_get_residual(g, &res.residual);
+    eg2d_get_run_info(g, EG2D_RUN_LEVELS, &res.levels);
+    eg2d_get_run_info(g, EG2D_RUN_LEVELS_BUILT, &res.levels_built);
+    eg2d_get_run_info(g, EG2D_RUN_EVENTS, &res.events);
+    if (res.events > 0 && !eg2d_get_run_event(g, 0, NULL, res.event, (int)sizeof res.event)) {
+        char *q;
+        for (q = res.event; *q; ++q)
+            if (*q == '"' || *q == '\\') *q = '\''; /* as JSON text */
+    }
     res.residual_cpu = residual_seconds(g);
     res.wall_spacing = bench_wall_spacing(g);
     if (eg2d_get_quality(g, EG2D_QUALITY_ASPECT_RATIO, &res.aspect_ratio)) res.aspect_ratio = NAN;
@@ -136,13 +141,13 @@ static int cmp_double(const void *a, const void *b) {
 }
 
 /* Median times of `repeats` runs; a capped or failed run is not repeated. */
-static result run_median(const bench_case *c, int n, int solver, double omega, int system, double tol, double cap,
-                         int repeats) {
+result bench_run(const bench_case *c, int n, int nj, int solver, double omega, int system, double tol, double cap,
+                 int repeats) {
     double wall[99], cpu[99], wu[99];
     result res;
     int r;
     for (r = 0; r < repeats; ++r) {
-        res = run_once(c, n, solver, omega, system, tol, cap);
+        res = run_once(c, n, nj, solver, omega, system, tol, cap);
         wall[r] = res.wall;
         cpu[r] = res.cpu;
         wu[r] = res.residual_cpu;
@@ -188,11 +193,12 @@ static void print_row(const char *case_name, int ni, int nj, const char *solver,
             "%s\n  {\"case\": \"%s\", \"ni\": %d, \"nj\": %d, \"solver\": \"%s\", \"iterations\": %d, "
             "\"wall_seconds\": %.6f, \"cpu_seconds\": %.6f, \"start_residual\": %.6e, \"final_residual\": %.6e, "
             "\"iterations_per_cpu_second\": %.3f, \"factor_per_iteration\": %.6f, \"residual_cpu_seconds\": %.6e, "
-            "\"work_units\": %.2f, \"wall_spacing\": %.6e, \"max_aspect_ratio\": %.6e, \"status\": \"%s\"}",
+            "\"work_units\": %.2f, \"wall_spacing\": %.6e, \"max_aspect_ratio\": %.6e, \"status\": \"%s\", "
+            "\"levels\": %d, \"levels_built\": %d, \"events\": %d, \"first_event\": \"%s\"}",
             json_first ? "" : ",", case_name, ni, nj, solver, r->iterations, r->wall, r->cpu, r->r0, r->residual,
             rate, isfinite(factor) ? factor : -1.0, r->residual_cpu, isfinite(wu) ? wu : -1.0,
             isfinite(r->wall_spacing) ? r->wall_spacing : -1.0, isfinite(r->aspect_ratio) ? r->aspect_ratio : -1.0,
-            r->status);
+            r->status, r->levels, r->levels_built, r->events, r->event);
     json_first = 0;
 }
 
@@ -206,17 +212,17 @@ static void compare(int repeats) {
     double p, sweeps, gs_cpu;
     printf("Winslow, TFI start, residual 1e-10, swan (seed 003 A4); CPU s of this thread, median of %d\n\n", repeats);
     print_header();
-    gs65 = run_median(swan, 65, EG2D_SOLVER_PSOR, 1.0, W, 1e-10, 600, 1);
+    gs65 = bench_run(swan, 65, swan->size_nj(65), EG2D_SOLVER_PSOR, 1.0, W, 1e-10, 600, 1);
     print_row("swan", 65, 65, "psor:1", &gs65);
-    gs129 = run_median(swan, 129, EG2D_SOLVER_PSOR, 1.0, W, 1e-10, 600, repeats);
+    gs129 = bench_run(swan, 129, swan->size_nj(129), EG2D_SOLVER_PSOR, 1.0, W, 1e-10, 600, repeats);
     print_row("swan", 129, 129, "psor:1", &gs129);
-    mg129 = run_median(swan, 129, EG2D_SOLVER_MULTIGRID, 0.0, W, 1e-10, 600, repeats);
+    mg129 = bench_run(swan, 129, swan->size_nj(129), EG2D_SOLVER_MULTIGRID, 0.0, W, 1e-10, 600, repeats);
     print_row("swan", 129, 129, "multigrid", &mg129);
     /* point Gauss-Seidel at 1025^2 takes hours: its cost per sweep is measured
      * over a few CPU seconds, its sweep count extrapolated below */
-    gs1025 = run_once(swan, 1025, EG2D_SOLVER_PSOR, 1.0, W, 1e-10, 3.0);
+    gs1025 = run_once(swan, 1025, 1025, EG2D_SOLVER_PSOR, 1.0, W, 1e-10, 3.0);
     print_row("swan", 1025, 1025, "psor:1", &gs1025);
-    mg1025 = run_median(swan, 1025, EG2D_SOLVER_MULTIGRID, 0.0, W, 1e-10, 600, repeats);
+    mg1025 = bench_run(swan, 1025, swan->size_nj(1025), EG2D_SOLVER_MULTIGRID, 0.0, W, 1e-10, 600, repeats);
     print_row("swan", 1025, 1025, "multigrid", &mg1025);
     printf("\nswan 129^2, side by side: multigrid %.0fx faster than point Gauss-Seidel (PSOR, omega = 1) "
            "in CPU time, %.0fx in wall time (%d sweeps against %d cycles)\n",
@@ -267,7 +273,8 @@ static int parse_solver(const char *spec, double *omega) {
 static void usage(void) {
     fprintf(stderr, "usage: eg2d_bench [--cases LIST] [--sizes LIST] [--solvers LIST (name or name:omega)]\n"
                     "                  [--system winslow|laplace] [--tolerance T] [--cap CPU-SECONDS]\n"
-                    "                  [--repeats N] [--json FILE] [--compare | --seed004]\n");
+                    "                  [--repeats N] [--json FILE] [--compare | --seed004]\n"
+                    "       eg2d_bench --sweep [--repeats N (3)] [--svg FILE]\n");
 }
 
 int main(int argc, char **argv) {
@@ -281,6 +288,21 @@ int main(int argc, char **argv) {
         const char *opt = argv[a], *val = a + 1 < argc ? argv[a + 1] : NULL;
         if (!strcmp(opt, "--seed004")) {
             bench_seed004();
+            return 0;
+        }
+        if (!strcmp(opt, "--sweep")) {
+            /* --sweep [--repeats N] [--svg FILE], in that order */
+            const char *svg = NULL;
+            int rep = 3, b;
+            for (b = a + 1; b + 1 < argc; b += 2) {
+                if (!strcmp(argv[b], "--repeats")) rep = atoi(argv[b + 1]);
+                else if (!strcmp(argv[b], "--svg")) svg = argv[b + 1];
+            }
+            if (rep < 1 || rep > 99) {
+                usage();
+                return 2;
+            }
+            bench_sweep(rep, svg);
             return 0;
         }
         if (!strcmp(opt, "--compare")) {
@@ -347,7 +369,7 @@ int main(int argc, char **argv) {
                 for (vi = 0; vi < n_solvers; ++vi) {
                     double omega;
                     const int solver = parse_solver(solver_names[vi], &omega);
-                    const result res = run_median(c, n, solver, omega, system, tol, cap, repeats);
+                    const result res = bench_run(c, n, c->size_nj(n), solver, omega, system, tol, cap, repeats);
                     print_row(c->name, n, c->size_nj(n), solver_names[vi], &res);
                 }
             }
