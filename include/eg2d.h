@@ -208,16 +208,17 @@ EG2D_API int eg2d_set_system(eg2d_grid *grid, int system);
  *           parameters below; EG2D_PARAM_RELAXATION does not apply).
  *   NESTED  one point SOR sweep of the full grid; the first iteration after a
  *           new start (initialisation, new coordinates, system, controls or
- *           solver) first converges the equations on every 2^k-th line (k as
- *           large as ni-1 and nj-1 allow), interpolates linearly to every
- *           2^(k-1)-th line, and so on down to the full grid (seed 000). This
- *           start replaces the interior (of a warm start only the coarsest
- *           nodes are kept) unless it would fold cells. Any ni, nj work; with
- *           odd ni-1 or nj-1 NESTED is PSOR. EG2D_PARAM_RELAXATION applies on
- *           every level (automatic: aimed at each level's size).
+ *           solver) first converges the equations on the coarsest grid of
+ *           the multigrid hierarchy (any ni, nj; see EG2D_PARAM_MG_*), adds
+ *           its change, interpolated, to the next finer grid, converges
+ *           there, and so on up to the full grid (Petrilli 1989's
+ *           coarse-to-fine scheme). The start is kept unless this would fold
+ *           cells (then the run says so: eg2d_get_run_event).
+ *           EG2D_PARAM_RELAXATION applies on every level (automatic: aimed
+ *           at each level's size).
  *   LSOR    one sweep of xi-lines then one of eta-lines (omega: EG2D_PARAM_RELAXATION).
- *   MULTIGRID one FAS cycle (EG2D_PARAM_MG_*); the first after a new start is
- *           the full-multigrid start. EG2D_PARAM_RELAXATION does not apply. */
+ *   MULTIGRID one FAS cycle (EG2D_PARAM_MG_*); the first after an initial
+ *           grid is the full-multigrid start. EG2D_PARAM_RELAXATION does not apply. */
 /* Selects a solver; EG2D_ERR_UNSUPPORTED for an id this library lacks. */
 EG2D_API int eg2d_set_solver(eg2d_grid *grid, int solver);
 EG2D_API int eg2d_get_solver(const eg2d_grid *grid, int *solver);
@@ -255,16 +256,20 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
 /* Multigrid (EG2D_SOLVER_MULTIGRID): FAS cycles smoothed by incomplete-LU
  * sweeps of the nine-point operator (two orderings) on a single block, by
  * alternating line Gauss-Seidel on O- and C-grids. One iteration is one
- * cycle; with PARAM_MG_FMG the
- * first iteration after (re)initialising the grid is a full-multigrid start:
- * solve on the coarsest grid, interpolate, one cycle per finer level.
- * A direction is halved while it has an odd node count (ni-1 even; on an
- * O-grid also ni-1 >= 16) above PARAM_MG_COARSEST; Winslow coarsens one
- * direction alone when the other cannot, Laplace only both together. Sizes
- * like 2^k+1 get the most levels; any size works (fewer levels; with none,
- * an iteration is the pre + post smoothing sweeps). A coarse
- * level whose grid breaks down (non-finite) is dropped for the rest of the
- * run, with the levels below it. While a control is recomputed from the grid
+ * cycle; with PARAM_MG_FMG the first iteration after eg2d_initialize (or
+ * the first run's own TFI start) is a full-multigrid start: solve on the
+ * coarsest grid, interpolate, one cycle per finer level. A grid set with
+ * eg2d_set_coordinates, or one already iterated, is kept as the start.
+ * Coarsening works for any node count: each coarse level has ceil(m/2)
+ * cells for m fine cells (a C-grid's trailing edges stay nodes), uniform in
+ * its own index, down to PARAM_MG_COARSEST nodes (an O-grid keeps at least 8
+ * cells round); so every size gets about log2(n) levels and the same cycle
+ * count. Winslow coarsens one direction alone when the other cannot,
+ * Laplace only both together; a grid too small for any coarse level runs
+ * the pre + post smoothing sweeps per iteration and says so
+ * (eg2d_get_run_event). A coarse level whose grid breaks down (non-finite)
+ * is dropped for the rest of the run, with the levels below it, and the run
+ * says so. While a control is recomputed from the grid
  * between iterations (wall orthogonality), each cycle follows one update of
  * it (see EG2D_ORTHO_WALL); a cycle that folds cells, or 20 without
  * progress, make the rest of the run one line Gauss-Seidel sweep in each
@@ -275,8 +280,8 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
                                               coarse correction */
 #define EG2D_PARAM_MG_POST_SMOOTH   112  /* [0, 20], default 1: and after it (pre + post >= 1,
                                               else eg2d_iterate/solve fail with EG2D_ERR_STATE) */
-#define EG2D_PARAM_MG_FMG           113  /* 1 (default): full-multigrid start; 0: V/W cycles from
-                                              the grid as it is */
+#define EG2D_PARAM_MG_FMG           113  /* 1 (default): full-multigrid start from an initial
+                                              grid; 0: V/W cycles from the grid as it is */
 #define EG2D_PARAM_MG_COARSEST      114  /* [3, 1e9], default 5: a direction with this many nodes
                                               or fewer is not coarsened further */
 /* Controls (200-299), see "Grid control" below. */
