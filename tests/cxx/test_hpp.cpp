@@ -125,6 +125,18 @@ int main(int argc, char **argv) {
     CHECK(g.get_residual() <= 1e-11);
     CHECK(g.get_quality(EG2D_QUALITY_FOLDED_CELLS) == 0 && g.get_quality(EG2D_QUALITY_MIN_AREA) > 0);
     CHECK(throws([&] { g.get_quality(99); }, EG2D_ERR_ARGUMENT, "eg2d_get_quality"));
+    // what ran
+    CHECK(g.get_run_info(EG2D_RUN_SOLVER) == EG2D_SOLVER_PSOR && g.get_run_info(EG2D_RUN_LEVELS) == 1);
+    CHECK(g.get_run_events().empty());
+    CHECK(throws([&] { g.get_run_info(99); }, EG2D_ERR_ARGUMENT, "not an EG2D_RUN_* id"));
+    {
+        eg2d::grid tiny(4, 4);  // too small for a coarse level: multigrid says so
+        set_swan(tiny, 4, 4);
+        tiny.solve();
+        const auto events = tiny.get_run_events();
+        CHECK(events.size() == 1 && events[0].first == 1 &&
+              events[0].second.rfind("multigrid: the 4x4 grid has no coarse level", 0) == 0);
+    }
 
     // AF settings, per-cell quality, files
     CHECK(throws([&] { g.set_af_cycle(2, 1, 0); }, EG2D_ERR_ARGUMENT, "eg2d_set_af_cycle"));
