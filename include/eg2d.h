@@ -39,7 +39,11 @@
  * precise message for the last failed call on a grid.
  * Runs (eg2d_iterate, eg2d_solve) are the exception that keeps its work:
  * NOT_CONVERGED, INTERRUPTED and FOLDED keep the iterations done, and
- * DIVERGED restores the grid as it was before the failing iteration.
+ * DIVERGED restores the run's last good grid: the latest iterate whose
+ * residual was below the previous good one's (the start is the first),
+ * had halved since or came 10 iterations after it, and that folds no more
+ * cells than the start. The message names its iteration, and
+ * eg2d_get_iterations counts up to it.
  *
  * Threads
  * -------
@@ -98,7 +102,7 @@ typedef struct eg2d_grid eg2d_grid;
 #define EG2D_ERR_BOUNDARY       3  /* corners of adjacent sides disagree, an open O-grid curve */
 #define EG2D_ERR_STATE          4  /* a call out of order (iterate before the boundary is set) */
 #define EG2D_ERR_NOT_CONVERGED  5  /* eg2d_solve reached the iteration limit */
-#define EG2D_ERR_DIVERGED       6  /* NaN/Inf or a growing residual; the grid is restored */
+#define EG2D_ERR_DIVERGED       6  /* NaN/Inf or a growing residual; the last good grid is restored */
 #define EG2D_ERR_FOLDED         7  /* the converged grid has folded cells */
 #define EG2D_ERR_IO             8  /* a file could not be read or written */
 #define EG2D_ERR_UNSUPPORTED    9  /* a feature not built into this library */

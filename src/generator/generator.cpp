@@ -7,9 +7,35 @@
 #include "base/error.hpp"
 #include "eg2d.h"
 #include "grid/initializers.hpp"
-#include "quality/quality.hpp"
+#include "base/folds.hpp"
 
 namespace eg2d {
+
+// A new last good grid is taken when the residual is below the last one's
+// and has halved since, or kGoodEvery iterations have passed: the fold count
+// and the copy then cost a small part of a sweep (at every iteration point
+// SOR was 25% slower, bench swan 257^2).
+constexpr double kGoodStep = 0.5;
+constexpr int kGoodEvery = 10;
+
+LastGoodGrid::LastGoodGrid(const Grid &g, int iteration, double residual)
+    : residual_(residual), iteration_(iteration), folded_(fold_summary(g).folded) {
+    snapshot_.take(g);
+}
+
+void LastGoodGrid::offer(const Grid &g, int iteration, double residual) {
+    if (!(residual < residual_)) return;
+    if (!(residual <= kGoodStep * residual_) && iteration - iteration_ < kGoodEvery) return;
+    if (fold_summary(g).folded > folded_) return;
+    residual_ = residual;
+    iteration_ = iteration;
+    snapshot_.take(g);
+}
+
+int LastGoodGrid::restore(Grid &g) const {
+    snapshot_.restore(g);
+    return iteration_;
+}
 
 namespace {
 // Below this residual growth is never taken for divergence: round-off near a
@@ -179,76 +205,78 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
     const double extent = grid_.extent();
     double r = finite_residual(system_, problem.level(), extent).value;
     double best = r;
+    LastGoodGrid good(grid_, iterations_, r);
+    auto done = [&] { return stop_at_tolerance && r <= settings.tolerance && settled(extent, settings.tolerance); };
     for (long it = 0; it < max_iterations; ++it) {
-        if (stop_at_tolerance && r <= settings.tolerance && settled(extent, settings.tolerance)) return RunEnd::Converged;
-        saved_x_ = grid_.x;
-        saved_y_ = grid_.y;
-        if (controls_.has_dynamic()) {
-            // Against a solver that converges the grid for the current fields
-            // each iteration, the control moves 3x (relaxation) and 5x (step)
-            // further per update, and convergence is tested after the update:
-            // the residual after such an iteration says nothing about the
-            // control, which would stop a run whose wall spacing is still
-            // far off. Once past its ramp the control accelerates its updates
-            // (Anderson, wall.cpp): with the grid converged for each state
-            // they are a fixed-point iteration of the control alone. (Bench
-            // naca0012-wall, wall spacing 1e-5 chord, multigrid: 25-32 cycles
-            // from 65x17 to 1025x257, 43-48 damped only; at 1x pace it needed
-            // 92-135 and stalled at 129x33; bench/RESULTS.md. At milder
-            // spacings cycles can still fold or stall, and the run goes on
-            // with sweeps: at 1e-4 on 65x17 and 1025x257, at 1e-3 from 65x17
-            // to 513x129.)
-            const bool cycles = solver_->converges_each_iteration();
-            ControlPace pace = cycles ? ControlPace{kCyclePaceRelaxation, kCyclePaceStep, true} : ControlPace{};
-            pace.one_gain = solver_->marches_in_time();
-            controls_.advance(grid_, settings, pace);
-            if (cycles) {
-                r = eg2d::residual(system_, problem.level(), extent).value;
-                if (stop_at_tolerance && r <= settings.tolerance && settled(extent, settings.tolerance))
-                    return RunEnd::Converged;
-            }
-        }
+        if (done()) return RunEnd::Converged;
+        if (controls_.has_dynamic() && advance_dynamic_controls(problem, extent, r) && done())
+            return RunEnd::Converged;
         report_.iteration = iterations_ + 1;
         solver_->iterate(problem);
         for (const auto &m : motions_) m->apply(grid_);  // sliding sides follow the interior
         const ResidualInfo ri = eg2d::residual(system_, problem.level(), extent);
         if (!std::isfinite(ri.value) ||
-            (ri.value > settings.divergence_factor * best && ri.value > kDivergenceFloor)) {
-            grid_.x.swap(saved_x_);
-            grid_.y.swap(saved_y_);
-            solver_->reset();
-            if (!std::isfinite(ri.value))
-                fail(Failure::Diverged,
-                     format("%s diverged at iteration %d: non-finite residual at node (%d, %d); "
-                            "the grid is restored to iteration %d",
-                            solver_info_->name, iterations_ + 1, ri.i, ri.j, iterations_));
-            fail(Failure::Diverged,
-                 format("%s diverged at iteration %d: residual %.3g is more than %.3g times the run's best %.3g "
-                        "(largest at node (%d, %d)); the grid is restored to iteration %d",
-                        solver_info_->name, iterations_ + 1, ri.value, settings.divergence_factor, best, ri.i,
-                        ri.j, iterations_));
-        }
+            (ri.value > settings.divergence_factor * best && ri.value > kDivergenceFloor))
+            fail_diverged(ri, best, good);
         ++iterations_;
         fresh_start_ = problem.fresh_start = false;
         r = ri.value;
         solver_->observe(r, controls_.has_dynamic() ? controls_.mismatch() / extent : 0.0);
         best = std::min(best, r);
+        good.offer(grid_, iterations_, r);
         if (monitor && monitor(iterations_, r))
             fail(Failure::Interrupted,
                  format("stopped by the monitor at iteration %d (residual %.3g)", iterations_, r));
     }
     if (stop_at_tolerance) {
-        if (r <= settings.tolerance && settled(extent, settings.tolerance)) return RunEnd::Converged;
-        if (r <= settings.tolerance)
-            fail(Failure::NotConverged,
-                 format("%s did not converge in %ld iterations: residual %.3g is within the tolerance %.3g but "
-                        "the wall control has not settled (its remaining change %.3g > tolerance)",
-                        solver_info_->name, max_iterations, r, settings.tolerance, controls_.mismatch() / extent));
-        fail(Failure::NotConverged,
-             format("%s did not converge in %ld iterations: residual %.3g > tolerance %.3g", solver_info_->name,
-                    max_iterations, r, settings.tolerance));
+        if (done()) return RunEnd::Converged;
+        fail_not_converged(max_iterations, r, extent);
     }
     return RunEnd::Done;
+}
+
+bool Generator::advance_dynamic_controls(Problem &problem, double extent, double &r) {
+    // Against a solver that converges the grid for the current fields each
+    // iteration, the control moves 3x (relaxation) and 5x (step) further
+    // per update, and convergence is tested after the update: the residual
+    // after such an iteration says nothing about the control, which would
+    // stop a run whose wall spacing is still far off. Once past its ramp the
+    // control accelerates its updates (Anderson, wall.cpp): with the grid
+    // converged for each state they are a fixed-point iteration of the
+    // control alone. (Measurements: bench/RESULTS.md, naca0012-wall.)
+    const bool cycles = solver_->converges_each_iteration();
+    ControlPace pace = cycles ? ControlPace{kCyclePaceRelaxation, kCyclePaceStep, true} : ControlPace{};
+    pace.one_gain = solver_->marches_in_time();
+    controls_.advance(grid_, settings, pace);
+    if (!cycles) return false;
+    r = eg2d::residual(system_, problem.level(), extent).value;
+    return true;
+}
+
+void Generator::fail_diverged(const ResidualInfo &ri, double best, const LastGoodGrid &good) {
+    const int failed = iterations_ + 1;
+    iterations_ = good.restore(grid_);
+    solver_->reset();
+    const std::string where =
+        !std::isfinite(ri.value)
+            ? format("non-finite residual at node (%d, %d)", ri.i, ri.j)
+            : format("residual %.3g is more than %.3g times the run's best %.3g (largest at node (%d, %d))",
+                     ri.value, settings.divergence_factor, best, ri.i, ri.j);
+    fail(Failure::Diverged,
+         format("%s diverged at iteration %d: %s; the grid is restored to iteration %d, the last good one "
+                "(a lower residual, no more folded cells than the start)",
+                solver_info_->name, failed, where.c_str(), iterations_));
+}
+
+void Generator::fail_not_converged(long max_iterations, double r, double extent) const {
+    if (r <= settings.tolerance)
+        fail(Failure::NotConverged,
+             format("%s did not converge in %ld iterations: residual %.3g is within the tolerance %.3g but "
+                    "the wall control has not settled (its remaining change %.3g > tolerance)",
+                    solver_info_->name, max_iterations, r, settings.tolerance, controls_.mismatch() / extent));
+    fail(Failure::NotConverged,
+         format("%s did not converge in %ld iterations: residual %.3g > tolerance %.3g", solver_info_->name,
+                max_iterations, r, settings.tolerance));
 }
 
 void Generator::iterate(int n) { run(n, false); }

@@ -33,6 +33,7 @@
 
 #include "base/error.hpp"
 #include "base/folds.hpp"
+#include "base/grid_snapshot.hpp"
 #include "solvers/multigrid_hierarchy.hpp"
 #include "solvers/multigrid_local.hpp"
 #include "solvers/multigrid_smoother.hpp"
@@ -65,8 +66,7 @@ public:
         // undone, and the run goes on with sweeps.
         const bool guard = p.dynamic_controls;
         if (guard) {
-            saved_x_ = p.grid.x;
-            saved_y_ = p.grid.y;
+            saved_.take(p.grid);
             if (folded_ < 0) folded_ = fold_summary(p.grid).folded;
         }
         // FMG builds a start from the coarsest grid: better than TFI, worse
@@ -84,9 +84,7 @@ public:
                                      "it is undone and the run goes on with line sweeps", folded, folded_)
                             : std::string("multigrid: a cycle under the wall control went non-finite; it is undone "
                                           "and the run goes on with line sweeps"));
-                // Copied back, not swapped: level 0 points into the grid's own arrays.
-                std::copy(saved_x_.begin(), saved_x_.end(), p.grid.x.begin());
-                std::copy(saved_y_.begin(), saved_y_.end(), p.grid.y.begin());
+                saved_.restore(p.grid);
                 sweeps_only_ = true;
                 sweep();
             }
@@ -281,7 +279,7 @@ private:
     long folded_ = -1;                  // folded cells of the grid the guarded cycles started from
     double stall_best_ = std::numeric_limits<double>::infinity();
     int stall_count_ = 0;
-    std::vector<double> saved_x_, saved_y_;
+    GridSnapshot saved_;  // the grid before a guarded cycle
 };
 
 }  // namespace

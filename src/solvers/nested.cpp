@@ -22,6 +22,7 @@
 
 #include "base/error.hpp"
 #include "base/folds.hpp"
+#include "base/grid_snapshot.hpp"
 #include "solvers/auto_relaxation.hpp"
 #include "solvers/multigrid_hierarchy.hpp"
 #include "solvers/solver.hpp"
@@ -59,7 +60,8 @@ private:
         if (p.report) p.report->levels = p.report->levels_built = static_cast<int>(levels.size());
         if (levels.size() < 2) return;
         const double extent = p.grid.extent();
-        const std::vector<double> start_x = p.grid.x, start_y = p.grid.y;
+        GridSnapshot start;
+        start.take(p.grid);
         const long folded_before = fold_summary(p.grid).folded;
         const double target = std::max(p.settings.tolerance, kCoarseTolerance);
         levels[0].level = fine;
@@ -88,8 +90,7 @@ private:
         if (folded > folded_before) {
             p.note(format("nested: the coarse-to-fine start folded %ld cells (the start had %ld); it is dropped "
                           "and point SOR goes on from the start", folded, folded_before));
-            p.grid.x = start_x;
-            p.grid.y = start_y;
+            start.restore(p.grid);
         }
     }
 
