@@ -293,6 +293,13 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
                                             wall control, which acts as exp(-a (m-1)) at depth m */
 #define EG2D_PARAM_WALL_RELAXATION  201  /* (0, 1], default 0.1: under-relaxation of the wall
                                             control's updates between iterations */
+#define EG2D_PARAM_WALL_GROWTH      202  /* [1, 1.5], default 1.15: cell-to-cell growth of the
+                                            marched wall layer (EG2D_PARAM_WALL_LAYER) */
+#define EG2D_PARAM_WALL_LAYER       203  /* 0 (default) or 1: with 1, EG2D_ORTHO_WALL on a C-grid,
+                                            or an O-grid round a body without sharp corners,
+                                            whose only wall is JMIN with a height marches a
+                                            wall layer and holds it (see EG2D_ORTHO_WALL);
+                                            experimental: not yet robust on graded wakes */
 #define EG2D_PARAM_SVG_QUALITY      300  /* output 300-399. EG2D_FORMAT_SVG colours cells by this
                                             EG2D_QUALITY_* metric (one with per-cell values);
                                             -1 (default): no colouring */
@@ -684,7 +691,19 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   O-grid), interpolated linearly inward. It makes lines leave smooth
  *   curved boundaries nearly orthogonally; on boundaries made of straight
  *   segments and corners it is zero away from the corners (seed 000 fig. 7).
- * WALL: a Sorenson (GRAPE)-type control, updated between iterations, that
+ * WALL with EG2D_PARAM_WALL_LAYER = 1, on a C-grid or on an O-grid round a
+ *   body without sharp corners whose only wall is JMIN with a height h: at
+ *   initialisation a layer of (nj-1)/3 rows is marched along the wall
+ *   normals, first cell h, each cell EG2D_PARAM_WALL_GROWTH times the last
+ *   (on a C-grid's wake cut h grows with the cut's spacing, up to a fifth of
+ *   the column; the outflow sides' points are placed along those sides to
+ *   follow the layer), and held: the solvers work on the rows above it, with
+ *   a fixed control that continues the layer's growth to the far side
+ *   (Thomas & Middlecoff 1980's construction from the layer's top row and
+ *   JMAX). The first cells have the height exactly and leave the wall at 90
+ *   degrees; the run reports the layer (eg2d_get_run_event). Experimental:
+ *   see bench/RESULTS.md for where it does not yet converge.
+ * WALL otherwise: a Sorenson (GRAPE)-type control, updated between iterations, that
  *   makes the grid lines leave each wall side at 90 degrees with the
  *   first-cell height of eg2d_set_wall_spacing; its influence decays into the
  *   interior (EG2D_PARAM_WALL_DECAY) and its updates are under-relaxed

@@ -136,7 +136,7 @@ EG2D_API int eg2d_set_wall_spacing(eg2d_grid *grid, int side, double height) {
         std::array<double, 4> next = grid->wall_height;
         next[side] = height < 0.0 ? -1.0 : height;
         ControlSet set = grid->gen.controls();
-        if (Control *c = set.find(ControlKind::Orthogonality); c && c->dynamic())
+        if (is_wall_control(set.find(ControlKind::Orthogonality)))
             set.put(make_wall_control(wall_sides(next)));  // a wall control in use takes the new sides
         grid->gen.controls() = std::move(set);
         grid->wall_height = next;

@@ -36,7 +36,7 @@ public:
     // O-grid: column ni-1 duplicates column 0 (kept equal by sync_node).
     int i_begin() const { return periodic_i() ? 0 : 1; }
     int i_end() const { return ni_ - 1; }
-    int j_begin() const { return 1; }
+    int j_begin() const { return j_first_; }
     int j_end() const { return nj_ - 1; }
     // Unknown nodes outside that rectangle (the C-grid's wake cut), solved
     // pointwise by every solver and counted by the residual. Empty for the
@@ -57,8 +57,20 @@ public:
         const int wake = (topology_ == Topology::C) ? wake_ / si : 0;
         return Connectivity((ni_ - 1) / si + 1, (nj_ - 1) / sj + 1, topology_, wake);
     }
-    // C-grid: the trailing-edge index on JMIN (0 for the other topologies).
+    // C-grid: the trailing-edge index on JMIN (0 for the other topologies,
+    // and for a C-grid whose cut lies in held rows).
     int wake() const { return wake_; }
+    // The same grid with rows 0..rows held fixed (a wall layer made before
+    // the solve): the unknowns start at row rows + 1. A C-grid's cut lies in
+    // the held rows then, so it has no unknowns and no wake: the rows above
+    // form one block, non-periodic in i.
+    Connectivity held_below(int rows) const {
+        Connectivity c(ni_, nj_, topology_, rows > 0 ? 0 : wake_);
+        c.j_first_ = rows + 1;
+        return c;
+    }
+    // Rows held fixed above row 0 (0: none).
+    int held_rows() const { return j_first_ - 1; }
     // C-grid: is (i, 0) a wake node solved for (0 < i < wake)?
     bool on_cut(int i, int j) const { return j == 0 && i > 0 && i < wake_; }
 
@@ -97,6 +109,7 @@ private:
     int ni_, nj_;
     Topology topology_;
     int wake_ = 0;
+    int j_first_ = 1;
     std::vector<Node> extra_;
 };
 

@@ -67,7 +67,7 @@ void check_coordinates(const char *what, const double *v, std::size_t n) {
     }
 }
 
-Grid::Grid(int ni, int nj) : ni_(ni), nj_(nj), connectivity_(ni, nj, Topology::Single) {
+Grid::Grid(int ni, int nj) : ni_(ni), nj_(nj), base_connectivity_(ni, nj, Topology::Single), connectivity_(ni, nj, Topology::Single) {
     if (ni < 3) fail(Failure::Argument, format("ni = %d: need at least 3", ni));
     if (nj < 3) fail(Failure::Argument, format("nj = %d: need at least 3", nj));
     // Each node costs tens of doubles across the library; refuse sizes whose
@@ -86,7 +86,8 @@ void Grid::set_topology(Topology t) {
         fail(Failure::Argument, format("ni = %d: an O-grid needs at least 4", ni_));
     if (t == Topology::C && ni_ < 7)
         fail(Failure::Argument, format("ni = %d: a C-grid needs at least 7 (wake, airfoil, wake)", ni_));
-    connectivity_ = Connectivity(ni_, nj_, t);
+    base_connectivity_ = connectivity_ = Connectivity(ni_, nj_, t);
+    held_rows_ = 0;
     sides_set_ = 0;
     for (int si = 0; si < 4; ++si) {
         user_x_[si].clear();
@@ -226,7 +227,8 @@ void Grid::set_side(Side s, const double *px, const double *py) {
             x[static_cast<std::size_t>(ni_ - 1 - i)] = x[static_cast<std::size_t>(i)];
             y[static_cast<std::size_t>(ni_ - 1 - i)] = y[static_cast<std::size_t>(i)];
         }
-        connectivity_ = Connectivity(ni_, nj_, Topology::C, wake);
+        base_connectivity_ = Connectivity(ni_, nj_, Topology::C, wake);
+        connectivity_ = held_rows_ > 0 ? base_connectivity_.held_below(held_rows_) : base_connectivity_;
     }
     const int si = static_cast<int>(s);
     read_side(s, x.data(), y.data(), user_x_[si], user_y_[si]);  // after the cut's copies: the ring as set
@@ -300,6 +302,13 @@ void Grid::set_coordinates(const double *px, const double *py) {
     trial.connectivity_.sync(trial.y.data());
     trial.initialized_ = true;
     *this = std::move(trial);
+}
+
+void Grid::hold_rows(int rows) {
+    if (rows < 0 || rows > nj_ - 3)
+        fail(Failure::Argument, format("held rows = %d: must be in [0, nj - 3 = %d]", rows, nj_ - 3));
+    held_rows_ = rows;
+    connectivity_ = rows > 0 ? base_connectivity_.held_below(rows) : base_connectivity_;
 }
 
 }  // namespace eg2d

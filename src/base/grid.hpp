@@ -43,6 +43,11 @@ public:
     // new start must begin from the boundary as set, as a fresh handle does.
     void restore_boundary();
 
+    // Rows 1..rows are held fixed by the solvers (a wall layer made before
+    // the solve); 0 releases them. Throws Argument unless 0 <= rows <= nj-3.
+    void hold_rows(int rows);
+    int held_rows() const { return held_rows_; }
+
     bool initialized() const { return initialized_; }
     void mark_initialized() { initialized_ = true; }
 
@@ -65,7 +70,9 @@ private:
                    std::vector<double> &py) const;
 
     int ni_, nj_;
-    Connectivity connectivity_;
+    Connectivity base_connectivity_;  // the topology's, no rows held
+    Connectivity connectivity_;       // with the held rows
+    int held_rows_ = 0;
     unsigned sides_set_ = 0;
     std::vector<double> user_x_[4], user_y_[4];  // each set side's points as set_side wrote them
     bool initialized_ = false;

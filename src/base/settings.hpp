@@ -20,6 +20,8 @@ struct Settings {
     // Wall orthogonality (src/controls/wall.cpp).
     double wall_decay = 0.3;          // a: the wall control decays as exp(-a (m-1)) at depth m
     double wall_relaxation = 0.1;     // under-relaxation of its updates, (0, 1]
+    double wall_growth = 1.15;        // cell-to-cell growth of a marched wall layer, [1, 1.5]
+    double wall_layer = 0;            // 1: EG2D_ORTHO_WALL marches a layer where it can (wall.cpp)
     double hermite_spacing = 1.0;     // EG2D_INIT_HERMITE's alpha (seed 001 eq 2.6)
     double svg_quality = -1;          // EG2D_QUALITY_* colouring SVG cells, -1 none
 

@@ -8,6 +8,7 @@
 #include "operator/control_fields.hpp"
 #include "base/settings.hpp"
 #include "base/grid.hpp"
+#include "grid/wall_layer.hpp"
 
 namespace eg2d {
 
@@ -61,6 +62,12 @@ public:
     // folded it (NACA0012 129x33, first cell 1e-5: not converged in 100000
     // iterations, 9 folded cells; the same on a new far field).
     virtual void restart() {}
+    // Builds into the grid what this control fixes before the solve (the
+    // wall control's marched layer, held by Grid::hold_rows), with the rows
+    // above filled as a start when `fill_above`. The run calls it after an
+    // initialisation and after any change of grid, boundary or controls.
+    // Default: nothing.
+    virtual WallLayerShape shape_start(Grid &, const Settings &, bool /*fill_above*/) { return {}; }
 };
 
 // The controls of a grid and the fields they add up to.

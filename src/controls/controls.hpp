@@ -36,7 +36,15 @@ std::unique_ptr<Control> make_middlecoff_thomas();
 
 // wall.cpp: orthogonality at chosen sides with a first-cell height.
 // height[side] < 0: not a wall; 0: orthogonal only; > 0: first-cell height.
+// On an O- or C-grid whose only wall is JMIN with a height, the control
+// marches a wall layer before the solve and holds it (shape_start), and
+// fixes the rows above with add_wall_layer_fields: a static control.
 std::unique_ptr<Control> make_wall_control(const std::array<double, 4> &height);
+bool is_wall_control(const Control *c);
+
+// wall_layer_fields.cpp: Psi and Phi of the rows above a held wall layer
+// (a no-op without held rows).
+void add_wall_layer_fields(const Grid &g, double growth, ControlFields &fields);
 
 // parameter_grid.cpp: seed 002 eqs 3-7 from a grid (s, t) on the unit square.
 std::unique_ptr<Control> make_parameter_grid(std::vector<double> s, std::vector<double> t);

@@ -91,10 +91,29 @@ public:
     explicit WallControl(const std::array<double, 4> &h) : height_(h) {}
     std::unique_ptr<Control> clone() const override { return std::make_unique<WallControl>(*this); }
     ControlKind kind() const override { return ControlKind::Orthogonality; }
-    bool dynamic() const override { return true; }
+    // With a marched layer (shape_start) the control is static.
+    bool dynamic() const override { return layer_growth_ == 0.0; }
 
     void add_to(const Grid &g, ControlFields &fields) const override {
+        if (layer_growth_ > 0.0) return add_wall_layer_fields(g, layer_growth_, fields);
         for (int side = 0; side < 4; ++side) add_side(g, side, fields);
+    }
+
+    // An O- or C-grid whose only wall is JMIN, with a height: a marched
+    // layer, held (grid/wall_layer.hpp). Anything else: the Sorenson-type
+    // updates below.
+    WallLayerShape shape_start(Grid &g, const Settings &settings, bool fill_above) override {
+        const bool layer = settings.wall_layer != 0.0 &&
+                           (g.topology() == Topology::C || (g.topology() == Topology::O && !wall_has_sharp_corner(g))) &&
+                           height_[0] > 0.0 && height_[1] < 0.0 && height_[2] < 0.0 && height_[3] < 0.0;
+        if (!layer) {
+            layer_growth_ = 0.0;
+            if (g.held_rows() > 0) g.hold_rows(0);
+            return {};
+        }
+        const WallLayerShape shape = shape_wall_layer(g, height_[0], settings.wall_growth, fill_above);
+        layer_growth_ = shape.rows > 0 ? shape.growth : 0.0;
+        return shape;
     }
     double mismatch() const override { return mismatch_; }
     void restart() override {
@@ -386,6 +405,7 @@ private:
     }
 
     std::array<double, 4> height_;
+    double layer_growth_ = 0.0;  // > 0: a marched layer is held, and this is its growth
     // The state: tangential (phi) and normal (psi) coefficients at depth 1,
     // per along-wall index, and the decay they were made with.
     std::array<std::vector<double>, 4> phi_, psi_;
@@ -403,5 +423,7 @@ private:
 std::unique_ptr<Control> make_wall_control(const std::array<double, 4> &height) {
     return std::make_unique<WallControl>(height);
 }
+
+bool is_wall_control(const Control *c) { return dynamic_cast<const WallControl *>(c) != nullptr; }
 
 }  // namespace eg2d

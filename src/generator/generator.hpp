@@ -94,6 +94,8 @@ public:
 
 private:
     void changed_boundary();
+    // Lets the controls build what they fix before the solve (a wall layer).
+    void shape_start(bool fill_above);
     void drop_motion(Side s);
     void changed_start();
     void ensure_ready();
@@ -117,7 +119,10 @@ private:
     std::unique_ptr<Solver> solver_;
     int iterations_ = 0;
     bool fresh_start_ = false;
-    RunReport report_;  // the interior is an initializer's and no iteration ran (Problem::fresh_start)
+    RunReport report_;
+    WallLayerShape layer_;        // the wall layer the controls made, if any
+    bool shape_pending_ = false;  // grid, boundary or controls changed since shape_start
+    double shaped_with_layer_ = 0.0, shaped_with_growth_ = 0.0;  // the settings shape_start used  // the interior is an initializer's and no iteration ran (Problem::fresh_start)
     std::vector<std::shared_ptr<const BoundaryMotion>> motions_;
 };
 

@@ -45,6 +45,16 @@ namespace {
 
 constexpr int kStallCycles = 20;
 
+// How many coarsenings a direction with this |Phi| or |Psi| allows (capped).
+int stretch_doublings(double stretch) {
+    int k = 0;
+    while (k < 40 && stretch * 2.0 <= kMaxCoarseStretching) {
+        stretch *= 2.0;
+        ++k;
+    }
+    return stretch == 0.0 ? 40 : k;
+}
+
 class Multigrid final : public Solver {
 public:
     void iterate(Problem &p) override {
@@ -134,9 +144,19 @@ private:
     void prepare(const Problem &p) {
         const Connectivity &conn = p.grid.connectivity();
         const int coarsest = static_cast<int>(p.settings.mg_coarsest);
+        // A dynamic control's fields change every iteration: its stretching
+        // would rebuild the levels each time, and its coarse levels are
+        // guarded otherwise (iterate()).
+        double stretch_i, stretch_j;
+        coarse_stretch(p.controls.empty() || p.dynamic_controls ? nullptr : &p.controls, stretch_i, stretch_j);
+        // Rebuilt when the shape changes, and when the controls' stretching
+        // allows other coarsenings (build_hierarchy).
+        const int allowed = stretch_doublings(stretch_i) * 64 + stretch_doublings(stretch_j);
         if (levels_.empty() || levels_[0].conn.ni() != conn.ni() || levels_[0].conn.nj() != conn.nj() ||
-            levels_[0].conn.topology() != conn.topology() || system_ != p.system || coarsest_ != coarsest) {
-            levels_ = build_hierarchy(conn, p.system, coarsest);
+            levels_[0].conn.topology() != conn.topology() || levels_[0].conn.held_rows() != conn.held_rows() ||
+            system_ != p.system || coarsest_ != coarsest || allowed_ != allowed) {
+            levels_ = build_hierarchy(conn, p.system, coarsest, stretch_i, stretch_j);
+            allowed_ = allowed;
             system_ = p.system;
             coarsest_ = coarsest;
             started_ = false;
@@ -273,6 +293,7 @@ private:
     RunReport *report_ = nullptr;  // the run's, set by prepare()
     System system_ = System::Winslow;
     int coarsest_ = 0, pre_ = 1, post_ = 1, gamma_ = 1;
+    int allowed_ = -1;  // the coarsenings the controls' stretching allowed (prepare)
     double floor_ = 0.0;
     bool started_ = false;
     bool sweeps_only_ = false;          // a guarded cycle failed: sweeps until reset()

@@ -1,6 +1,7 @@
 #include "solvers/multigrid_hierarchy.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace eg2d {
 
@@ -16,7 +17,28 @@ bool can_coarsen(int n, int nc, bool periodic, int coarsest) {
 
 }  // namespace
 
-std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, int coarsest) {
+void coarse_stretch(const ControlFields *fields, double &stretch_i, double &stretch_j) {
+    stretch_i = stretch_j = 0.0;
+    if (!fields) return;
+    // Not the largest value: a few nodes (a trailing edge's fan) may have a
+    // large Phi where the coarse grid does not resolve them anyway; the 98th
+    // percentile of the nonzero values says what the coarse levels meet.
+    auto largest = [](const double *f, std::size_t n) {
+        std::vector<double> v;
+        for (std::size_t k = 0; f && k < n; ++k)
+            if (f[k] != 0.0) v.push_back(std::fabs(f[k]));
+        if (v.empty()) return 0.0;
+        const std::size_t q = v.size() * 98 / 100;
+        std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(q), v.end());
+        return v[q];
+    };
+    const std::size_t n = fields->term[static_cast<int>(Term::AXi)].size();
+    stretch_i = largest(fields->data(Term::AXi), n);
+    stretch_j = largest(fields->data(Term::CEta), fields->term[static_cast<int>(Term::CEta)].size());
+}
+
+std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, int coarsest, double stretch_i,
+                                     double stretch_j) {
     std::vector<MgLevel> levels;
     levels.emplace_back(fine);
     levels.back().ai = identity_axis(fine.ni(), fine.periodic_i());
@@ -24,18 +46,37 @@ std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, in
     for (;;) {
         const Connectivity &c = levels.back().conn;
         // A C-grid's trailing edges stay coarse nodes: the cut ends there.
-        std::vector<int> anchors;
+        std::vector<int> anchors, j_anchors;
         if (c.wake() > 0) anchors = {c.wake(), c.ni() - 1 - c.wake()};
-        const bool ci = can_coarsen(c.ni(), coarse_count(c.ni(), anchors), c.periodic_i(), coarsest);
-        const bool cj = can_coarsen(c.nj(), coarse_count(c.nj(), {}), false, coarsest);
+        // Held rows (a wall layer) end at a coarse node too, and each level
+        // keeps at least one row of unknowns above them.
+        const int held = c.held_rows();
+        if (held > 0) j_anchors = {held};
+        bool ci = can_coarsen(c.ni(), coarse_count(c.ni(), anchors), c.periodic_i(), coarsest);
+        bool cj = can_coarsen(c.nj(), coarse_count(c.nj(), j_anchors), false, coarsest);
+        // Phi and Psi double with each coarsening of their direction.
+        if (2.0 * stretch_i > kMaxCoarseStretching) ci = false;
+        if (2.0 * stretch_j > kMaxCoarseStretching) cj = false;
+        if (cj && held > 0 && coarse_count(c.nj(), j_anchors) - coarse_count(held + 1, {}) < 2) cj = false;
+        // Above a held wall layer the rows are stretched (Psi): the eta-lines
+        // of the smoother solve across them exactly, and only xi is coarsened
+        // (semicoarsening with line relaxation across it: Trottenberg,
+        // Oosterlee & Schueller 2001, sec. 5.1). Coarsening eta too put
+        // Psi's doubled values on coarse rings a few cells round and stalled
+        // the cycle (annulus 65x33, 1e-3 wall, far field 10: residual stuck
+        // at 8e-4; xi alone: 6 cycles).
+        if (held > 0) cj = false;
         // Laplace in index units is not invariant under coarsening one
         // direction only (x_xixi + x_etaeta would change its anisotropy), so
         // it coarsens in both or stops; Winslow's equation is invariant.
         if (system == System::Laplace ? !(ci && cj) : !(ci || cj)) break;
         CoarseAxis ai = make_axis(c.ni(), c.periodic_i(), anchors, ci);
-        CoarseAxis aj = make_axis(c.nj(), false, {}, cj);
+        CoarseAxis aj = make_axis(c.nj(), false, j_anchors, cj);
         const int wake = c.wake() > 0 ? ai.nearest(c.wake()) : 0;
-        levels.emplace_back(Connectivity(ai.nc, aj.nc, c.topology(), wake));
+        const Connectivity coarse(ai.nc, aj.nc, c.topology(), wake);
+        levels.emplace_back(held > 0 ? coarse.held_below(aj.nearest(held)) : coarse);
+        if (ci) stretch_i *= 2.0;
+        if (cj) stretch_j *= 2.0;
         levels.back().ai = std::move(ai);
         levels.back().aj = std::move(aj);
     }

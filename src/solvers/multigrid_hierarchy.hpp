@@ -38,7 +38,21 @@ struct MgLevel {
 // Builds the levels below a fine grid of this connectivity. Level 0 gets only
 // residual scratch; its coordinates and controls are attached by the solver.
 // `coarsest`: a direction is not coarsened once it has <= coarsest nodes.
-std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, int coarsest);
+// `stretch_i`, `stretch_j`: the largest |Phi| and |Psi| of the fine grid's
+// controls (coarse_stretch): a direction stops coarsening before either
+// would pass kMaxCoarseStretching on a coarse level.
+std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, int coarsest, double stretch_i = 0.0,
+                                     double stretch_j = 0.0);
+
+// A coarse level's |Phi| or |Psi| grows with its spacing; past this the coarse
+// line systems lose their sign structure (cell Peclet number 2) and the coarse
+// problem corrects nothing: a wall layer's outer stretching, Psi -0.26 on the
+// fine grid, is -2.1 three levels down, and multigrid stalled there (annulus
+// 65x33 with a 1e-3 wall, far field 10: residual stuck at 6e-4).
+constexpr double kMaxCoarseStretching = 1.0;
+
+// The largest |Phi| (a_xi) and |Psi| (c_eta) of a control field, 0 without.
+void coarse_stretch(const ControlFields *fields, double &stretch_i, double &stretch_j);
 
 // How much larger the coarse operator is than the fine one for the same
 // smooth grid at coarse node (I, J) (the operator is written in index units):

@@ -1,0 +1,151 @@
+/* The marched wall layer of EG2D_ORTHO_WALL with EG2D_PARAM_WALL_LAYER = 1
+ * (grid/wall_layer.hpp): on a C-grid and on a smooth O-grid the first cells
+ * have exactly the asked height, leave the wall at 90 degrees, grow by
+ * EG2D_PARAM_WALL_GROWTH row by row, fold nothing, and multigrid converges
+ * in a few cycles with the layer held; an O-grid round a sharp trailing edge
+ * keeps the Sorenson-type updates (eg2d.h), and the run says which it did. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "domains.h"
+#include "eg2d.h"
+#include "measure.h"
+
+static double *alloc(int n) {
+    double *p = malloc(sizeof(double) * (size_t)n);
+    assert_non_null(p);
+    return p;
+}
+
+/* The run's first event, or "" */
+static void first_event(const eg2d_grid *g, char *msg, int size) {
+    int n = 0;
+    msg[0] = 0;
+    assert_int_equal(eg2d_get_run_info(g, EG2D_RUN_EVENTS, &n), EG2D_OK);
+    if (n > 0) assert_int_equal(eg2d_get_run_event(g, 0, NULL, msg, size), EG2D_OK);
+}
+
+/* Cell height of column i between rows j and j+1. */
+static double height(const double *x, const double *y, int ni, int i, int j) {
+    return hypot(x[i + ni * (j + 1)] - x[i + ni * j], y[i + ni * (j + 1)] - y[i + ni * j]);
+}
+
+static void solve_c_grid(double h, int pass_limit) {
+    const int ni = 129, nj = 33, wake = 32;
+    const double growth = 1.15;
+    double *x = alloc(ni * nj), *y = alloc(ni * nj), dev, hmin, hmax, cdev, cmin, cmax, folded, worst = 0, lo = 10;
+    int i, j, it, rows;
+    char msg[256];
+    eg2d_grid *g;
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    assert_int_equal(domain_set_airfoil_c(g, "0012", wake, 5.0), EG2D_OK);
+    assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h), EG2D_OK);
+    assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_WALL_LAYER, 1), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_WALL_GROWTH, growth), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
+    if (eg2d_solve(g) != EG2D_OK) fail_msg("%s", eg2d_last_error(g));
+    assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
+    first_event(g, msg, sizeof msg);
+    assert_int_equal(sscanf(msg, "wall layer: %d rows", &rows), 1);
+    assert_int_equal(rows, (nj - 1) / 3);
+    assert_int_equal(eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &folded), EG2D_OK);
+    assert_true(folded == 0);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    measure_wall(x, y, ni, nj, EG2D_SIDE_JMIN, 0, wake + 1, ni - 1 - wake, &dev, &hmin, &hmax);
+    measure_wall(x, y, ni, nj, EG2D_SIDE_JMIN, 0, 1, wake, &cdev, &cmin, &cmax);
+    for (i = 0; i < ni; ++i) /* every column, the wake's included */
+        for (j = 1; j < rows; ++j) {
+            const double q = height(x, y, ni, i, j) / height(x, y, ni, i, j - 1);
+            worst = fmax(worst, q);
+            lo = fmin(lo, q);
+        }
+    print_message("C-grid %dx%d, wall %g: %d cycles, %s; airfoil first cell %.6g..%.6g, %.2e deg; cut %.6g..%.6g, "
+                  "%.2e deg; growth in the layer %.6f..%.6f\n",
+                  ni, nj, h, it, msg, hmin, hmax, dev, cmin, cmax, cdev, lo, worst);
+    assert_true(it <= pass_limit);
+    assert_true(fabs(hmin / h - 1) < 1e-6 && fabs(hmax / h - 1) < 1e-6 && dev < 0.01);
+    assert_true(fabs(cmin / h - 1) < 1e-6 && fabs(cmax / h - 1) < 1e-6 && cdev < 0.01);
+    assert_true(fabs(worst - growth) < 1e-6 && fabs(lo - growth) < 1e-6);
+    eg2d_destroy(g);
+    free(x);
+    free(y);
+}
+
+/* The Sorenson-type control took 507 iterations at 1e-5 and did not
+ * converge at 1e-3 (test_controls_wall). */
+static void test_c_grid_layer(void **state) {
+    (void)state;
+    solve_c_grid(1e-5, 20);
+    solve_c_grid(1e-3, 40);
+}
+
+/* A circle (no corner): the layer, and every solver but AF converges to it
+ * (AF diverges next to the layer's top row: not yet understood; at a 1e-4
+ * wall line SOR does too). */
+static void test_smooth_o_grid_every_solver(void **state) {
+    const int ni = 65, nj = 33;
+    const double h = 1e-3;
+    double *x = alloc(ni * nj), *y = alloc(ni * nj), dev, hmin, hmax;
+    int id;
+    (void)state;
+    for (id = 0; id < 100; ++id) {
+        eg2d_grid *g;
+        int it;
+        char msg[256];
+        if (!eg2d_solver_name(id) || id == EG2D_SOLVER_AF) continue;
+        assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+        assert_int_equal(domain_set_annulus(g, 1.0, 10.0), EG2D_OK);
+        assert_int_equal(eg2d_set_solver(g, id), EG2D_OK);
+        assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h), EG2D_OK);
+        assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
+        assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_WALL_LAYER, 1), EG2D_OK);
+        assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
+        if (eg2d_solve(g) != EG2D_OK) fail_msg("%s: %s", eg2d_solver_name(id), eg2d_last_error(g));
+        assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
+        assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+        measure_wall(x, y, ni, nj, EG2D_SIDE_JMIN, 1, 0, ni - 1, &dev, &hmin, &hmax);
+        first_event(g, msg, sizeof msg);
+        print_message("annulus 1..10 %dx%d, wall %g, %-9s %4d iterations, first cell %.6g..%.6g, %.1e deg\n", ni, nj,
+                      h, eg2d_solver_name(id), it, hmin, hmax, dev);
+        assert_non_null(strstr(msg, "wall layer: 10 rows"));
+        assert_true(fabs(hmin / h - 1) < 1e-9 && fabs(hmax / h - 1) < 1e-9 && dev < 1e-6);
+        if (id == EG2D_SOLVER_MULTIGRID) assert_true(it <= 10);
+        eg2d_destroy(g);
+    }
+    free(x);
+    free(y);
+}
+
+/* Round a sharp trailing edge the rows above a thin layer cannot yet turn
+ * robustly: the O-grid keeps the Sorenson-type control, and no layer is said. */
+static void test_sharp_o_grid_keeps_the_control(void **state) {
+    eg2d_grid *g;
+    char msg[256];
+    (void)state;
+    assert_int_equal(eg2d_create(65, 17, &g), EG2D_OK);
+    assert_int_equal(domain_set_airfoil_o(g, "0012", 10.0), EG2D_OK);
+    assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 1e-3), EG2D_OK);
+    assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_WALL_LAYER, 1), EG2D_OK);
+    assert_int_equal(eg2d_iterate(g, 1, NULL), EG2D_OK);
+    first_event(g, msg, sizeof msg);
+    assert_null(strstr(msg, "wall layer"));
+    eg2d_destroy(g);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_c_grid_layer),
+        cmocka_unit_test(test_smooth_o_grid_every_solver),
+        cmocka_unit_test(test_sharp_o_grid_keeps_the_control),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
