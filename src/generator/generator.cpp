@@ -107,11 +107,11 @@ void Generator::drop_motion(Side s) {
 
 void Generator::changed_boundary() {
     controls_.invalidate();  // boundary-derived controls (Middlecoff-Thomas) must be recomputed
-    shape_pending_ = true;
+    shape_pending_ = boundary_changed_ = true;
 }
 
 void Generator::shape_start(bool fill_above) {
-    shape_pending_ = false;
+    shape_pending_ = boundary_changed_ = false;
     shaped_with_layer_ = settings.wall_layer;
     shaped_with_growth_ = settings.wall_growth;
     layer_ = WallLayerShape{};
@@ -208,8 +208,10 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
                              "EG2D_SYSTEM_WINSLOW (or clear the controls)");
     ensure_ready();
     // The layer's settings are read when it is shaped: a change reshapes it.
+    // A new boundary (or an interior no iteration has touched) gets a new
+    // start above the layer too; a grid the user set or iterated keeps its.
     if (shape_pending_ || shaped_with_layer_ != settings.wall_layer || shaped_with_growth_ != settings.wall_growth)
-        shape_start(false);
+        shape_start(boundary_changed_ || fresh_start_);
     const ControlFields &fields = controls_.update(grid_, true);
     // The automatic relaxation factor is an over-relaxation (seed 003's
     // optimum for Laplace). While a wall control is updated between sweeps

@@ -122,6 +122,7 @@ private:
     RunReport report_;
     WallLayerShape layer_;        // the wall layer the controls made, if any
     bool shape_pending_ = false;  // grid, boundary or controls changed since shape_start
+    bool boundary_changed_ = false;  // the boundary changed since shape_start
     double shaped_with_layer_ = 0.0, shaped_with_growth_ = 0.0;  // the settings shape_start used  // the interior is an initializer's and no iteration ran (Problem::fresh_start)
     std::vector<std::shared_ptr<const BoundaryMotion>> motions_;
 };
