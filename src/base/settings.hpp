@@ -25,7 +25,7 @@ struct Settings {
     double march_distance = 0.0;      // marching distance; 0: 10 x the JMIN curve's bounding-box diagonal
     double march_first_height = 0.0;  // first layer's height; 0: the one with constant ratio 1 + (G-1)/2
     double march_growth = 1.2;        // G: largest ratio of consecutive layer heights
-    double march_smoothing = 1.0;     // eps_c of Chan & Steger's variable dissipation
+    double march_smoothing = 0.5;     // eps_c of Chan & Steger's variable dissipation
     double march_area_smoothing = 20; // area-smoothing passes per layer
     double march_end_imin = 0;        // MarchEnd of the i = 0 end (open sides)
     double march_end_imax = 0;        // and of the i = ni-1 end

@@ -202,6 +202,20 @@ struct March {
             open_ends(ratio);
             solve_block_tridiagonal2(static_cast<std::size_t>(L.n), A.data(), B.data(), C.data(), rhs.data());
         }
+        // The dissipation pulls a convex layer back towards its centre of
+        // curvature (5-10% of the distance of a circle's O-grid, summed over
+        // the layers): scale the step so that its mean along the normals,
+        // weighted by arc length, is the height asked. The scaling keeps
+        // every direction, so it keeps the orthogonality.
+        double along = 0.0, weight = 0.0;
+        for (int i = 0; i < L.n; ++i) {
+            along += f[i].ds * (rhs[i].x * f[i].n.x + rhs[i].y * f[i].n.y);
+            weight += f[i].ds;
+        }
+        if (along > 0.0) {
+            const double scale = hl * weight / along;
+            for (int i = 0; i < L.n; ++i) rhs[i] = {scale * rhs[i].x, scale * rhs[i].y};
+        }
         prev.swap(r);
         prev_edge.swap(edge);
         r.resize(prev.size());
