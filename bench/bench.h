@@ -27,4 +27,7 @@ double bench_wall_spacing(const eg2d_grid *g);
 /* Seed 004 Table 2 (--seed004). */
 void bench_seed004(void);
 
+/* The hyperbolic march on NACA 0012 (--march, march.c). */
+void bench_march(void);
+
 #endif

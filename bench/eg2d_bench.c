@@ -9,6 +9,7 @@
  *              multigrid in one run; swan 1025^2 multigrid against the point
  *              Gauss-Seidel extrapolated from its sweeps at 65^2 and 129^2
  *   eg2d_bench --seed004     seed 004 Table 2: an 87x31 O-grid, E < 5e-5 and 1e-10
+ *   eg2d_bench --march       the hyperbolic march: NACA 0012 O-grid 257x129 to 100 chords
  *
  * Cases (cases.c): swan, valley, annulus, annulus-source, naca0012,
  * naca0012-c, naca0012-wall. A solver name may carry ":omega" (psor:1
@@ -267,7 +268,7 @@ static int parse_solver(const char *spec, double *omega) {
 static void usage(void) {
     fprintf(stderr, "usage: eg2d_bench [--cases LIST] [--sizes LIST] [--solvers LIST (name or name:omega)]\n"
                     "                  [--system winslow|laplace] [--tolerance T] [--cap CPU-SECONDS]\n"
-                    "                  [--repeats N] [--json FILE] [--compare | --seed004]\n");
+                    "                  [--repeats N] [--json FILE] [--compare | --seed004 | --march]\n");
 }
 
 int main(int argc, char **argv) {
@@ -281,6 +282,10 @@ int main(int argc, char **argv) {
         const char *opt = argv[a], *val = a + 1 < argc ? argv[a + 1] : NULL;
         if (!strcmp(opt, "--seed004")) {
             bench_seed004();
+            return 0;
+        }
+        if (!strcmp(opt, "--march")) {
+            bench_march();
             return 0;
         }
         if (!strcmp(opt, "--compare")) {
