@@ -111,12 +111,16 @@ void frames(const Layer &L, const std::vector<Vec2> &r, double side, std::vector
 // and draws the lines of the flat surfaces together): each pass moves a
 // value a quarter of the way towards each neighbour.
 void smooth(const Layer &L, std::vector<double> &v, int passes, std::vector<double> &tmp) {
+    const int n = L.n;
+    tmp.resize(v.size());
     for (int p = 0; p < passes; ++p) {
-        tmp = v;
-        for (int i = 0; i < L.n; ++i) {
-            const int w = L.west(i), e = L.east(i);
-            v[i] = 0.5 * tmp[i] + 0.25 * ((w >= 0 ? tmp[w] : tmp[i]) + (e >= 0 ? tmp[e] : tmp[i]));
-        }
+        const double *a = v.data();
+        double *b = tmp.data();
+        for (int i = 1; i < n - 1; ++i) b[i] = 0.5 * a[i] + 0.25 * (a[i - 1] + a[i + 1]);
+        // The ends: across the cut on an O-grid, else a mirror (no flux out).
+        b[0] = 0.5 * a[0] + 0.25 * ((L.periodic ? a[n - 1] : a[0]) + a[1]);
+        b[n - 1] = 0.5 * a[n - 1] + 0.25 * (a[n - 2] + (L.periodic ? a[0] : a[n - 1]));
+        v.swap(tmp);
     }
 }
 
