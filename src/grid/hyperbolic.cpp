@@ -133,7 +133,7 @@ struct March {
     int layers = 0;
     std::vector<Vec2> r, prev, rhs;
     std::vector<NodeFrame> f;
-    std::vector<double> step, edge, prev_edge, tmp;
+    std::vector<double> step, edge, prev_edge, wall_edge, tmp;
     std::vector<Mat2> A, B, C;
     MarchEnd ends[2];
 
@@ -181,11 +181,17 @@ struct March {
                           (rx.y * re.x + rx.x * re.y) / q, (rx.y * re.y - rx.x * re.x) / q};
             // Chan & Steger's grid-convergence sensor D: the spacing of the
             // layer before over this one's, > 1 where lines converge; it
-            // enters as d = D^(2/Sl), kept within [0.1, 100].
+            // enters as d = D^(2/Sl), kept within [0.1, 100]. eg2d takes the
+            // larger of that and the wall's spacing over this one's: at a
+            // concave right angle the lines from the two sides converge a
+            // little per layer but a lot in total, and with the per-layer
+            // ratio alone the two cells beside the corner's line folded
+            // (L-shaped body, 129x65 and 257x129); the wall ratio is < 1
+            // wherever the march spreads, so it changes nothing there.
             const int w = L.west(i), e = L.east(i);
             double d = 1.0;
             if (!first && w >= 0 && e >= 0 && Sl > 0) {
-                const double D = (prev_edge[w] + prev_edge[i]) / F.edges;
+                const double D = std::max(prev_edge[w] + prev_edge[i], wall_edge[w] + wall_edge[i]) / F.edges;
                 d = std::min(std::max(std::pow(D, 2.0 / Sl), 0.1), 100.0);
             }
             // eps_e = eps_c N Sl d a, N = |r_eta| / |r_xi| (Chan & Steger 1992).
@@ -220,6 +226,7 @@ struct March {
             const double scale = hl * weight / along;
             for (int i = 0; i < L.n; ++i) rhs[i] = {scale * rhs[i].x, scale * rhs[i].y};
         }
+        if (first) wall_edge = edge;  // JMIN's edge lengths
         prev.swap(r);
         prev_edge.swap(edge);
         r.resize(prev.size());

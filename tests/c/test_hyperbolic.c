@@ -227,6 +227,19 @@ static void test_square_and_wedge(void **state) {
     assert_unfolded_and_far(g, 10.0);
 }
 
+/* An L-shaped body: five convex corners and one concave right angle, where
+ * the lines from the two sides meet on the bisector. */
+static void test_l_shaped_body(void **state) {
+    (void)state;
+    const double lx[] = {0, 2, 2, 1, 1, 0}, ly[] = {0, 0, 1, 1, 2, 2};
+    eg2d_grid *g = polygon_o(65, 33, 6, lx, ly);
+    march(g, 20.0, 0.0, 1.2);
+    assert_unfolded_and_far(g, 20.0);
+    g = polygon_o(129, 65, 6, lx, ly);
+    march(g, 20.0, 1e-3, 1.2);
+    assert_unfolded_and_far(g, 20.0);
+}
+
 /* Inside an L: a single block marching from a curve with a concave right
  * angle (JMIN along +x, then up the wall x = 1: the march goes to its left,
  * into the corner), with the symmetry planes x = 0 at IMIN (CONSTANT_X) and
@@ -262,6 +275,19 @@ static void test_concave_corner(void **state) {
     assert_true(fabs((n.x[c + n.ni * 5] - 1) + n.y[c + n.ni * 5]) < 1e-9);
     assert_true(n.x[c + n.ni * 5] < 1 && n.y[c + n.ni * 5] > 0);
     release(&n);
+    eg2d_destroy(g);
+
+    /* the same L at 65x33 with free ends, deeper into the corner */
+    double x65[65], y65[65];
+    for (int i = 0; i < 65; ++i) {
+        const double s = 2.0 * i / 64;
+        x65[i] = s < 1 ? s : 1;
+        y65[i] = s < 1 ? 0 : s - 1;
+    }
+    assert_int_equal(eg2d_create(65, 33, &g), EG2D_OK);
+    assert_int_equal(eg2d_set_side(g, EG2D_SIDE_JMIN, x65, y65), EG2D_OK);
+    march(g, 0.6, 0.0, 1.2);
+    if (folds(g) != 0) fail_msg("inside of the L, free ends: %g folded cells", folds(g));
     eg2d_destroy(g);
 }
 
@@ -349,7 +375,8 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_circle),        cmocka_unit_test(test_schedule),
         cmocka_unit_test(test_naca_o_sharp_edge), cmocka_unit_test(test_square_and_wedge),
-        cmocka_unit_test(test_concave_corner), cmocka_unit_test(test_open_ends),
+        cmocka_unit_test(test_l_shaped_body), cmocka_unit_test(test_concave_corner),
+        cmocka_unit_test(test_open_ends),
         cmocka_unit_test(test_naca_c),        cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
