@@ -20,7 +20,8 @@ namespace eg2d {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+// sin^2(5 degrees): the concave-corner factor's floor (alpha >= 10 degrees).
+const double kMinSin2 = std::pow(std::sin(3.14159265358979323846 / 36), 2);
 // Sub-steps (as pyHyp's cMax): the linearisation about the old layer holds
 // while a step is at most about the node spacing, so a layer whose height is
 // larger than its smallest spacing is marched in up to kMaxSubSteps equal
@@ -28,6 +29,7 @@ constexpr double kPi = 3.14159265358979323846;
 // layer gives 88% of the cells within 5 degrees of orthogonal, 16 parts 98.5%.
 constexpr double kMaxStepRatio = 1.0;
 constexpr int kMaxSubSteps = 16;
+const double kLnMin = std::log(0.1), kLnMax = std::log(100.0);  // the clamp of d
 
 double len(double x, double y) { return std::sqrt(x * x + y * y); }
 
@@ -93,15 +95,12 @@ void frames(const Layer &L, const std::vector<Vec2> &r, double side, std::vector
         F.n = {-side * F.t.y, side * F.t.x};
         // The curve turns towards the march (concave) when the cross product
         // of its edges has the march side's sign; the interior angle on the
-        // marching side is then pi - turn (at least 10 degrees, so a slit
-        // does not make the factor infinite).
+        // marching side is then alpha = pi - turn, and sin^2(alpha/2) =
+        // (1 + cos turn)/2 with cos turn = tw.te (alpha at least 10 degrees,
+        // so a slit does not make the factor infinite).
         const double cross = tw.x * te.y - tw.y * te.x;
         F.a = 1.0;
-        if (side * cross > 0) {
-            const double turn = std::atan2(std::fabs(cross), tw.x * te.x + tw.y * te.y);
-            const double s = std::sin(0.5 * std::max(kPi - turn, kPi / 18));
-            F.a = 1.0 / (s * s);
-        }
+        if (side * cross > 0) F.a = 1.0 / std::max(0.5 * (1.0 + tw.x * te.x + tw.y * te.y), kMinSin2);
     }
 }
 
@@ -192,7 +191,10 @@ struct March {
             double d = 1.0;
             if (!first && w >= 0 && e >= 0 && Sl > 0) {
                 const double D = std::max(prev_edge[w] + prev_edge[i], wall_edge[w] + wall_edge[i]) / F.edges;
-                d = std::min(std::max(std::pow(D, 2.0 / Sl), 0.1), 100.0);
+                // d = D^(2/Sl) clamped: compare the exponent with ln 0.1 and
+                // ln 100 first, so exp runs only when the clamp does not decide.
+                const double lnd = (2.0 / Sl) * std::log(D);
+                d = lnd <= kLnMin ? 0.1 : (lnd >= kLnMax ? 100.0 : std::exp(lnd));
             }
             // eps_e = eps_c N Sl d a, N = |r_eta| / |r_xi| (Chan & Steger 1992).
             const double eps_e = s.march_smoothing * (step[i] / F.ds) * Sl * d * F.a;
