@@ -132,7 +132,7 @@ struct March {
     int layers = 0;
     std::vector<Vec2> r, prev, rhs;
     std::vector<NodeFrame> f;
-    std::vector<double> step, edge, prev_edge, wall_edge, tmp;
+    std::vector<double> step, edge, prev_edge, wall_edge, tmp, factor;
     std::vector<Mat2> A, B, C;
     MarchEnd ends[2];
 
@@ -144,16 +144,15 @@ struct March {
         ends[1] = static_cast<MarchEnd>(static_cast<int>(s.march_end_imax));
     }
 
-    // One implicit step of height hl from r (whose frames f are current);
-    // Sl is Chan & Steger's layer scaling, ratio the layer's height growth.
-    void advance(double hl, double Sl, double ratio, bool first) {
-        // Cell area = height x local arc length (Chan & Steger 1992), the
-        // arc length taken on the layer a plain normal step would make: the
-        // implicit solve spreads the area over the new layer's width, so
-        // with the old width a convex layer of radius R would step only
-        // h/(1 + h/R), 12% short per far-field layer of an airfoil O-grid.
-        // Where the predicted layer converges (concave) its width is kept
-        // above half the old one.
+    // The step length per unit height at each node, factor[i]: cell area =
+    // height x local arc length (Chan & Steger 1992), the arc length taken
+    // on the layer a plain normal step of hl would make: the implicit solve
+    // spreads the area over the new layer's width, so with the old width a
+    // convex layer of radius R would step only h/(1 + h/R), 12% short per
+    // far-field layer of an airfoil O-grid. Where the predicted layer
+    // converges (concave) its width is kept above half the old one. Then
+    // the area smoothing.
+    void step_factors(double hl) {
         for (int i = 0; i < L.n; ++i) {
             const int w = L.west(i), e = L.east(i);
             const Vec2 pc{r[i].x + hl * f[i].n.x, r[i].y + hl * f[i].n.y};
@@ -164,9 +163,21 @@ struct March {
                 width += len(r[k].x + hl * f[k].n.x - pc.x, r[k].y + hl * f[k].n.y - pc.y);
                 ++count;
             }
-            step[i] = hl * std::max(width / count, 0.5 * f[i].ds) / f[i].ds;
+            step[i] = std::max(width / count, 0.5 * f[i].ds) / f[i].ds;
         }
         smooth(L, step, static_cast<int>(s.march_area_smoothing), tmp);
+        factor = step;
+    }
+
+    // One implicit step of height hl from r (whose frames f are current);
+    // Sl is Chan & Steger's layer scaling, ratio the layer's height growth.
+    // The sub-steps after a layer's first (same_layer) reuse its step
+    // factors: the area smoothing was most of the cost, and redoing it per
+    // sub-step changed no measured figure by more than 0.01% (NACA 0012
+    // 257x129: 25 -> 15-18 ms).
+    void advance(double hl, double Sl, double ratio, bool first, bool same_layer) {
+        if (!same_layer) step_factors(hl);
+        for (int i = 0; i < L.n; ++i) step[i] = factor[i] * hl;
 
         for (int i = 0; i < L.n; ++i) {
             const NodeFrame &F = f[i];
@@ -301,7 +312,7 @@ void hyperbolic_march(Grid &g, const Settings &s) {
             std::min<double>(kMaxSubSteps, std::max(1.0, std::ceil(h[l - 1] / ds_min / kMaxStepRatio))));
         for (int part = 0; part < parts; ++part) {
             if (part > 0) frames(L, m.r, m.side, m.f, m.edge);
-            m.advance(h[l - 1] / parts, Sl, part == 0 ? ratio : 1.0, first);
+            m.advance(h[l - 1] / parts, Sl, part == 0 ? ratio : 1.0, first, part > 0);
             first = false;
         }
         const std::size_t row = static_cast<std::size_t>(ni) * static_cast<std::size_t>(l);
