@@ -46,4 +46,7 @@ void bench_sweep(int repeats, const char *svg_path);
 /* Seed 004 Table 2 (--seed004). */
 void bench_seed004(void);
 
+/* The hyperbolic march on NACA 0012 (--march, march.c). */
+void bench_march(void);
+
 #endif

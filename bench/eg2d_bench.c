@@ -12,6 +12,7 @@
  *   eg2d_bench --sweep [--repeats N] [--svg FILE]
  *              multigrid at 2^k, 2^k+1, 2^k+2 and round sizes from 65 to
  *              1025 against the nearest 2^k+1 size (sweep.c)
+ *   eg2d_bench --march       the hyperbolic march: NACA 0012 O-grid 257x129 to 100 chords
  *
  * Cases (cases.c): swan, valley, annulus, annulus-source, naca0012,
  * naca0012-c, naca0012-wall. A solver name may carry ":omega" (psor:1
@@ -273,7 +274,7 @@ static int parse_solver(const char *spec, double *omega) {
 static void usage(void) {
     fprintf(stderr, "usage: eg2d_bench [--cases LIST] [--sizes LIST] [--solvers LIST (name or name:omega)]\n"
                     "                  [--system winslow|laplace] [--tolerance T] [--cap CPU-SECONDS]\n"
-                    "                  [--repeats N] [--json FILE] [--compare | --seed004]\n"
+                    "                  [--repeats N] [--json FILE] [--compare | --seed004 | --march]\n"
                     "       eg2d_bench --sweep [--repeats N (3)] [--svg FILE]\n");
 }
 
@@ -303,6 +304,10 @@ int main(int argc, char **argv) {
                 return 2;
             }
             bench_sweep(rep, svg);
+            return 0;
+        }
+        if (!strcmp(opt, "--march")) {
+            bench_march();
             return 0;
         }
         if (!strcmp(opt, "--compare")) {

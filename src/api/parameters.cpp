@@ -31,6 +31,17 @@ const ParameterInfo kParameters[] = {
     {EG2D_PARAM_WALL_LAYER, "wall_layer", 0.0, 1.0, false, false, true, false, &Settings::wall_layer},
     {EG2D_PARAM_HERMITE_SPACING, "hermite_spacing", 0.0, 10.0, true, false, false, false, &Settings::hermite_spacing},
     {EG2D_PARAM_SVG_QUALITY, "svg_quality", -1.0, 99.0, false, false, true, false, &Settings::svg_quality},
+    // The hyperbolic march (src/grid/hyperbolic.cpp).
+    {EG2D_PARAM_MARCH_DISTANCE, "march_distance", 0.0, 1e30, true, false, false, true, &Settings::march_distance},
+    {EG2D_PARAM_MARCH_FIRST_HEIGHT, "march_first_height", 0.0, 1e30, true, false, false, true,
+     &Settings::march_first_height},
+    {EG2D_PARAM_MARCH_GROWTH, "march_growth", 1.0, 3.0, false, false, false, false, &Settings::march_growth},
+    {EG2D_PARAM_MARCH_SMOOTHING, "march_smoothing", 0.0, 20.0, false, false, false, false,
+     &Settings::march_smoothing},
+    {EG2D_PARAM_MARCH_AREA_SMOOTHING, "march_area_smoothing", 0.0, 1000.0, false, false, true, false,
+     &Settings::march_area_smoothing},
+    {EG2D_PARAM_MARCH_END_IMIN, "march_end_imin", 0.0, 3.0, false, false, true, false, &Settings::march_end_imin},
+    {EG2D_PARAM_MARCH_END_IMAX, "march_end_imax", 0.0, 3.0, false, false, true, false, &Settings::march_end_imax},
     // Approximate factorisation (src/solvers/af.cpp).
     {EG2D_PARAM_AF_DTAU_MIN, "af_dtau_min", 0.0, 1e12, true, false, false, false, &Settings::af_dtau_min},
     {EG2D_PARAM_AF_DTAU_MAX, "af_dtau_max", 0.0, 1e12, true, false, false, true, &Settings::af_dtau_max},

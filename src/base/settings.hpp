@@ -23,6 +23,14 @@ struct Settings {
     double wall_growth = 1.15;        // cell-to-cell growth of a marched wall layer, [1, 1.5]
     double wall_layer = 0;            // 1: EG2D_ORTHO_WALL marches a layer where it can (wall.cpp)
     double hermite_spacing = 1.0;     // EG2D_INIT_HERMITE's alpha (seed 001 eq 2.6)
+    // The hyperbolic march (src/grid/hyperbolic.cpp, docs/hyperbolic.md).
+    double march_distance = 0.0;      // marching distance; 0: 10 x the JMIN curve's bounding-box diagonal
+    double march_first_height = 0.0;  // first layer's height; 0: the one with constant ratio 1 + (G-1)/2
+    double march_growth = 1.2;        // G: largest ratio of consecutive layer heights
+    double march_smoothing = 0.5;     // eps_c of Chan & Steger's variable dissipation
+    double march_area_smoothing = 20; // area-smoothing passes per layer
+    double march_end_imin = 0;        // MarchEnd of the i = 0 end (open sides)
+    double march_end_imax = 0;        // and of the i = ni-1 end
     double svg_quality = -1;          // EG2D_QUALITY_* colouring SVG cells, -1 none
 
     // Approximate factorisation (seed 004 eqs 5-13); 0 = automatic where allowed.

@@ -138,7 +138,9 @@ void Generator::set_coordinates(const double *x, const double *y) {
 void Generator::initialize(int method) {
     const InitMethod *m = find_init_method(method);
     if (!m) fail(Failure::Argument, format("initialisation method %d: no such method", method));
-    if (!grid_.boundary_complete())
+    if (m->marches && !grid_.side_set(Side::JMin))
+        fail(Failure::State, format("%s: side JMIN, the curve to march from, is not set", m->name));
+    if (!m->marches && !grid_.boundary_complete())
         fail(Failure::State, format("the boundary is not complete: side %s not set", missing_sides(grid_).c_str()));
     check_extent(grid_);
     Grid next(grid_);
@@ -146,6 +148,13 @@ void Generator::initialize(int method) {
     m->fill(next, settings);
     check_coordinates("initial x", next.x.data(), next.size());
     check_coordinates("initial y", next.y.data(), next.size());
+    if (m->marches) {
+        // The march made the outer boundary: it is the boundary now, as
+        // after eg2d_set_coordinates (no sliding sides survive it).
+        const std::vector<double> mx(next.x), my(next.y);
+        next.set_coordinates(mx.data(), my.data());
+        motions_.clear();
+    }
     next.mark_initialized();
     grid_ = std::move(next);
     for (const auto &mo : motions_) mo->restart();

@@ -8,6 +8,7 @@ namespace {
 const InitMethod kMethods[] = {
     {EG2D_INIT_TFI, "tfi", tfi_linear},
     {EG2D_INIT_HERMITE, "hermite", tfi_hermite},
+    {EG2D_INIT_HYPERBOLIC, "hyperbolic", hyperbolic_march, true},
 };
 }
 

@@ -12,6 +12,9 @@ struct InitMethod {
     // Fills the interior (and the O-grid cut) of a grid whose boundary is
     // complete. May throw; callers run it on a copy.
     void (*fill)(Grid &grid, const Settings &settings);
+    // A marching method needs only JMIN and writes every other node, its
+    // sides included: the grid it makes becomes the boundary.
+    bool marches = false;
 };
 
 // nullptr if no method has that id.
@@ -19,5 +22,6 @@ const InitMethod *find_init_method(int id);
 
 void tfi_linear(Grid &grid, const Settings &settings);   // tfi.cpp
 void tfi_hermite(Grid &grid, const Settings &settings);  // tfi_hermite.cpp
+void hyperbolic_march(Grid &grid, const Settings &settings);  // hyperbolic.cpp
 
 }  // namespace eg2d

@@ -162,6 +162,20 @@ static int r_maxit_0(eg2d_grid *g) { return eg2d_set_max_iterations(g, 0); }
 static int r_maxit_frac(eg2d_grid *g) { return eg2d_set_parameter(g, EG2D_PARAM_MAX_ITERATIONS, 2.5); }
 static int r_divfactor(eg2d_grid *g) { return eg2d_set_parameter(g, EG2D_PARAM_DIVERGENCE_FACTOR, 5); }
 static int r_param_999(eg2d_grid *g) { return eg2d_set_parameter(g, 999, 1); }
+static int r_march_no_jmin(eg2d_grid *g) { return eg2d_initialize(g, EG2D_INIT_HYPERBOLIC); }
+static int r_march_out_of_reach(eg2d_grid *g) {
+    /* 8 layers from 1e-3 cannot reach 100 at growth <= 1.2; the parameters are
+     * put back so that only the failing call is observed. */
+    int rc;
+    eg2d_set_parameter(g, EG2D_PARAM_MARCH_DISTANCE, 100);
+    eg2d_set_parameter(g, EG2D_PARAM_MARCH_FIRST_HEIGHT, 1e-3);
+    rc = eg2d_initialize(g, EG2D_INIT_HYPERBOLIC);
+    eg2d_set_parameter(g, EG2D_PARAM_MARCH_DISTANCE, 0);
+    eg2d_set_parameter(g, EG2D_PARAM_MARCH_FIRST_HEIGHT, 0);
+    return rc;
+}
+static int r_march_growth(eg2d_grid *g) { return eg2d_set_parameter(g, EG2D_PARAM_MARCH_GROWTH, 0.9); }
+static int r_march_end(eg2d_grid *g) { return eg2d_set_parameter(g, EG2D_PARAM_MARCH_END_IMIN, 4); }
 static int r_bounds_neg(eg2d_grid *g) { double a, b, c; (void)g; return eg2d_parameter_bounds(-7, &a, &b, &c); }
 static int r_iterate_neg(eg2d_grid *g) { return eg2d_iterate(g, -1, NULL); }
 static int r_iterate_early(eg2d_grid *g) { return eg2d_iterate(g, 1, NULL); }
@@ -399,6 +413,16 @@ static const bad_input rows[] = {
      r_divfactor, EG2D_ERR_ARGUMENT, "eg2d_set_parameter: divergence_factor = 5: must be in [10, 1e+12]", 0},
     {"unknown parameter id", "eg2d_set_parameter(g, 999, 1)", S_FRESH, r_param_999, EG2D_ERR_ARGUMENT,
      "eg2d_set_parameter: parameter 999: no such parameter", 0},
+    {"march without the curve to march from", "eg2d_initialize(g, EG2D_INIT_HYPERBOLIC)", S_FRESH, r_march_no_jmin,
+     EG2D_ERR_STATE, "eg2d_initialize: hyperbolic: side JMIN, the curve to march from, is not set", 0},
+    {"march schedule that cannot reach its distance", "MARCH_DISTANCE 100, MARCH_FIRST_HEIGHT 1e-3, 8 layers",
+     S_SQUARE, r_march_out_of_reach, EG2D_ERR_ARGUMENT,
+     "eg2d_initialize: march: 8 layers from a first height of 0.001 reach only * with growth 1.2, not the distance "
+     "100: raise the first height, the growth limit or nj", 0},
+    {"march growth limit below 1", "eg2d_set_parameter(g, EG2D_PARAM_MARCH_GROWTH, 0.9)", S_FRESH, r_march_growth,
+     EG2D_ERR_ARGUMENT, "eg2d_set_parameter: march_growth = 0.9: must be in [1, 3]", 0},
+    {"march end condition out of range", "eg2d_set_parameter(g, EG2D_PARAM_MARCH_END_IMIN, 4)", S_FRESH,
+     r_march_end, EG2D_ERR_ARGUMENT, "eg2d_set_parameter: march_end_imin = 4: must be in [0, 3]", 0},
     {"unknown parameter id, no handle", "eg2d_parameter_bounds(-7, &lo, &hi, &def)", S_NONE, r_bounds_neg,
      EG2D_ERR_ARGUMENT, "eg2d_parameter_bounds: parameter -7: no such parameter", 0},
     {"negative iteration count", "eg2d_iterate(g, -1, NULL)", S_SQUARE, r_iterate_neg, EG2D_ERR_ARGUMENT,

@@ -1,0 +1,22 @@
+// The hyperbolic march (Steger & Chaussee 1980; Chan & Steger 1992; seed 001
+// sections 2.8-2.10): from the JMIN curve, layer by layer, the grid that is
+// orthogonal to the previous layer with the cell areas the marching schedule
+// asks for. It fills the whole grid, outer boundary included. The equations,
+// the dissipation and the end conditions are in docs/hyperbolic.md.
+#pragma once
+#include "base/grid.hpp"
+#include "base/settings.hpp"
+
+namespace eg2d {
+
+// Open ends of a single-block or C-grid march (EG2D_MARCH_END_*).
+enum class MarchEnd { Free = 0, ConstantX = 1, ConstantY = 2, Splay = 3 };
+
+// Marches from row j = 0 (which must hold the JMIN side) and overwrites
+// every other row. O-grids march outward from the closed curve, C-grids
+// away from the body, single blocks to the left of JMIN as it runs.
+// Throws Failure::Argument for an unreachable schedule, Failure::Folded
+// when a layer folds (naming the layer and node).
+void hyperbolic_march(Grid &grid, const Settings &settings);
+
+}  // namespace eg2d

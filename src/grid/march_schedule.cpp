@@ -1,0 +1,47 @@
+#include "grid/march_schedule.hpp"
+
+#include <cmath>
+
+#include "base/error.hpp"
+
+namespace eg2d {
+
+namespace {
+// h_1 (1 + r + ... + r^(N-1)): the distance N layers cover.
+double covered(int n, double h1, double r) {
+    if (std::fabs(r - 1.0) < 1e-12) return h1 * n;
+    return h1 * (std::pow(r, n) - 1.0) / (r - 1.0);
+}
+}  // namespace
+
+std::vector<double> march_schedule(int layers, double distance, double first_height, double growth) {
+    double h1 = first_height, r = 1.0;
+    if (h1 == 0.0) {
+        r = 1.0 + 0.5 * (growth - 1.0);
+        h1 = distance / covered(layers, 1.0, r);
+    } else {
+        const double lo = 1.0 / growth, hi = growth;
+        if (covered(layers, h1, hi) < distance * (1 - 1e-12))
+            fail(Failure::Argument,
+                 format("march: %d layers from a first height of %g reach only %g with growth %g, not the "
+                        "distance %g: raise the first height, the growth limit or nj",
+                        layers, h1, covered(layers, h1, hi), growth, distance));
+        if (covered(layers, h1, lo) > distance * (1 + 1e-12))
+            fail(Failure::Argument,
+                 format("march: %d layers from a first height of %g go at least %g (shrinking by 1/%g), beyond "
+                        "the distance %g: lower the first height or nj", layers, h1, covered(layers, h1, lo),
+                        growth, distance));
+        // covered() increases with r: bisect for h1 * S(r) = D.
+        double a = lo, b = hi;
+        for (int it = 0; it < 200 && b - a > 1e-15; ++it) {
+            const double m = 0.5 * (a + b);
+            (covered(layers, h1, m) < distance ? a : b) = m;
+        }
+        r = 0.5 * (a + b);
+    }
+    std::vector<double> h(static_cast<std::size_t>(layers));
+    for (int k = 0; k < layers; ++k) h[static_cast<std::size_t>(k)] = h1 * std::pow(r, k);
+    return h;
+}
+
+}  // namespace eg2d
