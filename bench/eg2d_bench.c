@@ -13,6 +13,8 @@
  *              multigrid at 2^k, 2^k+1, 2^k+2 and round sizes from 65 to
  *              1025 against the nearest 2^k+1 size (sweep.c)
  *   eg2d_bench --march       the hyperbolic march: NACA 0012 O-grid 257x129 to 100 chords
+ *   eg2d_bench --quick       swan, annulus, NACA 0012 O and C at 65, 129, 250, every solver
+ *                            (cap 10 CPU s): the same table in about a minute
  *
  * Cases (cases.c): swan, valley, annulus, annulus-source, naca0012,
  * naca0012-c, naca0012-wall. A solver name may carry ":omega" (psor:1
@@ -275,7 +277,8 @@ static void usage(void) {
     fprintf(stderr, "usage: eg2d_bench [--cases LIST] [--sizes LIST] [--solvers LIST (name or name:omega)]\n"
                     "                  [--system winslow|laplace] [--tolerance T] [--cap CPU-SECONDS]\n"
                     "                  [--repeats N] [--json FILE] [--compare | --seed004 | --march]\n"
-                    "       eg2d_bench --sweep [--repeats N (3)] [--svg FILE]\n");
+                    "       eg2d_bench --sweep [--repeats N (3)] [--svg FILE]\n"
+                    "       eg2d_bench --quick [--repeats N] [--json FILE]   (a subset in about a minute)\n");
 }
 
 int main(int argc, char **argv) {
@@ -309,6 +312,15 @@ int main(int argc, char **argv) {
         if (!strcmp(opt, "--march")) {
             bench_march();
             return 0;
+        }
+        if (!strcmp(opt, "--quick")) {
+            /* A representative subset in about a minute, to compare a change:
+             * a single block, an O-grid, the NACA 0012 O- and C-grids, every
+             * solver, at two 2^k+1 sizes and a round one. */
+            snprintf(cases_arg, sizeof cases_arg, "%s", "swan,annulus,naca0012,naca0012-c");
+            snprintf(sizes_arg, sizeof sizes_arg, "%s", "65,129,250");
+            cap = 10;
+            continue;
         }
         if (!strcmp(opt, "--compare")) {
             do_compare = 1;

@@ -25,7 +25,7 @@
  *     eg2d_destroy(g);
  *
  * The equations, the notation and the one residual that every solver drives
- * to the tolerance are defined in NUMERICS.md (shipped with the sources):
+ * to the tolerance are defined in docs/NUMERICS.md:
  *   residual = max over unknown nodes of max(|R_x|, |R_y|) / (2(alpha+gamma)) / L
  * where L is the diagonal of the boundary's bounding box: about the largest
  * node move a Jacobi step would make, as a fraction of the domain size.
@@ -174,9 +174,9 @@ EG2D_API int eg2d_set_boundary(eg2d_grid *grid, const double *x, const double *y
 /*=====================================================================
  * Initial grid
  *===================================================================*/
-#define EG2D_INIT_TFI     0  /* linear transfinite interpolation, seed 001 eq 2.2 */
+#define EG2D_INIT_TFI     0  /* linear transfinite interpolation, the grid-generation lecture notes eq 2.2 */
 #define EG2D_INIT_HERMITE 1  /* TFI with Hermite blending in eta and the orthogonal
-                                projector (seed 001 eqs 2.4-2.6): grid lines leave JMIN
+                                projector (the grid-generation lecture notes eqs 2.4-2.6): grid lines leave JMIN
                                 and JMAX normal to them, with d r/d eta of length
                                 alpha * |r(i,nj-1) - r(i,0)| / (nj-1), alpha =
                                 EG2D_PARAM_HERMITE_SPACING; linear TFI in xi (none on an
@@ -204,7 +204,7 @@ EG2D_API int eg2d_set_system(eg2d_grid *grid, int system);
 #define EG2D_SOLVER_LSOR      1  /* line SOR, alternating directions; the periodic
                                     direction of an O-grid is solved as a cyclic system */
 #define EG2D_SOLVER_AF        2  /* approximate factorisation, false transients */
-#define EG2D_SOLVER_NESTED    3  /* coarse-to-fine, seed 000 */
+#define EG2D_SOLVER_NESTED    3  /* coarse-to-fine, Petrilli (1989) */
 #define EG2D_SOLVER_MULTIGRID 4  /* FAS multigrid (the default); see EG2D_PARAM_MG_* */
 /* What one iteration is, per solver:
  *   PSOR    one lexicographic point SOR sweep (omega: EG2D_PARAM_RELAXATION).
@@ -231,7 +231,7 @@ EG2D_API const char *eg2d_solver_name(int solver);
 
 /* Relaxation factor omega in (0, 2); 0 = automatic. The automatic factor
  * (point SOR, line SOR, nested) aims at the optimum of the Laplace model
- * problem on the grid's size (seed 003's for points; for lines the line-SOR
+ * problem on the grid's size (the elliptic-grid course notes' for points; for lines the line-SOR
  * optimum per direction; nested at most 1.95). From a new start it rises
  * from 1 to that aim over about 9/(2 - aim) sweeps (over-relaxing straight
  * from TFI can fold a Winslow grid; Laplace point SOR and nested start at
@@ -312,7 +312,7 @@ EG2D_API int eg2d_parameter_bounds(int param, double *lower, double *upper, doub
 
 /* Solver parameters (100-199). */
 
-/* Approximate factorisation, EG2D_SOLVER_AF (seed 004 eqs 5-13): false
+/* Approximate factorisation, EG2D_SOLVER_AF (Ly & Norrison (2007) eqs 5-13): false
  * transients r_tau = L(r), the Warming-Beam time rule with parameters a, b,
  * and the implicit operator factored into a xi and an eta line operator (the
  * mixed derivative is left explicit); the xi lines of an O-grid are cyclic,
@@ -338,7 +338,7 @@ EG2D_API int eg2d_parameter_bounds(int param, double *lower, double *upper, doub
 #define EG2D_PARAM_AF_STEPS         102  /* M in [4, 1000]; 0 = automatic (default)       */
 #define EG2D_PARAM_AF_A             103  /* Warming-Beam a in (-1, 10], default 0         */
 #define EG2D_PARAM_AF_B             104  /* Warming-Beam b in (0, 10], default 1          */
-#define EG2D_PARAM_AF_RELAXATION    105  /* omega of seed 004 eq 7 in (0, 4); 0 = automatic
+#define EG2D_PARAM_AF_RELAXATION    105  /* omega of Ly & Norrison (2007) eq 7 in (0, 4); 0 = automatic
                                             (default): omega = 2b, so omega/b = 2, the
                                             Peaceman-Rachford choice. The generic
                                             relaxation does not apply to AF. */
@@ -348,9 +348,9 @@ EG2D_API int eg2d_parameter_bounds(int param, double *lower, double *upper, doub
  * (and changes nothing) for a value out of its range or dtau_min > dtau_max.
  * Setting EG2D_PARAM_AF_DTAU_MIN/MAX one by one is checked the same way. */
 EG2D_API int eg2d_set_af_cycle(eg2d_grid *grid, double dtau_min, double dtau_max, int steps);
-/* The Warming-Beam time rule (seed 004 Table 1): Euler implicit a = 0, b = 1
+/* The Warming-Beam time rule (Ly & Norrison (2007) Table 1): Euler implicit a = 0, b = 1
  * (default); three-point backward a = 1/2, b = 1; trapezoidal a = 0, b = 1/2.
- * The explicit rules (b = 0) are unstable here (seed 004) and rejected. */
+ * The explicit rules (b = 0) are unstable here (Ly & Norrison (2007)) and rejected. */
 EG2D_API int eg2d_set_af_time_rule(eg2d_grid *grid, double a, double b);
 
 /*=====================================================================
@@ -374,14 +374,14 @@ EG2D_API int eg2d_iterate(eg2d_grid *grid, int iterations, double *residual);
 EG2D_API int eg2d_solve(eg2d_grid *grid);
 
 /*=====================================================================
- * Curves and point distributions (seed 001 sections 2.4-2.5)
+ * Curves and point distributions (the grid-generation lecture notes sections 2.4-2.5)
  *===================================================================*/
 /* A curve is a second opaque handle: a plane curve r(t), t in [0, 1], with
  * its arc length. Curve calls have no grid: their errors are reported by
  * eg2d_last_error(NULL) (per thread). A curve is immutable once made and may
  * be shared by threads and grids; eg2d_set_side_curve copies its points.
  *
- * Arc length (seed 001 eq 2.11) is tabulated by 5-point Gauss-Legendre
+ * Arc length (the grid-generation lecture notes eq 2.11) is tabulated by 5-point Gauss-Legendre
  * panels refined until halving a panel changes the length by less than
  * 1e-14 of it, and inverted by safeguarded Newton iteration: the normalized
  * arc length of every point given out is exact to about 1e-12 (1e-11 for
@@ -418,20 +418,20 @@ EG2D_API void eg2d_curve_destroy(eg2d_curve *curve);
 
 /* Total arc length. */
 EG2D_API int eg2d_curve_length(const eg2d_curve *curve, double *length);
-/* The point at normalized arc length s in [0, 1] (seed 001's x(s)). */
+/* The point at normalized arc length s in [0, 1] (the grid-generation lecture notes' x(s)). */
 EG2D_API int eg2d_curve_evaluate(const eg2d_curve *curve, double s, double *x, double *y);
 
 /* Distributions of n points on [0, 1], s_k = s(u_k), u_k = k/(n-1); s_0 = 0,
  * s_{n-1} = 1. Spacings below are s_1 - s_0 (first) and s_{n-1} - s_{n-2} (last).
  *  UNIFORM      s = u.
  *  EXPONENTIAL  p1 = beta != 0, |beta| <= 700: s = (e^(beta u) - 1)/(e^beta - 1)
- *               (seed 001 after eq 2.12); first spacing (e^(beta/(n-1)) - 1)/(e^beta - 1);
+ *               (the grid-generation lecture notes after eq 2.12); first spacing (e^(beta/(n-1)) - 1)/(e^beta - 1);
  *               beta > 0 clusters at s = 0, beta < 0 at s = 1.
  *  TANH_ONE     p1 = delta in (0, 700]: s = 1 + tanh(delta (u-1)/2)/tanh(delta/2)
- *               (seed 001 eq 2.13); clusters at s = 0; first spacing
+ *               (the grid-generation lecture notes eq 2.13); clusters at s = 0; first spacing
  *               1 + tanh(delta (1/(n-1) - 1)/2)/tanh(delta/2), last 1 - s(1 - 1/(n-1)).
  *  TANH_TWO     p1 = b in (0, 350], p2 = c in [0, 1]: s = (tanh(b (u-c)) - A)/(B - A),
- *               A = tanh(-b c), B = tanh(b (1-c)) (seed 001 end of 2.5). The slope is
+ *               A = tanh(-b c), B = tanh(b (1-c)) (the grid-generation lecture notes end of 2.5). The slope is
  *               largest at u = c, so points thin out there and gather toward the
  *               ends: c = 1 is TANH_ONE with delta = 2b (clusters at s = 0, the seed's
  *               attraction point 1 - c), c = 0 clusters at s = 1, c = 1/2 at both.
@@ -452,7 +452,7 @@ EG2D_API int eg2d_curve_points(const eg2d_curve *curve, int n, int distribution,
 
 /* Puts the side's points on a curve with a distribution (as
  * eg2d_curve_points; the side's corner checks and rules are eg2d_set_side's).
- * Direction (seed 001 figure 1.13): a side whose curve runs against the grid
+ * Direction (the grid-generation lecture notes figure 1.13): a side whose curve runs against the grid
  * fails with EG2D_ERR_BOUNDARY and a message that says so, unless flags ask:
  *  EG2D_CURVE_REVERSE  use the curve from its end to its start (s -> 1 - s);
  *  EG2D_CURVE_ORIENT   reverse it when, and only when, it runs against the grid;
@@ -489,7 +489,7 @@ EG2D_API int eg2d_first_cell_height(double yplus, double reynolds, double chord,
 EG2D_API int eg2d_get_size(const eg2d_grid *grid, int *ni, int *nj);
 /* Copies the ni*nj node coordinates (Fortran order). Needs an initialised grid. */
 EG2D_API int eg2d_get_coordinates(const eg2d_grid *grid, double *x, double *y);
-/* The residual (NUMERICS.md) of the current grid. Needs an initialised grid. */
+/* The residual (docs/NUMERICS.md) of the current grid. Needs an initialised grid. */
 EG2D_API int eg2d_get_residual(const eg2d_grid *grid, double *residual);
 /* Iterations done since the grid was last initialised or given coordinates. */
 EG2D_API int eg2d_get_iterations(const eg2d_grid *grid, int *iterations);
@@ -599,9 +599,9 @@ EG2D_API int eg2d_get_cell_quality(const eg2d_grid *grid, int metric, double *va
  * looked for) when this format is asked for, so that libeg2d itself never
  * depends on libcgns; without the plugin the call is EG2D_ERR_UNSUPPORTED.
  * EG2D_FORMAT_GMV: GMV ASCII ("gmvinput ascii", nodes with z = 0, quad
- * cells, the per-cell metrics as cell variables), seed 002's format.
+ * cells, the per-cell metrics as cell variables), Khattri's (2006) format.
  * EG2D_FORMAT_MATLAB: a Matlab/Octave script that sets xl(i,j), yl(i,j)
- * (1-based, 17 digits) and plots the grid with the boundary in red, seed 002.
+ * (1-based, 17 digits) and plots the grid with the boundary in red, Khattri (2006).
  * EG2D_FORMAT_SVG: a picture for a browser: grid lines, the boundary drawn
  * thicker, and cells coloured by the metric EG2D_PARAM_SVG_QUALITY when it
  * is set (blue = best to red = worst of the grid, with a legend). */
@@ -647,10 +647,10 @@ EG2D_API int eg2d_set_side_from_file(eg2d_grid *grid, int side, const char *path
 /*=====================================================================
  * Grid control
  *
- * Control terms turn the Winslow system into NUMERICS.md's full equation
+ * Control terms turn the Winslow system into the full equation of docs/NUMERICS.md
  *   alpha (r_xixi + Phi r_xi) - 2 beta r_xieta + gamma (r_etaeta + Psi r_eta)
  *     + J^2 (P r_xi + Q r_eta) = 0
- * (plus seed 002's parameter-space terms). A grid has at most one control of
+ * (plus Khattri's (2006) parameter-space terms). A grid has at most one control of
  * each kind below; different kinds add up. Controls are kept across
  * boundary changes and re-derived from the new boundary. They need the
  * Winslow system: eg2d_iterate/eg2d_solve with EG2D_SYSTEM_LAPLACE and any
@@ -662,12 +662,12 @@ EG2D_API int eg2d_set_side_from_file(eg2d_grid *grid, int side, const char *path
 #define EG2D_XI  0  /* a xi = const line (i index), acts on P */
 #define EG2D_ETA 1  /* an eta = const line (j index), acts on Q */
 
-/* Thompson's attraction (NUMERICS.md "Source terms"), in index units:
+/* Thompson's attraction (docs/NUMERICS.md, "Source terms"), in index units:
  *   P = -sum a sign(xi - line) exp(-decay |xi - line|)  (direction EG2D_XI)
  *   Q = -sum a sign(eta - line) exp(-decay |eta - line|) (direction EG2D_ETA)
  * A positive amplitude attracts lines of that family toward `line`, a
  * negative one repels them. line in [0, ni-1] (resp. [0, nj-1]); decay >= 0;
- * amplitude finite. Seed 004 eq 14 is direction EG2D_ETA with amplitude mu and
+ * amplitude finite. Ly & Norrison (2007) eq 14 is direction EG2D_ETA with amplitude mu and
  * decay kappa: (line 0, 100, 0.2) clusters eta-lines at the inner wall of an
  * O-grid. Sources accumulate until eg2d_clear_sources. The strength of a given
  * amplitude depends on the physical size of the cells (P enters times J^2). */
@@ -679,18 +679,18 @@ EG2D_API int eg2d_add_point_source(eg2d_grid *grid, double xi, double eta, doubl
 /* Removes every line and point source. */
 EG2D_API int eg2d_clear_sources(eg2d_grid *grid);
 
-/* The user's own P and Q per node (ni*nj, Fortran order), as seed 000's
+/* The user's own P and Q per node (ni*nj, Fortran order), as Petrilli's (1989)
  * p1/p2 arrays: the term J^2 (P r_xi + Q r_eta). A positive P pushes xi-lines
  * toward larger xi. Either pointer may be NULL (that one is zero); both NULL
  * removes the arrays. Values must be finite. The arrays are copied. */
 EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const double *Q);
 
 /* Orthogonality at the boundary.
- * MIDDLECOFF_THOMAS: seed 000 section 4: Phi from the point distribution of
+ * MIDDLECOFF_THOMAS: Petrilli (1989) section 4: Phi from the point distribution of
  *   the eta = const boundaries, Psi from the xi = const ones (none on an
  *   O-grid), interpolated linearly inward. It makes lines leave smooth
  *   curved boundaries nearly orthogonally; on boundaries made of straight
- *   segments and corners it is zero away from the corners (seed 000 fig. 7).
+ *   segments and corners it is zero away from the corners (Petrilli (1989) fig. 7).
  * WALL with EG2D_PARAM_WALL_LAYER = 1, on a C-grid or on an O-grid round a
  *   body without sharp corners whose only wall is JMIN with a height h: at
  *   initialisation a layer of (nj-1)/3 rows is marched along the wall
@@ -775,7 +775,7 @@ EG2D_API int eg2d_set_orthogonality(eg2d_grid *grid, int method);
  * or after eg2d_set_orthogonality. */
 EG2D_API int eg2d_set_wall_spacing(eg2d_grid *grid, int side, double height);
 
-/* Adaptive control from a parameter-space grid (seed 002): s, t are an ni*nj
+/* Adaptive control from a parameter-space grid (Khattri (2006)): s, t are an ni*nj
  * grid on the unit square (Fortran order), unfolded: s_xi t_eta - s_eta t_xi
  * of one sign at every unknown node (O-grid: s may jump by a constant at
  * the cut, e.g. run from 0 to 1 round the grid). The physical grid inherits
@@ -783,7 +783,7 @@ EG2D_API int eg2d_set_wall_spacing(eg2d_grid *grid, int side, double height);
  * Both NULL removes it. Arrays are copied. */
 EG2D_API int eg2d_set_parameter_grid(eg2d_grid *grid, const double *s, const double *t);
 
-/* Seed 002's clustering maps of [0, 1] onto itself, sampled at n >= 2
+/* Khattri's (2006) clustering maps of [0, 1] onto itself, sampled at n >= 2
  * uniform points u_k = k/(n-1) into u_out[k]; increasing, u(0) = 0, u(1) = 1,
  * with slope strength/(e^strength - 1) at the attracting points:
  *   LINE       dense at a in (0, 1)                      (Cluster_X_Near, strength 3)
@@ -799,7 +799,7 @@ EG2D_API int eg2d_clustering_map(int kind, double a, double b, double strength, 
  * arrays s, t) from two increasing distributions u (ni values), v (nj). */
 EG2D_API int eg2d_tensor_parameter_grid(int ni, int nj, const double *u, const double *v, double *s, double *t);
 
-/* Weight-function adaptivity (seed 001): w per node (ni*nj, Fortran order,
+/* Weight-function adaptivity (the grid-generation lecture notes): w per node (ni*nj, Fortran order,
  * finite and > 0); larger w = denser grid. Along each index direction the
  * spacing follows 1/w: Phi = 2 (w_e - w_w)/(w_w + 2 w_c + w_e), Psi likewise,
  * which a one-dimensional grid satisfies exactly as w ds = const with

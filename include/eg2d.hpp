@@ -107,7 +107,7 @@ inline double first_cell_height(double yplus, double reynolds, double chord = 1)
     return h;
 }
 
-/* Seed 002's clustering map EG2D_CLUSTER_* sampled at n points. */
+/* Khattri's (2006) clustering map EG2D_CLUSTER_* sampled at n points. */
 inline std::vector<double> clustering_map(int kind, double a, double b, double strength, int n) {
     std::vector<double> u(n > 0 ? static_cast<std::size_t>(n) : 0u);
     detail::check(::eg2d_clustering_map(kind, a, b, strength, n, u.data()), nullptr);

@@ -1,4 +1,4 @@
-/* The swan domain of seed 003 at 65 x 65: Winslow + point SOR to 1e-10.
+/* The swan domain of the elliptic-grid course notes at 65 x 65: Winslow + point SOR to 1e-10.
  * Build: cc swan.c $(pkg-config --cflags --libs eg2d) -o swan */
 #include <eg2d.h>
 #include <stdio.h>

@@ -1,4 +1,4 @@
-! The swan of seed 003 from Fortran: build with
+! The swan of the elliptic-grid course notes from Fortran: build with
 !   gfortran swan.f90 $(pkg-config --cflags --libs eg2d-fortran) -o swan_f
 program swan
   use eg2d

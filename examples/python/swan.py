@@ -1,4 +1,4 @@
-"""The swan of seed 003 from Python (run with PYTHONPATH at the package and,
+"""The swan of the elliptic-grid course notes from Python (run with PYTHONPATH at the package and,
 outside an install, EG2D_LIBRARY=path/to/libeg2d.so.1)."""
 import numpy as np
 

@@ -61,12 +61,14 @@ void write_svg(const WriteRequest &r, OutputFile &out) {
     out.print("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
               "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.3f %.3f\">\n"
               "<title>eg2d grid %d x %d%s%s</title>\n"
+              "<!-- eg2d frame: xmin %.17g ymax %.17g scale %.17g margin %g (pixel = margin + (x - xmin) scale, "
+              "margin + (ymax - y) scale): a zoomed view is this file with another viewBox -->\n"
               "<style>.grid{fill:none;stroke:#333;stroke-width:0.6}"
               ".boundary{fill:none;stroke:#000;stroke-width:2.5;stroke-linejoin:round}"
               "text{font:13px sans-serif}</style>\n"
               "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",
               std::ceil(width), std::ceil(height), width, height, g.ni(), g.nj(), metric ? ", cells coloured by " : "",
-              metric ? metric->name : "");
+              metric ? metric->name : "", f.xmin, f.ymax, f.scale, kMargin);
     if (metric) {
         std::vector<double> v(cell_count(g));
         metric->cells(g, v.data());

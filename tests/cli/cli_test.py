@@ -319,7 +319,7 @@ class Sides(unittest.TestCase):
         ortho = r"top (\d+\.\d+)/(\d+\.\d+)"
         with tempfile.TemporaryDirectory() as d:
             with open(os.path.join(EXAMPLES, "swan.toml")) as f:
-                text = f.read()
+                text = f.read().replace("# method: the library's default, FAS multigrid", 'method = "psor"')  # point SOR, as when this was measured
             with open(os.path.join(d, "fixed.toml"), "w") as f:
                 f.write(text)
             with open(os.path.join(d, "sliding.toml"), "w") as f:
@@ -411,7 +411,7 @@ class CommandLine(unittest.TestCase):
             case = os.path.join(EXAMPLES, "swan.toml")
             path = os.path.join(d, "case.toml")
             with open(case) as f:
-                text = f.read().replace("max_iterations = 20000", "max_iterations = 5")
+                text = f.read().replace("max_iterations = 20000", "max_iterations = 5").replace("# method: the library's default, FAS multigrid", 'method = "psor"')
             with open(path, "w") as f:
                 f.write(text)
             code, out, err = run("run", path, "-o", os.path.join(d, "out"), "--size", "17x17")
@@ -439,7 +439,8 @@ class CommandLine(unittest.TestCase):
         with tempfile.TemporaryDirectory() as d:
             path = os.path.join(d, "case.toml")
             with open(os.path.join(EXAMPLES, "swan.toml")) as f:
-                text = f.read().replace('method = "psor"', 'method = "psor"\nrelaxation = 1.99')
+                text = f.read().replace("# method: the library's default, FAS multigrid",
+                                        'method = "psor"\nrelaxation = 1.99')
             with open(path, "w") as f:
                 f.write(text)
             code, out, err = run("run", path, "-o", os.path.join(d, "out"), "--quiet", "--size", "17x17")
@@ -461,7 +462,7 @@ class Demo(unittest.TestCase):
         with tempfile.TemporaryDirectory() as d:
             code, out, err = run("demo", "-o", os.path.join(d, "demo-out"), "--quiet")
             self.assertEqual(code, 0, out + err)
-            self.assertTrue(out.startswith("Swan (seed 003, A4): 65 x 65 single-block grid"))
+            self.assertTrue(out.startswith("Swan (the elliptic-grid course notes, A4): 65 x 65 single-block grid"))
             files = sorted(os.listdir(os.path.join(d, "demo-out")))
             self.assertIn("swan.svg", files)
             check_svg(self, os.path.join(d, "demo-out", "swan.svg"))
@@ -488,7 +489,7 @@ class Demo(unittest.TestCase):
         listed = [line.split()[0] for line in out.splitlines()]
         examples = sorted(f[:-5] for f in os.listdir(EXAMPLES) if f.endswith(".toml"))
         self.assertEqual(listed, examples)
-        self.assertRegex(out, r"(?m)^swan +Swan \(seed 003, A4\) \(default\)$")
+        self.assertRegex(out, r"(?m)^swan +Swan \(the elliptic-grid course notes, A4\) \(default\)$")
 
     def test_demo_text_is_the_example_file(self):
         # the embedded demo runs the same case as the file: same first line and counts
@@ -531,7 +532,7 @@ class Progress(unittest.TestCase):
             path = os.path.join(d, "big.toml")
             with open(os.path.join(EXAMPLES, "swan.toml")) as f:
                 text = f.read().replace("tolerance = 1e-10", "tolerance = 1e-15").replace(
-                    "max_iterations = 20000", "max_iterations = 100000000")
+                    "max_iterations = 20000", "max_iterations = 100000000").replace("# method: the library's default, FAS multigrid", 'method = "psor"')
             with open(path, "w") as f:
                 f.write(text)
             out_dir = os.path.join(d, "out")
@@ -541,7 +542,7 @@ class Progress(unittest.TestCase):
             first = p.stdout.readline()
             p.send_signal(signal.SIGINT)
             rest, err = p.communicate(timeout=120)
-            self.assertTrue(header.startswith("Swan (seed 003, A4): 801 x 801"), header)
+            self.assertTrue(header.startswith("Swan (the elliptic-grid course notes, A4): 801 x 801"), header)
             self.assertRegex(first, r"^  iteration 1  residual \d\.\d{3}e[-+]\d\d  rate -/iteration\n$")
             self.assertEqual(p.returncode, 130, rest + err)
             self.assertRegex(rest, r"(?m)^interrupted at iteration \d+, residual .*: no files written$")

@@ -71,7 +71,7 @@ void read_solver(const Fields &top, Case &c) {
     for (const auto &k : parameter_keys("solver")) keys.push_back(k);
     Fields f(top.table("solver"), top.at("solver"), keys);
     f.finish();
-    const Feature &s = pick_key(f, "method", "psor", solvers());
+    const Feature &s = pick_key(f, "method", "multigrid", solvers());
     c.solver = s.id;
     c.solver_at = f.at("method");
     read_parameters(f, "solver", c);
@@ -171,7 +171,7 @@ void read_controls(const Fields &top, Case &c) {
         c.weight_at = f.at("weight");
         Formula(c.weight, {"i", "j"}, c.constants, c.weight_at);
     }
-    if (f.has("parameter_grid")) {  // seed 002: a tensor grid of clustering maps
+    if (f.has("parameter_grid")) {  // Khattri (2006): a tensor grid of clustering maps
         Fields g(f.table("parameter_grid"), f.at("parameter_grid"), {"i", "j"});
         g.finish();
         for (const char *dir : {"i", "j"}) {

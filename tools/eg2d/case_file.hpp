@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "eg2d.h"
 #include "formula.hpp"
 #include "location.hpp"
 #include "side_spec.hpp"
@@ -33,7 +34,7 @@ struct WallSpacing {  // eg2d_set_wall_spacing
     Location where;
 };
 
-struct Clustering {  // seed 002's clustering map in one direction (eg2d_clustering_map)
+struct Clustering {  // Khattri's (2006) clustering map in one direction (eg2d_clustering_map)
     int kind = -1;      // EG2D_CLUSTER_*; -1: uniform
     double a = 0.5, b = 0, strength = 0;
     Location where;
@@ -53,7 +54,7 @@ struct Case {
     Location size_at;
     int topology = 0, system = 1, initial = 0;
     Location topology_at, system_at, initial_at;
-    int solver = 0;
+    int solver = EG2D_SOLVER_MULTIGRID;  // the library's default
     Location solver_at;
     std::vector<ParameterSetting> parameters;
     Constants constants;
@@ -68,7 +69,7 @@ struct Case {
     Location source_p_at, source_q_at;
     std::string weight;  // formula in i, j ("" = none): eg2d_set_weight
     Location weight_at;
-    bool parameter_grid = false;  // seed 002: eg2d_set_parameter_grid from two clustering maps
+    bool parameter_grid = false;  // Khattri (2006): eg2d_set_parameter_grid from two clustering maps
     Clustering cluster_i, cluster_j;
     std::vector<OutputFile> outputs;
     int svg_quality = -1;  // EG2D_QUALITY_* the picture is coloured by; -1: none

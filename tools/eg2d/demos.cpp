@@ -2,7 +2,7 @@
 
 namespace eg2dtool {
 
-// Seed 003's swan: the README's first command shows it.
+// the elliptic-grid course notes' swan: the README's first command shows it.
 const char *default_demo() { return "swan"; }
 
 }  // namespace eg2dtool

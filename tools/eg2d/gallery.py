@@ -34,7 +34,34 @@ def header_comment(src, name):
             if not line.startswith("#"):
                 break
             text.append(line[1:].strip())
-    return " ".join(t for t in text if t)
+    return " ".join(t for t in text if t and not t.startswith("zoom:"))
+
+
+def zoom_box(src, name):
+    """A header line '# zoom: x0 x1 y0 y1' asks for a second picture of that box."""
+    with open(os.path.join(src, "examples", name + ".toml")) as f:
+        for line in f:
+            if not line.startswith("#"):
+                break
+            m = re.match(r"#\s*zoom:\s*(\S+)\s+(\S+)\s+(\S+)\s+(\S+)", line)
+            if m:
+                return [float(v) for v in m.groups()]
+    return None
+
+
+def zoomed(svg, box):
+    """The same picture with its viewBox on the world box (x0, x1, y0, y1)."""
+    m = re.search(r"eg2d frame: xmin (\S+) ymax (\S+) scale (\S+) margin (\S+)", svg)
+    xmin, ymax, scale, margin = (float(v) for v in m.groups())
+    x0, x1, y0, y1 = box
+    px, py = margin + (x0 - xmin) * scale, margin + (ymax - y1) * scale
+    w, h = (x1 - x0) * scale, (y1 - y0) * scale
+    height = 800.0 * h / w
+    # Lines keep their width on the screen: stroke widths scaled down by the zoom.
+    svg = re.sub(r"stroke-width:([0-9.]+)", lambda a: f"stroke-width:{float(a.group(1)) * w / 800.0:.4g}", svg)
+    return re.sub(r'<svg ([^>]*)width="[^"]*" height="[^"]*" viewBox="[^"]*"',
+                  lambda a: f'<svg {a.group(1)}width="800" height="{height:.0f}" viewBox="{px:.3f} {py:.3f} {w:.3f} {h:.3f}"',
+                  svg, count=1)
 
 
 def numbers_close(a, b):
@@ -58,9 +85,15 @@ def main():
                     bad.append(f"{name}: docs/gallery/{name}.svg is missing")
                     continue
                 with open(committed) as f, open(os.path.join(out, name + ".svg")) as g:
-                    if not numbers_close(f.read(), g.read()):
+                    made = g.read()
+                    if not numbers_close(f.read(), made):
                         bad.append(f"{name}: docs/gallery/{name}.svg differs from what eg2d makes of "
                                    f"examples/{name}.toml")
+                box = zoom_box(src, name)
+                if box:
+                    zpath = os.path.join(pictures, name + "-zoom.svg")
+                    if not os.path.exists(zpath) or not numbers_close(open(zpath).read(), zoomed(made, box)):
+                        bad.append(f"{name}: docs/gallery/{name}-zoom.svg is missing or stale")
         with open(os.path.join(src, "docs", "gallery.md")) as f:
             md = f.read()
         bad += [f"{n}: not in docs/gallery.md" for n in examples(src) if f"(gallery/{n}.svg)" not in md]
@@ -83,7 +116,19 @@ def main():
             os.replace(os.path.join(out, name + ".svg"), os.path.join(pictures, name + ".svg"))
             md += [f"## {summary[0].split(':')[0]}", "", header_comment(src, name), "",
                    f"Case file: [`examples/{name}.toml`](../examples/{name}.toml) — `eg2d demo {name}`", "",
-                   f"![{name}](gallery/{name}.svg)", "", "```", *summary, "```", ""]
+                   f"![{name}](gallery/{name}.svg)", ""]
+            box = zoom_box(src, name)
+            if box:
+                with open(os.path.join(pictures, name + ".svg")) as f:
+                    z = zoomed(f.read(), box)
+                with open(os.path.join(pictures, name + "-zoom.svg"), "w") as f:
+                    f.write(z)
+                md += [f"Near the body, x in [{box[0]:g}, {box[1]:g}], y in [{box[2]:g}, {box[3]:g}]:", "",
+                       f"![{name}, near the body](gallery/{name}-zoom.svg)", ""]
+            folds = next((l for l in summary if "folded cells" in l), "")
+            md += ["```", *summary, "```", ""]
+            if folds:
+                md += [f"What the picture shows: the converged grid; {folds.split(',')[0].replace('quality: ', '')}.", ""]
     with open(os.path.join(src, "docs", "gallery.md"), "w") as f:
         f.write("\n".join(md))
 

@@ -89,7 +89,7 @@ void apply_controls(eg2d_grid *g, const Case &c) {
             for (int i = 0; i < c.ni; ++i) w[static_cast<std::size_t>(i) + static_cast<std::size_t>(c.ni) * j] = fw({double(i), double(j)});
         check(g, eg2d_set_weight(g, w.data()), c.weight_at);
     }
-    if (c.parameter_grid) {  // seed 002: the tensor grid of two clustering maps
+    if (c.parameter_grid) {  // Khattri (2006): the tensor grid of two clustering maps
         auto map = [&](const Clustering &k, int n) {
             std::vector<double> u(static_cast<std::size_t>(n));
             if (k.kind < 0) {

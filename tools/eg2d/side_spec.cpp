@@ -181,7 +181,7 @@ SideSpec parse_side(const toml::node &node, int side, const std::string &name, c
 void side_nodes(const SideSpec &spec, int n, bool closed, const Constants &constants, std::vector<double> &x,
                 std::vector<double> &y) {
     const std::size_t m = spec.pieces.size();
-    // Intervals per piece: by share, else by length, rounded cumulatively (as seed 000's
+    // Intervals per piece: by share, else by length, rounded cumulatively (as Petrilli's (1989)
     // listing splits a side: round(nj*k/10)).
     std::vector<double> weight(m);
     double total = 0;

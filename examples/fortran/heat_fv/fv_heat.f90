@@ -1,6 +1,6 @@
 ! A cell-centred finite-volume solver for steady heat conduction
 !     -div(k grad T) = f   on the cells of a structured curvilinear grid,
-! written the way a line-by-line FV code (Phoenix, for which seed 000's
+! written the way a line-by-line FV code (Phoenix, for which Petrilli's (1989)
 ! generator was made) is written: node arrays x(ni,nj), y(ni,nj) from the
 ! grid generator, cell values with a halo T(0:ncx+1, 0:ncy+1) that holds the
 ! Dirichlet values at boundary-face midpoints (or, across a periodic cut, the

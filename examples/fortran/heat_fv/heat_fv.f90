@@ -2,7 +2,7 @@
 ! volumes (module fv_heat) on grids made by eg2d, checked by the method of
 ! manufactured solutions (module mms): on each grid family the error in T
 ! must fall at second order as the grid is refined.
-!   swan    the swan domain of seed 003, Winslow, n x n cells, n = 32, 64, 128
+!   swan    the swan domain of the elliptic-grid course notes, Winslow, n x n cells, n = 32, 64, 128
 !   annulus 0.5 <= r <= 1.5 as an O-grid (periodic faces across the cut),
 !           2n x n cells, n = 16, 32, 64
 ! The observed order p = log2(e(n/2) / e(n)) of the finest pair (refinement
