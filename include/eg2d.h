@@ -711,56 +711,31 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   works on walls with corners. At convergence the first interior node
  *   sits on the wall normal at the requested height (normal = perpendicular
  *   to the wall's central difference r(k+1) - r(k-1)), except where the
- *   control's coefficient limits bind: at a sharp trailing edge with a
- *   larger height the node stops short (NACA0012 129x33 at 3e-3 chord:
- *   6.6% short, the normal coefficient held at its limit 5.9 of 6.05). On a single block the
- *   end nodes next to a corner shared with another wall side are left free.
+ *   control's coefficient limits bind (a sharp trailing edge with a large
+ *   height: the node stops short). On a single block the end nodes next to
+ *   a corner shared with another wall side are left free.
  *   The layer it makes is not graded: the control acts on the first rows
- *   (exp(-a (m-1))), so the growth from the wall is not bounded and falls
- *   toward 1 only over several rows (NACA0012 129x33 at 1e-5 chord, quarter
- *   chord: cell height ratios 24.8, 5.3, 3.1, 2.2, 1.8, 1.5). NACA0012
- *   O-grids (r = 10) at 1e-5 chord, the median over the ni-1 wall nodes of
- *   |r(i,2) - r(i,1)| / |r(i,1) - r(i,0)| (smaller at the leading and
- *   trailing edges): 51 (65x17), 24 (129x33), 14 (257x65), 10 (513x129),
- *   7 (1025x257); 257x65 at 1e-4: 5.3, at 1e-3: 2.5 (the plain grids:
- *   about 1). A smaller EG2D_PARAM_WALL_DECAY grades it better but
- *   converges much more slowly: 257x65 at 1e-5 with a = 0.15 gives 3.5,
- *   but with EG2D_SOLVER_MULTIGRID the cycles fall back to line sweeps
- *   (2363 iterations instead of 30 cycles); at a = 0.02 a run diverged.
- *   A flow solver that needs a bounded growth from the wall should check
- *   EG2D_QUALITY_SMOOTHNESS_J (its per-cell values in the first rows show
- *   where the jump is).
+ *   (exp(-a (m-1))), so the growth from the wall is not bounded; a flow
+ *   solver that needs a bounded growth should check
+ *   EG2D_QUALITY_SMOOTHNESS_J, or use the marched layer above.
  *   On a C-grid the wake cut of JMIN counts as wall too: the nodes next to
- *   it on both sides get the height, so the first row runs on past the
- *   trailing edge. NACA0012 C-grids (r = 5, ni/4 wake nodes a side),
- *   iterations to the default tolerance 1e-8 / to 1e-10 (multigrid falls
- *   back to line sweeps): 1e-5 chord 129x33 329 / 507, 257x65 1169 / 2035;
- *   1e-4 97x33 265 / -, 161x33 335 / -; 1e-3 65x17 and 129x33 - / -
- *   ("-": not converged in 20000, the residual stalling at 2e-9 (1e-4) and
- *   5e-8..9e-8 (1e-3)). There the cut node next to the trailing edge keeps
- *   sliding along the cut (65x17 at 1e-3: about 1e-6 chord per iteration)
- *   while the first cells already have the height to 4 digits on the
- *   airfoil and both sides of the cut: eg2d_solve returns
- *   EG2D_ERR_NOT_CONVERGED with that grid, which is usable once its first
- *   cells are checked; more iterations only move that node.
+ *   it on both sides get the height. There the cut node next to the
+ *   trailing edge can keep sliding along the cut at larger heights, and
+ *   eg2d_solve then returns EG2D_ERR_NOT_CONVERGED with a grid whose first
+ *   cells already have the height.
  *   While it is active, the automatic relaxation (EG2D_PARAM_RELAXATION 0)
  *   is 1: over-relaxing its strong terms diverges at sharp trailing edges.
- *   With EG2D_SOLVER_MULTIGRID each cycle follows one update, taken 3x
- *   (relaxation) and 5x (step) larger than for the sweeping solvers and,
- *   once the start-up ramp is over, Anderson-accelerated; a cycle that
+ *   With EG2D_SOLVER_MULTIGRID each cycle follows one update; a cycle that
  *   folds cells, or 20 cycles in which neither the residual nor the
- *   control's remaining change halves, hand the run over to line sweeps. Measured on NACA0012 O-grids (r = 10): at a first cell of 1e-5
- *   chord the cycles run to the end (25-32 cycles, 65x17..1025x257); at
- *   1e-4 too from 129x33 to 513x129 (28-41 cycles), but at 1e-4 on 65x17
- *   and 1025x257, and at 1e-3 from 65x17 to 513x129, they fold or stall
- *   and the run ends with sweeps (183-2670 iterations at 1e-4, 196-7103
- *   at 1e-3).
+ *   control's remaining change halves, hand the run over to line sweeps,
+ *   and the run says so (eg2d_get_run_event).
  *   A run converges only when the control is settled too (its remaining
  *   change within the tolerance). The control starts over from zero after
  *   any change of the start grid (eg2d_initialize, eg2d_set_coordinates),
  *   the boundary, the topology or the controls: its coefficients belong to
- *   the grid they were found on (even a converged grid set back as the
- *   start takes the ramp again, about 30 cycles at 1e-5 chord).
+ *   the grid they were found on.
+ *   Measured cycle counts, layer growth and limits: bench/RESULTS.md,
+ *   "The wall control in numbers".
  * NONE removes either. */
 #define EG2D_ORTHO_NONE              0
 #define EG2D_ORTHO_MIDDLECOFF_THOMAS 1
@@ -825,10 +800,9 @@ EG2D_API int eg2d_set_weight(eg2d_grid *grid, const double *w);
  * Schedule: layer k = 1..nj-1 has height h_k = h_1 r^(k-1), where r in
  * [1/G, G] makes the heights add up to the distance D. The first interior
  * node lies h_1 from JMIN along the normal (area smoothing moves it
- * slightly where the curve turns sharply: within 1% on NACA 0012). Each
- * layer's mean step along its normals is its height, so the outer side
- * lies about D from JMIN (NACA 0012 to 100 chords: nearest outer node at
- * 0.98 D). Sharp convex edges (a trailing edge) march along the bisector
+ * slightly where the curve turns sharply). Each layer's mean step along
+ * its normals is its height, so the outer side lies about D from JMIN (the
+ * measured figures: bench/RESULTS.md, docs/hyperbolic.md). Sharp convex edges (a trailing edge) march along the bisector
  * of their angle; dissipation, scaled by Chan & Steger's sensors, and area
  * smoothing keep concave corners and the far field from folding. The march
  * does not check for folds: read EG2D_QUALITY_FOLDED_CELLS. Errors: EG2D_ERR_STATE if JMIN is
@@ -845,10 +819,10 @@ EG2D_API int eg2d_set_weight(eg2d_grid *grid, const double *w);
 #define EG2D_PARAM_MARCH_SMOOTHING     413  /* eps_c: [0, 20], default 0.5: strength of the explicit
                                                (and twice it, implicit) dissipation */
 #define EG2D_PARAM_MARCH_AREA_SMOOTHING 414 /* [0, 1000], default 20: area-smoothing passes per layer.
-                                               On airfoil O-grids smoothing 0.25 with 50 passes gives
-                                               more orthogonal cells (NACA 0012: 99% within 5 degrees
-                                               against 98.5%); at concave corners marched with first
-                                               cells near the node spacing it can fold */
+                                               More passes (with less dissipation) give more
+                                               orthogonal cells on airfoil O-grids, but at concave
+                                               corners marched with first cells near the node
+                                               spacing they can fold (docs/hyperbolic.md) */
 #define EG2D_PARAM_MARCH_END_IMIN      415  /* EG2D_MARCH_END_* of the i = 0 end (single block,    */
 #define EG2D_PARAM_MARCH_END_IMAX      416  /* C-grid) and of the i = ni-1 end; default FREE       */
 /* Open ends of a single-block or C-grid march (O-grids have none): */
