@@ -107,6 +107,8 @@ typedef struct eg2d_grid eg2d_grid;
 #define EG2D_ERR_IO             8  /* a file could not be read or written */
 #define EG2D_ERR_UNSUPPORTED    9  /* a feature not built into this library */
 #define EG2D_ERR_INTERRUPTED   10  /* the monitor callback asked the run to stop */
+#define EG2D_ERR_INTERNAL      11  /* a defect inside eg2d (an unexpected exception): please
+                                      report it with the message; the handle is unchanged */
 
 /* A static English name of a status ("EG2D_ERR_BOUNDARY: ..."); never NULL. */
 EG2D_API const char *eg2d_status_string(int status);

@@ -46,6 +46,7 @@ EG2D_API const char *eg2d_status_string(int status) {
     case EG2D_ERR_IO: return "EG2D_ERR_IO: file error";
     case EG2D_ERR_UNSUPPORTED: return "EG2D_ERR_UNSUPPORTED: not built into this library";
     case EG2D_ERR_INTERRUPTED: return "EG2D_ERR_INTERRUPTED: stopped by the monitor";
+    case EG2D_ERR_INTERNAL: return "EG2D_ERR_INTERNAL: internal error in eg2d";
     default: return "unknown eg2d status";
     }
 }

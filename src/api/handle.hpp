@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <new>
+#include <stdexcept>
 #include <string>
 
 #include "base/error.hpp"
@@ -49,12 +50,16 @@ int capture(std::string &message, Body &&body) noexcept {
     } catch (const std::bad_alloc &) {
         message = "out of memory";
         return EG2D_ERR_MEMORY;
+    } catch (const std::length_error &) {  // a container asked for more than it can hold
+        message = "out of memory (a size beyond what can be allocated)";
+        return EG2D_ERR_MEMORY;
     } catch (const std::exception &e) {
         message = std::string("internal error: ") + e.what();
     } catch (...) {
         message = "internal error: unknown exception";
     }
-    return EG2D_ERR_ARGUMENT;
+    // Not the caller's input: a caller can tell a defect from bad arguments.
+    return EG2D_ERR_INTERNAL;
 }
 
 // Runs body(); records the message of a failure on the grid (or, for a NULL

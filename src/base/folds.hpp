@@ -19,6 +19,11 @@ FoldSummary fold_summary(const Grid &grid);
 // +1 for a right-handed grid (total area positive), -1 for a left-handed one.
 int grid_orientation(const Grid &g);
 
+// The area the boundary encloses, >= 0: the shoelace area of the ring
+// JMIN, IMAX, JMAX, IMIN (a C-grid's cut, run both ways, cancels); on an
+// O-grid the area between the outer curve (JMAX) and the inner one (JMIN).
+double boundary_area(const Grid &g);
+
 // A folded cell has a corner whose turn (the cross product of the two edges
 // leaving it) has the sign opposite to the grid's orientation.
 bool is_folded(const Cell &c, int orientation);

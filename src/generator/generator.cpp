@@ -45,6 +45,10 @@ constexpr double kDivergenceFloor = 1e-2;
 // spacings) underflows to 0 and a TFI grid would pass as converged (found
 // by fuzz_api). The largest is bounded by kMaxCoordinate in grid.cpp.
 constexpr double kMinExtent = 1e-75;
+// The smallest enclosed area, as a share of the bounding box's diagonal
+// squared: below it the domain is flat (1e-12 is far below any real domain,
+// a NACA 0012 in a 500-chord far field is 3e-1, and far above round-off).
+constexpr double kMinAreaShare = 1e-12;
 // The pace of dynamic controls against a solver that converges each
 // iteration (ControlPace; measured in the loop of run()).
 constexpr double kCyclePaceRelaxation = 3.0;
@@ -69,6 +73,13 @@ void check_extent(const Grid &g) {
     if (!(L >= kMinExtent))
         fail(Failure::Boundary, format("the boundary's extent (bounding-box diagonal) is %g, below %g: the points "
                                        "(nearly) coincide, or the domain needs scaling", L, kMinExtent));
+    // A boundary that encloses nothing (every point on one line, a side
+    // lying on the side opposite) has no grid: refused, not "solved".
+    const double area = boundary_area(g);
+    if (!(area > kMinAreaShare * L * L))
+        fail(Failure::Boundary, format("the boundary encloses an area of %.3g in a bounding box of diagonal %.3g: "
+                                       "its points lie on one line, or a side lies on the side opposite",
+                                       area, L));
 }
 
 std::string missing_sides(const Grid &g) {

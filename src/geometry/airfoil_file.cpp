@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "base/error.hpp"
+#include "base/regular_file.hpp"
 #include "geometry/curve.hpp"
 
 namespace eg2d {
@@ -48,6 +49,7 @@ bool blank(const std::string &line) {
 }  // namespace
 
 std::shared_ptr<Curve> read_airfoil(const char *path) {
+    require_regular_file(path);
     std::FILE *f = std::fopen(path, "r");
     if (!f) fail(Failure::Io, format("cannot open airfoil file \"%s\": %s", path, std::strerror(errno)));
     std::vector<std::string> lines;

@@ -1,8 +1,16 @@
-// A file written all-or-nothing: the bytes go to a temporary in the same
-// directory (so that the rename is atomic on one file system), and commit()
-// renames it over the requested path. Destroyed without commit(), the
-// temporary is removed: a failed write never leaves a half-written file
-// under the requested name, and an existing file there stays as it was.
+// A file written all-or-nothing, that respects what is at the path:
+//  - the bytes go to a temporary in the target's directory, and commit()
+//    renames it over the target (atomic on one file system); destroyed
+//    without commit(), the temporary is removed and the target is as it was;
+//  - a symbolic link is followed (through a chain): its final target is
+//    written, the link kept;
+//  - an existing regular file keeps its permission bits and, where the
+//    process may, its owner and group; one with other hard links is
+//    rewritten in place once the temporary is complete (a rename would
+//    detach it from its other names);
+//  - a FIFO or a character device is written in place (the finished bytes
+//    streamed into it; a FIFO without a reader fails rather than blocks);
+//  - a directory, a socket or a block device is refused, never replaced.
 // Every failure throws Failure::Io with the requested path and strerror.
 #pragma once
 #include <cstdio>
@@ -38,9 +46,16 @@ public:
 
 private:
     [[noreturn]] void fail_errno(const char *what, int err) const;
-    std::string path_, temp_;
+    // Copies the finished temporary into the target opened with `flags`.
+    void stream_into_target(int flags);
+    std::string path_, target_, temp_;
     std::FILE *f_ = nullptr;
     bool committed_ = false;
+    enum class Kind { New, Regular, Linked, Stream } kind_ = Kind::New;
+    struct stat_info {
+        unsigned mode = 0;
+        long uid = -1, gid = -1;
+    } old_;
 };
 
 }  // namespace eg2d

@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/regular_file.hpp"
 #include "eg2d.h"
 #include "io/plot3d.hpp"
 
@@ -33,9 +34,15 @@ std::size_t nodes(const Plot3dBlock &b) {
     return static_cast<std::size_t>(b.ni) * static_cast<std::size_t>(b.nj) * static_cast<std::size_t>(b.nk);
 }
 
+// A grid has at least 2 x 2 nodes: a file cut short can otherwise pass as a
+// 1 x n grid of another layout.
 bool plausible(const Plot3dBlock &b) {
-    return b.ni >= 1 && b.nj >= 1 && b.nk >= 1 && nodes(b) <= (std::size_t{1} << 40);
+    return b.ni >= 2 && b.nj >= 2 && b.nk >= 1 && nodes(b) <= (std::size_t{1} << 40);
 }
+
+// The largest file read: far beyond any 2-D grid (1e9 nodes in doubles),
+// short of what a device or a runaway file would take.
+constexpr long long kMaxFileBytes = 16LL << 30;
 
 // Sequential binary input with optional Fortran record markers.
 class BinaryCursor {
@@ -128,9 +135,16 @@ bool try_binary(const std::vector<unsigned char> &bytes, bool big_endian, bool m
         std::size_t got = rec;
         if (!c.open(got)) return false;
         if (static_cast<int>(g) == want) {
+            const std::size_t at = c.position();
             b.x.resize(n);
             b.y.resize(n);
             if (!c.reals(b.x.data(), n, real) || !c.reals(b.y.data(), n, real)) return false;
+            for (std::size_t k = 0; k < 2 * n; ++k) {
+                const double v = k < n ? b.x[k] : b.y[k - n];
+                if (!std::isfinite(v))
+                    fail(Failure::Io, format("a non-finite coordinate (%s) at byte offset %zu", std::isnan(v) ? "NaN" : "Inf",
+                                             at + k * real));
+            }
             c.skip(rec - 2 * n * real);
         } else {
             c.skip(rec);
@@ -222,17 +236,18 @@ bool numbers(const std::vector<unsigned char> &bytes, std::vector<double> &out, 
 }  // namespace
 
 Plot3dFile read_plot3d(const std::string &path, int block) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail(Failure::Io, format("%s: cannot open: %s", path.c_str(), std::strerror(errno)));
-    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) fail(Failure::Io, format("%s: read failed: %s", path.c_str(), std::strerror(errno)));
+    std::vector<unsigned char> bytes = read_regular_file(path, kMaxFileBytes);
     if (bytes.empty()) fail(Failure::Io, format("%s: the file is empty", path.c_str()));
     Plot3dFile file;
     bool found = false;
-    for (bool markers : {true, false})
-        for (bool big : {false, true})
-            for (Layout l : kLayouts)
-                if (!found) found = try_binary(bytes, big, markers, l, block, file);
+    try {
+        for (bool markers : {true, false})
+            for (bool big : {false, true})
+                for (Layout l : kLayouts)
+                    if (!found) found = try_binary(bytes, big, markers, l, block, file);
+    } catch (const Error &e) {  // a layout that fits but holds a bad value
+        fail(e.failure(), format("%s: %s", path.c_str(), e.what()));
+    }
     if (!found) {
         std::vector<double> t;
         std::string where;

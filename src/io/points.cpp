@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "base/error.hpp"
+#include "base/regular_file.hpp"
 
 namespace eg2d {
 
@@ -33,6 +34,7 @@ bool number(const char *&s, double &v) {
 }  // namespace
 
 Points read_points(const std::string &path) {
+    require_regular_file(path);
     std::ifstream in(path);
     if (!in) fail(Failure::Io, format("%s: cannot open: %s", path.c_str(), std::strerror(errno)));
     Points p;

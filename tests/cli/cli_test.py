@@ -454,7 +454,16 @@ class CommandLine(unittest.TestCase):
             open(blocker, "w").close()
             code, out, err = run("demo", "-o", os.path.join(blocker, "out"), "--quiet", "--size", "9x9")
             self.assertEqual(code, 8, out + err)
-            self.assertEqual(err, f"eg2d: {blocker}/out: cannot create the output directory: Not a directory\n")
+            # checked before the solve: nothing is printed after the case's first line
+            self.assertEqual(err, f"eg2d: {blocker}: is not a directory, so {blocker}/out cannot be made "
+                                  "(checked before solving)\n")
+            self.assertNotIn("converged", out)
+
+    def test_directory_as_case_file(self):
+        with tempfile.TemporaryDirectory() as d:
+            code, out, err = run("run", d, "-o", os.path.join(d, "out"))
+            self.assertEqual(code, 8, out + err)
+            self.assertEqual(err, f"eg2d: {d}: a directory, not a case file\n")
 
 
 class Demo(unittest.TestCase):

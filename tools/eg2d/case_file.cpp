@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <sys/stat.h>
+
 #include "failure.hpp"
 #include "features.hpp"
 #include "toml_fields.hpp"
@@ -295,6 +297,10 @@ Case read_case(const std::string &text, const std::string &file, const std::stri
 }
 
 Case read_case_file(const std::string &path, int ni, int nj) {
+    struct stat st;
+    if (stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+        throw Failure(EXIT_IO, path + ": " + (S_ISDIR(st.st_mode) ? "a directory" : "not a regular file") +
+                                   ", not a case file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Failure(EXIT_IO, path + ": cannot read the case file: " + std::strerror(errno));
     std::ostringstream text;

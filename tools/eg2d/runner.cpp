@@ -3,6 +3,7 @@
 #include <eg2d.h>
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
@@ -60,6 +61,38 @@ void make_directory(const std::string &dir) {
         }
         if (k < dir.size()) partial += dir[k];
     }
+}
+
+// Everything that can be checked before the solve is: every requested
+// format's writer can write here (the CGNS plugin may be absent: a probe
+// grid written to /dev/null says so in microseconds, not after the solve),
+// and the output directory can be created and written.
+void preflight(const Case &c, const RunOptions &o) {
+    eg2d_grid *probe = nullptr;
+    if (eg2d_create(3, 3, &probe) == EG2D_OK) {
+        const double x[9] = {0, 0.5, 1, 0, 0.5, 1, 0, 0.5, 1}, y[9] = {0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1};
+        eg2d_set_coordinates(probe, x, y);
+        for (const auto &out : c.outputs)
+            if (eg2d_write(probe, "/dev/null", out.format) == EG2D_ERR_UNSUPPORTED) {
+                const std::string why = eg2d_last_error(probe);
+                eg2d_destroy(probe);
+                throw Failure(EXIT_UNSUPPORTED, out.where.str() + ": " + why + " (checked before solving; no files written)");
+            }
+        eg2d_destroy(probe);
+    }
+    // The directory is made only after the solve (a failed run leaves none):
+    // here its nearest existing ancestor must be a writable directory.
+    std::string d = o.out_dir.empty() ? "." : o.out_dir;
+    struct stat st;
+    while (stat(d.c_str(), &st) != 0) {
+        const std::size_t slash = d.find_last_of('/');
+        d = slash == std::string::npos ? "." : slash == 0 ? "/" : d.substr(0, slash);
+    }
+    if (!S_ISDIR(st.st_mode))
+        throw Failure(EXIT_IO, d + ": is not a directory, so " + o.out_dir + " cannot be made (checked before solving)");
+    if (access(d.c_str(), W_OK) != 0)
+        throw Failure(EXIT_IO, d + ": not writable, so " + o.out_dir + " cannot be written (checked before solving): " +
+                                   std::strerror(errno));
 }
 
 void apply_controls(eg2d_grid *g, const Case &c) {
@@ -199,6 +232,7 @@ int run_case(const Case &c, const RunOptions &o) {
                 eg2d_solver_name(c.solver), tolerance);
     std::fflush(stdout);
 
+    preflight(c, o);
     // Ctrl-C is caught from here to the last file written: during the run the
     // monitor stops it; while writing, the next file is not begun.
     Progress progress(o.live, o.quiet);

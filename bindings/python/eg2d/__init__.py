@@ -9,7 +9,7 @@ loader (see _library.py).
 """
 from .constants import *  # noqa: F401,F403
 from .errors import (ArgumentError, BoundaryError, DivergedError, Error, FileError, FoldedError,  # noqa: F401
-                     NotConvergedError, OutOfMemoryError, StateError, StoppedByMonitor,
+                     InternalError, NotConvergedError, OutOfMemoryError, StateError, StoppedByMonitor,
                      UnsupportedError, error_for)
 from .functions import (last_error, parameter_bounds, read_plot3d, read_points, solver_name,  # noqa: F401
                         status_string, version)

@@ -52,6 +52,10 @@ class StoppedByMonitor(Error):
     pass
 
 
+class InternalError(Error):
+    """A defect inside eg2d, not bad input: please report it with the message."""
+
+
 _BY_STATUS = {
     C.ERR_ARGUMENT: ArgumentError,
     C.ERR_MEMORY: OutOfMemoryError,
@@ -63,6 +67,7 @@ _BY_STATUS = {
     C.ERR_IO: FileError,
     C.ERR_UNSUPPORTED: UnsupportedError,
     C.ERR_INTERRUPTED: StoppedByMonitor,
+    C.ERR_INTERNAL: InternalError,
 }
 
 

@@ -1,0 +1,215 @@
+/* Files and failures: eg2d_write respects what is at the path (a symbolic
+ * link is followed and kept, a file keeps its mode and its hard links, a FIFO
+ * or a character device is written in place, a directory is refused), and
+ * the readers read regular files only, reject non-finite coordinates and
+ * grids smaller than 2 x 2, and name the path. After every refused call the
+ * path has the same type, mode and content as before. */
+#include <errno.h>
+#include <fcntl.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmocka.h>
+
+#include "domains.h"
+#include "eg2d.h"
+
+static char dir[256];
+static const char *at(const char *name) {
+    static char buf[4][512];
+    static int k;
+    k = (k + 1) % 4;
+    snprintf(buf[k], sizeof buf[k], "%s/%s", dir, name);
+    return buf[k];
+}
+
+static eg2d_grid *swan9(void) {
+    eg2d_grid *g;
+    assert_int_equal(eg2d_create(9, 9, &g), EG2D_OK);
+    assert_int_equal(domain_set(g, "swan"), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    return g;
+}
+
+static long file_size(const char *p) {
+    struct stat st;
+    return stat(p, &st) == 0 ? (long)st.st_size : -1;
+}
+
+static void write_bytes(const char *p, const char *text) {
+    FILE *f = fopen(p, "wb");
+    assert_non_null(f);
+    fputs(text, f);
+    fclose(f);
+}
+
+static int setup(void **state) {
+    (void)state;
+    snprintf(dir, sizeof dir, "/tmp/eg2d_test_files_XXXXXX");
+    return mkdtemp(dir) ? 0 : -1;
+}
+static int teardown(void **state) {
+    char cmd[300];
+    (void)state;
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    return system(cmd);
+}
+
+/* A link is followed: its target gets the grid, the link stays a link. */
+static void test_write_through_a_link(void **state) {
+    eg2d_grid *g = swan9();
+    struct stat st;
+    (void)state;
+    write_bytes(at("target.xyz"), "old");
+    assert_int_equal(symlink("target.xyz", at("link.xyz")), 0);
+    assert_int_equal(eg2d_write(g, at("link.xyz"), EG2D_FORMAT_PLOT3D), EG2D_OK);
+    assert_int_equal(lstat(at("link.xyz"), &st), 0);
+    assert_true(S_ISLNK(st.st_mode));
+    assert_int_equal(eg2d_write(g, at("direct.xyz"), EG2D_FORMAT_PLOT3D), EG2D_OK);
+    assert_int_equal(file_size(at("target.xyz")), file_size(at("direct.xyz")));
+    eg2d_destroy(g);
+}
+
+/* An existing file keeps its permissions, and its other hard links see the new grid. */
+static void test_write_keeps_mode_and_links(void **state) {
+    eg2d_grid *g = swan9();
+    struct stat st;
+    (void)state;
+    write_bytes(at("m.vts"), "old");
+    assert_int_equal(chmod(at("m.vts"), 0640), 0);
+    assert_int_equal(eg2d_write(g, at("m.vts"), EG2D_FORMAT_VTS), EG2D_OK);
+    assert_int_equal(stat(at("m.vts"), &st), 0);
+    assert_int_equal(st.st_mode & 07777, 0640);
+    write_bytes(at("a.xyz"), "old");
+    assert_int_equal(link(at("a.xyz"), at("b.xyz")), 0);
+    assert_int_equal(eg2d_write(g, at("a.xyz"), EG2D_FORMAT_PLOT3D), EG2D_OK);
+    assert_int_equal(stat(at("b.xyz"), &st), 0);
+    assert_int_equal((int)st.st_nlink, 2);
+    assert_true(file_size(at("b.xyz")) > 100);
+    eg2d_destroy(g);
+}
+
+/* A FIFO without a reader is refused (not replaced, and the call does not block);
+ * with a reader it gets the bytes. A character device is written in place. */
+static void test_write_to_fifo_and_device(void **state) {
+    eg2d_grid *g = swan9();
+    struct stat st;
+    char buf[8192];
+    int fd;
+    ssize_t n;
+    (void)state;
+    assert_int_equal(mkfifo(at("pipe"), 0600), 0);
+    assert_int_equal(eg2d_write(g, at("pipe"), EG2D_FORMAT_PLOT3D), EG2D_ERR_IO);
+    assert_non_null(strstr(eg2d_last_error(g), "a FIFO with no reader: not written"));
+    assert_int_equal(stat(at("pipe"), &st), 0);
+    assert_true(S_ISFIFO(st.st_mode));
+    fd = open(at("pipe"), O_RDONLY | O_NONBLOCK);
+    assert_true(fd >= 0);
+    assert_int_equal(eg2d_write(g, at("pipe"), EG2D_FORMAT_PLOT3D), EG2D_OK);
+    n = read(fd, buf, sizeof buf);
+    close(fd);
+    assert_int_equal(n, 4 + 8 + 4 + 4 + 16 * 81 + 4); /* the whole 9 x 9 Plot3D file */
+    assert_int_equal(eg2d_write(g, "/dev/null", EG2D_FORMAT_VTS), EG2D_OK);
+    assert_int_equal(stat("/dev/null", &st), 0);
+    assert_true(S_ISCHR(st.st_mode));
+    eg2d_destroy(g);
+}
+
+/* A directory is refused before anything is written. */
+static void test_write_to_a_directory(void **state) {
+    eg2d_grid *g = swan9();
+    struct stat st;
+    char want[600];
+    (void)state;
+    assert_int_equal(mkdir(at("d.xyz"), 0755), 0);
+    assert_int_equal(eg2d_write(g, at("d.xyz"), EG2D_FORMAT_PLOT3D), EG2D_ERR_IO);
+    snprintf(want, sizeof want, "eg2d_write: %s: is a directory: not written, and not replaced", at("d.xyz"));
+    assert_string_equal(eg2d_last_error(g), want);
+    assert_int_equal(stat(at("d.xyz"), &st), 0);
+    assert_true(S_ISDIR(st.st_mode));
+    eg2d_destroy(g);
+}
+
+/* Readers: a directory and a device are refused naming the path; a binary
+ * NaN is refused with its byte offset; a 1 x n grid is no grid. */
+static void test_read_bad_files(void **state) {
+    int ni, nj;
+    char want[600];
+    FILE *f;
+    int hdr[4] = {8, 3, 2, 8}, rec = 48;
+    double v[6] = {0, 1, 2, 0, 1, 2}, w[6] = {0, 0, 0, 1, 1, 1};
+    (void)state;
+    assert_int_equal(eg2d_read_plot3d(dir, 0, NULL, NULL, &ni, &nj, NULL, NULL), EG2D_ERR_IO);
+    snprintf(want, sizeof want, "eg2d_read_plot3d: %s: a directory, not a regular file: not read", dir);
+    assert_string_equal(eg2d_last_error(NULL), want);
+    assert_int_equal(eg2d_read_plot3d("/dev/zero", 0, NULL, NULL, &ni, &nj, NULL, NULL), EG2D_ERR_IO);
+    assert_string_equal(eg2d_last_error(NULL), "eg2d_read_plot3d: /dev/zero: a device, not a regular file: not read");
+    /* a 3 x 2 single-grid file with Fortran markers, one coordinate NaN */
+    w[4] = 0.0 / 0.0;
+    /* bytes: markers 0-3 and 12-15, record marker 16, x 20-67, y 68-115: y[4] at 100 */
+    f = fopen(at("nan.x"), "wb");
+    fwrite(hdr, 4, 4, f);
+    fwrite(&rec, 4, 1, f);
+    fwrite(v, 8, 6, f);
+    fwrite(w, 8, 6, f);
+    fwrite(&rec, 4, 1, f);
+    fclose(f);
+    rec = 96;
+    f = fopen(at("nan.x"), "r+b");
+    fseek(f, 16, SEEK_SET);
+    fwrite(&rec, 4, 1, f);
+    fseek(f, 16 + 4 + 96, SEEK_SET);
+    fwrite(&rec, 4, 1, f);
+    fclose(f);
+    assert_int_equal(eg2d_read_plot3d(at("nan.x"), 0, NULL, NULL, &ni, &nj, NULL, NULL), EG2D_ERR_IO);
+    assert_non_null(strstr(eg2d_last_error(NULL), "nan.x: a non-finite coordinate (NaN) at byte offset 100"));
+    /* ASCII 1 x 3 (and 3 x 1) are not grids */
+    write_bytes(at("line.x"), "1 3\n0 0 0\n0 1 2\n");
+    assert_int_equal(eg2d_read_plot3d(at("line.x"), 0, NULL, NULL, &ni, &nj, NULL, NULL), EG2D_ERR_IO);
+    assert_non_null(strstr(eg2d_last_error(NULL), "not a Plot3D grid file"));
+}
+
+/* A boundary that encloses nothing is refused before any solve, and the
+ * handle is unchanged: all points on one line, and the top lying on the bottom. */
+static void test_flat_domains(void **state) {
+    double xb[5], yb[5], xr[5], yr[5], xt[5], yt[5], xl[5], yl[5];
+    int k, c;
+    (void)state;
+    for (c = 0; c < 2; ++c) {
+        eg2d_grid *g;
+        for (k = 0; k < 5; ++k) {
+            const double s = k / 4.0;
+            xb[k] = s; yb[k] = 0;            /* bottom */
+            xt[k] = s; yt[k] = 0;            /* top on the bottom */
+            xl[k] = 0; yl[k] = 0;            /* left and right sides of zero length */
+            xr[k] = 1; yr[k] = 0;
+            if (c == 1) { yb[k] = xb[k]; yt[k] = xt[k]; yr[k] = 1; xl[k] = 0; } /* all on y = x */
+        }
+        if (c == 1)
+            for (k = 0; k < 5; ++k) { xr[k] = 1; yr[k] = 1; }
+        assert_int_equal(eg2d_create(5, 5, &g), EG2D_OK);
+        assert_int_equal(eg2d_set_side(g, EG2D_SIDE_JMIN, xb, yb), EG2D_OK);
+        assert_int_equal(eg2d_set_side(g, EG2D_SIDE_IMAX, xr, yr), EG2D_OK);
+        assert_int_equal(eg2d_set_side(g, EG2D_SIDE_JMAX, xt, yt), EG2D_OK);
+        assert_int_equal(eg2d_set_side(g, EG2D_SIDE_IMIN, xl, yl), EG2D_OK);
+        assert_int_equal(eg2d_solve(g), EG2D_ERR_BOUNDARY);
+        assert_non_null(strstr(eg2d_last_error(g), "the boundary encloses an area of 0 in a bounding box of diagonal"));
+        assert_int_equal(eg2d_get_coordinates(g, xb, yb), EG2D_ERR_STATE); /* still no interior */
+        eg2d_destroy(g);
+    }
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_write_through_a_link),  cmocka_unit_test(test_write_keeps_mode_and_links),
+        cmocka_unit_test(test_write_to_fifo_and_device), cmocka_unit_test(test_write_to_a_directory),
+        cmocka_unit_test(test_read_bad_files),         cmocka_unit_test(test_flat_domains),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
