@@ -634,6 +634,13 @@ EG2D_API int eg2d_write(const eg2d_grid *grid, const char *path, int format);
  * what was found. Errors are reported by eg2d_last_error(NULL). */
 EG2D_API int eg2d_read_plot3d(const char *path, int block, int *format, int *nblocks, int *ni, int *nj,
                               double *x, double *y);
+/* The same with the caller's capacity: x and y hold `capacity` values each,
+ * and a block of more than capacity nodes is EG2D_ERR_ARGUMENT ("PATH: grid
+ * B has NI x NJ = N nodes, more than capacity = C"), nothing written. Use
+ * this one: eg2d_read_plot3d trusts the file not to grow between a size
+ * query and the read, and would write past the caller's arrays if it did. */
+EG2D_API int eg2d_read_plot3d_into(const char *path, int block, int capacity, int *format, int *nblocks, int *ni,
+                                   int *nj, double *x, double *y);
 
 /* Point files: plain text, one point "x y" per line (spaces, tabs or a comma
  * between), '#' starts a comment, blank lines are skipped. A line that is not

@@ -80,7 +80,8 @@ inline plot3d_grid read_plot3d(const std::string &path, int block = 0) {
                   nullptr);
     g.x.resize(static_cast<std::size_t>(g.ni) * static_cast<std::size_t>(g.nj));
     g.y.resize(g.x.size());
-    detail::check(::eg2d_read_plot3d(path.c_str(), block, nullptr, nullptr, nullptr, nullptr, g.x.data(), g.y.data()),
+    detail::check(::eg2d_read_plot3d_into(path.c_str(), block, static_cast<int>(g.x.size()), nullptr, nullptr, nullptr,
+                                          nullptr, g.x.data(), g.y.data()),
                   nullptr);
     return g;
 }

@@ -595,7 +595,7 @@ contains
     rc = eg2d_read_plot3d(c_path(path), b, f, nb, ni, nj)
     if (rc == EG2D_OK) then
       allocate (x(ni, nj), y(ni, nj))
-      rc = eg2d_read_plot3d(c_path(path), b, x=x, y=y)
+      rc = eg2d_read_plot3d_into(c_path(path), b, ni * nj, x=x, y=y)
     end if
     if (present(format) .and. rc == EG2D_OK) format = int(f)
     if (present(nblocks) .and. rc == EG2D_OK) nblocks = int(nb)

@@ -38,6 +38,29 @@ EG2D_API int eg2d_read_plot3d(const char *path, int block, int *format, int *nbl
     });
 }
 
+EG2D_API int eg2d_read_plot3d_into(const char *path, int block, int capacity, int *format, int *nblocks, int *ni,
+                                   int *nj, double *x, double *y) {
+    return guard_without_grid("eg2d_read_plot3d_into", [&] {
+        require_ptr(path, "path");
+        require(block >= 0, eg2d::format("block = %d: must be >= 0", block));
+        require(capacity >= 0, eg2d::format("capacity = %d: must be >= 0", capacity));
+        require((x == nullptr) == (y == nullptr), "x and y must both be given or both be NULL");
+        const Plot3dFile file = read_plot3d(path, block);
+        const Plot3dBlock &b = file.blocks[static_cast<std::size_t>(block)];
+        if (x) {
+            require(b.x.size() <= static_cast<std::size_t>(capacity),
+                    eg2d::format("%s: grid %d has %d x %d = %zu nodes, more than capacity = %d", path, block, b.ni,
+                                 b.nj, b.x.size(), capacity));
+            std::copy(b.x.begin(), b.x.end(), x);
+            std::copy(b.y.begin(), b.y.end(), y);
+        }
+        if (format) *format = file.format;
+        if (nblocks) *nblocks = static_cast<int>(file.blocks.size());
+        if (ni) *ni = b.ni;
+        if (nj) *nj = b.nj;
+    });
+}
+
 EG2D_API int eg2d_read_points(const char *path, int capacity, int *n, double *x, double *y) {
     return guard_without_grid("eg2d_read_points", [&] {
         require_ptr(path, "path");

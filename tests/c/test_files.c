@@ -205,11 +205,30 @@ static void test_flat_domains(void **state) {
     }
 }
 
+/* The read call that takes the caller's capacity refuses a block larger than it. */
+static void test_read_with_capacity(void **state) {
+    eg2d_grid *g = swan9();
+    double x[81], y[81];
+    int ni, nj;
+    char want[600];
+    (void)state;
+    assert_int_equal(eg2d_write(g, at("cap.xyz"), EG2D_FORMAT_PLOT3D), EG2D_OK);
+    assert_int_equal(eg2d_read_plot3d_into(at("cap.xyz"), 0, 81, NULL, NULL, &ni, &nj, x, y), EG2D_OK);
+    assert_true(ni == 9 && nj == 9);
+    assert_int_equal(eg2d_read_plot3d_into(at("cap.xyz"), 0, 80, NULL, NULL, NULL, NULL, x, y), EG2D_ERR_ARGUMENT);
+    snprintf(want, sizeof want, "eg2d_read_plot3d_into: %s: grid 0 has 9 x 9 = 81 nodes, more than capacity = 80",
+             at("cap.xyz"));
+    assert_string_equal(eg2d_last_error(NULL), want);
+    assert_int_equal(eg2d_read_plot3d_into(at("cap.xyz"), 0, -1, NULL, NULL, NULL, NULL, x, y), EG2D_ERR_ARGUMENT);
+    eg2d_destroy(g);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_write_through_a_link),  cmocka_unit_test(test_write_keeps_mode_and_links),
         cmocka_unit_test(test_write_to_fifo_and_device), cmocka_unit_test(test_write_to_a_directory),
         cmocka_unit_test(test_read_bad_files),         cmocka_unit_test(test_flat_domains),
+        cmocka_unit_test(test_read_with_capacity),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

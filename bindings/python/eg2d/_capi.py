@@ -83,6 +83,7 @@ PROTOTYPES = {
     # files (paths as bytes: os.fsencode)
     "eg2d_write": (c_int, [grid_p, c_char_p, c_int]),
     "eg2d_read_plot3d": (c_int, [c_char_p, c_int, int_p, int_p, int_p, int_p, double_p, double_p]),
+    "eg2d_read_plot3d_into": (c_int, [c_char_p, c_int, c_int, int_p, int_p, int_p, int_p, double_p, double_p]),
     "eg2d_read_points": (c_int, [c_char_p, c_int, int_p, double_p, double_p]),
     "eg2d_set_side_from_file": (c_int, [grid_p, c_int, c_char_p]),
 }

@@ -61,7 +61,7 @@ def read_plot3d(path, block=0):
     _check(lib.eg2d_read_plot3d(p, int(block), byref(fmt), byref(nblocks), byref(ni), byref(nj), None, None))
     x = np.empty((ni.value, nj.value), order="F")
     y = np.empty_like(x, order="F")
-    _check(lib.eg2d_read_plot3d(p, int(block), None, None, None, None, _dp(x), _dp(y)))
+    _check(lib.eg2d_read_plot3d_into(p, int(block), x.size, None, None, None, None, _dp(x), _dp(y)))
     return x, y, fmt.value, nblocks.value
 
 
