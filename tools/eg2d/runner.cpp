@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 
@@ -166,14 +167,32 @@ void print_quality(eg2d_grid *g, int topology) {
     std::printf("\n");
 }
 
+// The output set is written as one unit: every file first into a staging
+// directory beside them, and only when all are written are they renamed
+// into place (a full disk or Ctrl-C part-way leaves the old set as it was,
+// never a new .xyz beside an old .vts).
 void write_outputs(eg2d_grid *g, const Case &c, const RunOptions &o) {
     make_directory(o.out_dir);
     if (c.svg_quality >= 0) check(g, eg2d_set_parameter(g, EG2D_PARAM_SVG_QUALITY, c.svg_quality), c.svg_quality_at);
+    std::string stage = o.out_dir + "/.eg2d-set-XXXXXX";
+    if (!mkdtemp(&stage[0])) throw Failure(EXIT_IO, o.out_dir + ": cannot stage the output files: " + std::strerror(errno));
+    struct Cleanup {  // what is left of the stage (nothing after the renames)
+        const std::string &dir;
+        const Case &c;
+        ~Cleanup() {
+            for (const auto &out : c.outputs) std::remove((dir + "/" + out.name).c_str());
+            rmdir(dir.c_str());
+        }
+    } cleanup{stage, c};
     for (const auto &out : c.outputs) {
-        if (Progress::interrupted()) throw Failure(EXIT_INTERRUPTED, "interrupted: no further files written");
+        if (Progress::interrupted()) throw Failure(EXIT_INTERRUPTED, "interrupted: no files written");
+        check(g, eg2d_write(g, (stage + "/" + out.name).c_str(), out.format), out.where);
+    }
+    if (Progress::interrupted()) throw Failure(EXIT_INTERRUPTED, "interrupted: no files written");
+    for (const auto &out : c.outputs) {
         const std::string path = o.out_dir + "/" + out.name;
-        // the library writes to a temporary name and renames: never a half-written file
-        check(g, eg2d_write(g, path.c_str(), out.format), out.where);
+        if (std::rename((stage + "/" + out.name).c_str(), path.c_str()) != 0)
+            throw Failure(EXIT_IO, path + ": cannot move the written file into place: " + std::strerror(errno));
         std::printf("wrote %s\n", path.c_str());
     }
 }
