@@ -14,6 +14,7 @@ enum ExitCode {
     EXIT_FOLDED = 7,         // the converged grid has folded cells
     EXIT_IO = 8,             // an output file could not be written
     EXIT_UNSUPPORTED = 9,    // the case asks for a feature not available in this build
+    EXIT_MEMORY = 10,        // out of memory: the grid is too large for this machine
     EXIT_INTERRUPTED = 130,  // Ctrl-C (SIGINT): stopped cleanly, nothing written
 };
 

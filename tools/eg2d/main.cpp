@@ -53,6 +53,7 @@ const char *help_text =
     "  7    the converged grid has folded cells\n"
     "  8    a file could not be read or written\n"
     "  9    the case asks for a feature not available in this build\n"
+    "  10   out of memory: the grid is too large for this machine\n"
     "  130  interrupted by Ctrl-C\n"
     "\n"
     "example:\n"

@@ -31,6 +31,7 @@ int exit_code_for_status(int status) {
     case EG2D_ERR_IO: return EXIT_IO;
     case EG2D_ERR_UNSUPPORTED: return EXIT_UNSUPPORTED;
     case EG2D_ERR_INTERRUPTED: return EXIT_INTERRUPTED;
+    case EG2D_ERR_MEMORY: return EXIT_MEMORY;
     default: return EXIT_INTERNAL;
     }
 }
@@ -44,6 +45,10 @@ using GridPtr = std::unique_ptr<eg2d_grid, GridDeleter>;
 
 // A failed library call: the location in the case file and the library's message.
 void check(eg2d_grid *g, int status, const Location &at) {
+    // Out of memory is the grid's size, not the key that happened to allocate.
+    if (status == EG2D_ERR_MEMORY)
+        throw Failure(EXIT_MEMORY, std::string("out of memory: the grid is too large for this machine (") +
+                                       eg2d_last_error(g) + ")");
     if (status != EG2D_OK) throw Failure(exit_code_for_status(status), at.str() + ": " + eg2d_last_error(g));
 }
 
