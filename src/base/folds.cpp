@@ -41,24 +41,31 @@ FoldSummary fold_summary(const Grid &g) {
     return s;
 }
 
-double boundary_area(const Grid &g) {
+double row_signed_area(const Grid &g, int j) {
+    const int ni = g.ni();
+    const std::size_t row = static_cast<std::size_t>(ni) * j;
+    double a = 0.0;
+    for (int i = 0; i + 1 < ni; ++i)
+        a += g.x[row + i] * g.y[row + i + 1] - g.x[row + i + 1] * g.y[row + i];
+    return 0.5 * a;
+}
+
+double ring_signed_area(const Grid &g) {
     const int ni = g.ni(), nj = g.nj();
     auto at = [ni](int i, int j) { return static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * j; };
     double a = 0.0;
     auto edge = [&](std::size_t p, std::size_t q) { a += g.x[p] * g.y[q] - g.x[q] * g.y[p]; };
-    if (g.topology() == Topology::O) {
-        double inner = 0.0, outer = 0.0;
-        for (int i = 0; i + 1 < ni; ++i) {
-            inner += g.x[at(i, 0)] * g.y[at(i + 1, 0)] - g.x[at(i + 1, 0)] * g.y[at(i, 0)];
-            outer += g.x[at(i, nj - 1)] * g.y[at(i + 1, nj - 1)] - g.x[at(i + 1, nj - 1)] * g.y[at(i, nj - 1)];
-        }
-        return 0.5 * std::fabs(std::fabs(outer) - std::fabs(inner));
-    }
     for (int i = 0; i + 1 < ni; ++i) edge(at(i, 0), at(i + 1, 0));
     for (int j = 0; j + 1 < nj; ++j) edge(at(ni - 1, j), at(ni - 1, j + 1));
     for (int i = ni - 1; i > 0; --i) edge(at(i, nj - 1), at(i - 1, nj - 1));
     for (int j = nj - 1; j > 0; --j) edge(at(0, j), at(0, j - 1));
-    return 0.5 * std::fabs(a);
+    return 0.5 * a;
+}
+
+double boundary_area(const Grid &g) {
+    if (g.topology() == Topology::O)
+        return std::fabs(std::fabs(row_signed_area(g, g.nj() - 1)) - std::fabs(row_signed_area(g, 0)));
+    return std::fabs(ring_signed_area(g));
 }
 
 }  // namespace eg2d

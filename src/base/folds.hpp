@@ -23,6 +23,10 @@ int grid_orientation(const Grid &g);
 // JMIN, IMAX, JMAX, IMIN (a C-grid's cut, run both ways, cancels); on an
 // O-grid the area between the outer curve (JMAX) and the inner one (JMIN).
 double boundary_area(const Grid &g);
+// The signed shoelace areas behind it: of row j as a closed curve (an
+// O-grid's JMIN or JMAX), and of the boundary ring, positive counter-clockwise.
+double row_signed_area(const Grid &g, int j);
+double ring_signed_area(const Grid &g);
 
 // A folded cell has a corner whose turn (the cross product of the two edges
 // leaving it) has the sign opposite to the grid's orientation.

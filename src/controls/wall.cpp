@@ -34,6 +34,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/folds.hpp"
 #include "controls/anderson.hpp"
 #include "controls/controls.hpp"
 #include "operator/operator.hpp"
@@ -69,21 +70,10 @@ int depth_count(const Grid &g, int side) { return j_side(side) ? g.nj() : g.ni()
 
 // +1 if the grid is right-handed (J > 0), from the boundary alone.
 double orientation(const Grid &g) {
-    const int ni = g.ni(), nj = g.nj();
-    double area = 0.0;
-    auto edge = [&](std::size_t a, std::size_t b) { area += g.x[a] * g.y[b] - g.x[b] * g.y[a]; };
-    auto at = [ni](int i, int j) { return static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * j; };
-    if (g.topology() == Topology::O) {
-        for (int i = 0; i + 1 < ni; ++i) edge(at(i, 0), at(i + 1, 0));
-        // A counter-clockwise inner curve has the domain on its right: with
-        // eta outward, J = r_xi x r_eta < 0.
-        return area >= 0.0 ? -1.0 : 1.0;
-    }
-    for (int i = 0; i + 1 < ni; ++i) edge(at(i, 0), at(i + 1, 0));
-    for (int j = 0; j + 1 < nj; ++j) edge(at(ni - 1, j), at(ni - 1, j + 1));
-    for (int i = ni - 1; i > 0; --i) edge(at(i, nj - 1), at(i - 1, nj - 1));
-    for (int j = nj - 1; j > 0; --j) edge(at(0, j), at(0, j - 1));
-    return area >= 0.0 ? 1.0 : -1.0;
+    // A counter-clockwise inner curve of an O-grid has the domain on its
+    // right: with eta outward, J = r_xi x r_eta < 0.
+    if (g.topology() == Topology::O) return row_signed_area(g, 0) >= 0.0 ? -1.0 : 1.0;
+    return ring_signed_area(g) >= 0.0 ? 1.0 : -1.0;
 }
 
 class WallControl final : public Control {

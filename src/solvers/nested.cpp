@@ -103,7 +103,9 @@ private:
         for (int k = 0; k < cap && best > target; ++k) {
             guarded_sweep(system, L, settings, relaxation);
             const double r = residual(system, L, extent).value;
-            if (!std::isfinite(r) || r > 1e4 * best) return;  // the fine grid's run loop reports it
+            // The run's own divergence test (EG2D_PARAM_DIVERGENCE_FACTOR); the fine
+            // grid's run loop reports it.
+            if (!std::isfinite(r) || r > settings.divergence_factor * best) return;
             best = std::min(best, r);
         }
     }
