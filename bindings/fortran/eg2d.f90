@@ -1,8 +1,9 @@
 ! eg2d.f90 -- module eg2d, the Fortran interface of libeg2d.
 !
 ! Two layers in one module (`use eg2d`):
-!  1. the C API itself (eg2d_capi.inc): bind(C) interfaces under the C names
-!     and the constants under the C names, for line-by-line translations of C;
+!  1. the C API itself (eg2d_capi.inc, generated from eg2d.h by
+!     tools/gen_bindings.py): bind(C) interfaces and the constants under the
+!     C names, for line-by-line translations of C;
 !  2. Fortran-friendly wrappers under their own names: the type eg2d_grid_t
 !     (owns a handle, frees it in its final procedure) whose procedures take
 !     x(:,:) arrays with shape checks and an optional `status`. Without
@@ -25,6 +26,15 @@ module eg2d
   private
 
   include 'eg2d_capi.inc'
+
+  ! C's strlen, to turn the library's const char * into Fortran strings (private).
+  interface
+    function c_strlen(s) bind(C, name='strlen') result(n)
+      import :: c_ptr, c_size_t
+      type(c_ptr), value :: s
+      integer(c_size_t) :: n
+    end function c_strlen
+  end interface
 
   ! The real kind of every coordinate array.
   integer, parameter, public :: eg2d_dp = c_double
