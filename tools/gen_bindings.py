@@ -418,7 +418,7 @@ FORTRAN_PREAMBLE = """\
 
 def fortran_decl(fn, p):
     t = TYPES[p.ctype]
-    flags = POINTERS.get(fn.name, {}).get(p.name, "").split() if not fn.callback else []
+    flags = POINTERS.get(fn.name, {}).get(p.name, "").split()
     passing = t.passing
     if passing == "out" and "array" in flags:
         passing = "out_array"
