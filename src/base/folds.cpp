@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
+
+#include "base/plane.hpp"
 
 namespace eg2d {
 
@@ -20,6 +23,13 @@ int grid_orientation(const Grid &g) {
     for (int j = 0; j < g.nj() - 1; ++j)
         for (int i = 0; i < g.ni() - 1; ++i) total += Cell::at(g, i, j).area();
     return total < 0.0 ? -1 : 1;
+}
+
+int boundary_orientation(const Grid &g) {
+    // An O-grid's JMIN curve turning counter-clockwise has the domain on its
+    // right: with eta outward, J = r_xi x r_eta < 0.
+    if (g.topology() == Topology::O) return row_signed_area(g, 0) >= 0.0 ? -1 : 1;
+    return ring_signed_area(g) >= 0.0 ? 1 : -1;
 }
 
 FoldSummary fold_summary(const Grid &g) {
@@ -42,12 +52,9 @@ FoldSummary fold_summary(const Grid &g) {
 }
 
 double row_signed_area(const Grid &g, int j) {
-    const int ni = g.ni();
-    const std::size_t row = static_cast<std::size_t>(ni) * j;
-    double a = 0.0;
-    for (int i = 0; i + 1 < ni; ++i)
-        a += g.x[row + i] * g.y[row + i + 1] - g.x[row + i + 1] * g.y[row + i];
-    return 0.5 * a;
+    // Row j of an O-grid ends on a copy of its first node: the closing edge adds nothing.
+    const std::size_t row = static_cast<std::size_t>(g.ni()) * j;
+    return 0.5 * shoelace(g.x.data() + row, g.y.data() + row, static_cast<std::size_t>(g.ni()));
 }
 
 double ring_signed_area(const Grid &g) {

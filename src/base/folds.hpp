@@ -27,6 +27,11 @@ double boundary_area(const Grid &g);
 // O-grid's JMIN or JMAX), and of the boundary ring, positive counter-clockwise.
 double row_signed_area(const Grid &g, int j);
 double ring_signed_area(const Grid &g);
+// J's sign from the boundary alone (the interior may be anything, e.g.
+// folded during a run): the turn of the boundary ring; on an O-grid the
+// JMIN curve's, whose counter-clockwise turn means J < 0 (eta outward, the
+// domain on its right). Zero area counts as right-handed (O: left-handed).
+int boundary_orientation(const Grid &g);
 
 // A folded cell has a corner whose turn (the cross product of the two edges
 // leaving it) has the sign opposite to the grid's orientation.

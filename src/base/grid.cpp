@@ -6,23 +6,13 @@
 #include <new>
 
 #include "base/error.hpp"
+#include "base/plane.hpp"
 
 namespace eg2d {
 
 namespace {
 // Relative tolerance on the domain size for corners that must coincide.
 constexpr double kCornerTolerance = 1e-8;
-
-// Index of the p-th point of side s (increasing index along the side).
-std::size_t side_index(int ni, int nj, Side s, int p) {
-    switch (s) {
-    case Side::JMin: return static_cast<std::size_t>(p);
-    case Side::IMax: return static_cast<std::size_t>(ni - 1) + static_cast<std::size_t>(ni) * p;
-    case Side::JMax: return static_cast<std::size_t>(p) + static_cast<std::size_t>(ni) * (nj - 1);
-    case Side::IMin: return static_cast<std::size_t>(ni) * p;
-    }
-    return 0;
-}
 
 std::vector<double> allocate(std::size_t n) {
     try {
@@ -34,18 +24,6 @@ std::vector<double> allocate(std::size_t n) {
     }
 }
 }  // namespace
-
-std::size_t side_node(const Grid &g, Side s, int p, int depth) {
-    const int ni = g.ni(), nj = g.nj();
-    int i = 0, j = 0;
-    switch (s) {
-    case Side::JMin: i = p; j = depth; break;
-    case Side::JMax: i = p; j = nj - 1 - depth; break;
-    case Side::IMin: i = depth; j = p; break;
-    case Side::IMax: i = ni - 1 - depth; j = p; break;
-    }
-    return static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * static_cast<std::size_t>(j);
-}
 
 const char *side_name(Side s) {
     switch (s) {
@@ -114,27 +92,20 @@ bool Grid::boundary_complete() const {
 }
 
 double Grid::extent() const {
-    double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
+    Bounds box;
     for (int s = 0; s < 4; ++s) {
         const Side side = static_cast<Side>(s);
         if (!side_set(side)) continue;
         for (int p = 0; p < side_length(side); ++p) {
-            const std::size_t k = side_index(ni_, nj_, side, p);
-            xmin = std::min(xmin, x[k]); xmax = std::max(xmax, x[k]);
-            ymin = std::min(ymin, y[k]); ymax = std::max(ymax, y[k]);
+            const std::size_t k = side_node(ni_, nj_, side, p);
+            box.add(x[k], y[k]);
         }
     }
-    if (!(xmax >= xmin)) return 0.0;
-    return std::hypot(xmax - xmin, ymax - ymin);
+    return box.diagonal();
 }
 
 void Grid::check_closed(Side s, const double *px, const double *py, int n) const {
-    double xmin = px[0], xmax = px[0], ymin = py[0], ymax = py[0];
-    for (int p = 1; p < n; ++p) {
-        xmin = std::min(xmin, px[p]); xmax = std::max(xmax, px[p]);
-        ymin = std::min(ymin, py[p]); ymax = std::max(ymax, py[p]);
-    }
-    const double L = std::hypot(xmax - xmin, ymax - ymin);
+    const double L = bounding_diagonal(px, py, static_cast<std::size_t>(n));
     if (std::hypot(px[n - 1] - px[0], py[n - 1] - py[0]) > kCornerTolerance * L)
         fail(Failure::Boundary,
              format("O-grid side %s is not closed: first point (%.17g, %.17g) vs last (%.17g, %.17g)",
@@ -155,15 +126,10 @@ void Grid::check_corners(Side s, const double *px, const double *py) const {
     case Side::IMin: ends[0] = {0, Side::JMin}; ends[1] = {n - 1, Side::JMax}; break;
     }
     // Domain size: the bounding box of this side and of the sides already set.
-    double xmin = px[0], xmax = px[0], ymin = py[0], ymax = py[0];
-    for (int p = 0; p < n; ++p) {
-        xmin = std::min(xmin, px[p]); xmax = std::max(xmax, px[p]);
-        ymin = std::min(ymin, py[p]); ymax = std::max(ymax, py[p]);
-    }
-    const double L = std::max(std::hypot(xmax - xmin, ymax - ymin), extent());
+    const double L = std::max(bounding_diagonal(px, py, static_cast<std::size_t>(n)), extent());
     for (const End &e : ends) {
         if (!side_set(e.other)) continue;
-        const std::size_t k = side_index(ni_, nj_, s, e.p);
+        const std::size_t k = side_node(ni_, nj_, s, e.p);
         const double dx = px[e.p] - x[k], dy = py[e.p] - y[k];
         if (std::hypot(dx, dy) > kCornerTolerance * L) {
             // Name the pair in the fixed order JMIN/IMAX, IMAX/JMAX, IMIN/JMAX, JMIN/IMIN.
@@ -180,12 +146,7 @@ void Grid::check_corners(Side s, const double *px, const double *py) const {
 int Grid::detect_wake(const double *px, const double *py) const {
     // The wake cut is the leading run of JMIN points that coincide with their
     // mirror images i <-> ni-1-i; its last point is the trailing edge.
-    double xmin = px[0], xmax = px[0], ymin = py[0], ymax = py[0];
-    for (int p = 1; p < ni_; ++p) {
-        xmin = std::min(xmin, px[p]); xmax = std::max(xmax, px[p]);
-        ymin = std::min(ymin, py[p]); ymax = std::max(ymax, py[p]);
-    }
-    const double tol = kCornerTolerance * std::hypot(xmax - xmin, ymax - ymin);
+    const double tol = kCornerTolerance * bounding_diagonal(px, py, static_cast<std::size_t>(ni_));
     auto same = [&](int i) { return std::hypot(px[i] - px[ni_ - 1 - i], py[i] - py[ni_ - 1 - i]) <= tol; };
     if (!same(0))
         fail(Failure::Boundary,
@@ -218,7 +179,7 @@ void Grid::set_side(Side s, const double *px, const double *py) {
     const int wake = (topology() == Topology::C && s == Side::JMin) ? detect_wake(px, py) : -1;
     write_side(s, px, py);
     if (connectivity_.periodic_i()) {  // the cut column holds the same point exactly
-        const std::size_t k0 = side_index(ni_, nj_, s, 0), k1 = side_index(ni_, nj_, s, n - 1);
+        const std::size_t k0 = side_node(ni_, nj_, s, 0), k1 = side_node(ni_, nj_, s, n - 1);
         x[k1] = x[k0];
         y[k1] = y[k0];
     }
@@ -238,7 +199,7 @@ void Grid::set_side(Side s, const double *px, const double *py) {
 void Grid::write_side(Side s, const double *px, const double *py) {
     const int n = side_length(s);
     for (int p = 0; p < n; ++p) {
-        const std::size_t k = side_index(ni_, nj_, s, p);
+        const std::size_t k = side_node(ni_, nj_, s, p);
         x[k] = px[p];
         y[k] = py[p];
     }
@@ -250,7 +211,7 @@ void Grid::read_side(Side s, const double *fx, const double *fy, std::vector<dou
     px.resize(static_cast<std::size_t>(n));
     py.resize(static_cast<std::size_t>(n));
     for (int p = 0; p < n; ++p) {
-        const std::size_t k = side_index(ni_, nj_, s, p);
+        const std::size_t k = side_node(ni_, nj_, s, p);
         px[static_cast<std::size_t>(p)] = fx[k];
         py[static_cast<std::size_t>(p)] = fy[k];
     }
@@ -279,14 +240,7 @@ void Grid::set_coordinates(const double *px, const double *py) {
     Grid trial(*this);
     trial.sides_set_ = 0;
     if (connectivity_.periodic_i()) {
-        const double L = [&] {
-            double xmin = px[0], xmax = px[0], ymin = py[0], ymax = py[0];
-            for (std::size_t k = 0; k < size(); ++k) {
-                xmin = std::min(xmin, px[k]); xmax = std::max(xmax, px[k]);
-                ymin = std::min(ymin, py[k]); ymax = std::max(ymax, py[k]);
-            }
-            return std::hypot(xmax - xmin, ymax - ymin);
-        }();
+        const double L = bounding_diagonal(px, py, size());
         for (int j = 0; j < nj_; ++j) {
             const std::size_t k0 = static_cast<std::size_t>(ni_) * j, k1 = k0 + ni_ - 1;
             if (std::hypot(px[k1] - px[k0], py[k1] - py[k0]) > kCornerTolerance * L)

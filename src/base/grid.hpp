@@ -78,9 +78,30 @@ private:
     bool initialized_ = false;
 };
 
-// Array index of the p-th node of side s (increasing index along the side),
-// or of the node `depth` lines into the domain from it.
-std::size_t side_node(const Grid &g, Side s, int p, int depth = 0);
+// Indices (i, j) of the p-th node of side s (increasing index along the
+// side), or of the node `depth` lines into the domain from it, on an
+// ni x nj grid. The one place that maps sides to indices.
+struct NodeIJ {
+    int i, j;
+};
+inline NodeIJ side_ij(int ni, int nj, Side s, int p, int depth = 0) {
+    switch (s) {
+    case Side::JMin: return {p, depth};
+    case Side::JMax: return {p, nj - 1 - depth};
+    case Side::IMin: return {depth, p};
+    case Side::IMax: return {ni - 1 - depth, p};
+    }
+    return {0, 0};
+}
+
+// Array index of the same node.
+inline std::size_t side_node(int ni, int nj, Side s, int p, int depth = 0) {
+    const NodeIJ n = side_ij(ni, nj, s, p, depth);
+    return static_cast<std::size_t>(n.i) + static_cast<std::size_t>(ni) * static_cast<std::size_t>(n.j);
+}
+inline std::size_t side_node(const Grid &g, Side s, int p, int depth = 0) {
+    return side_node(g.ni(), g.nj(), s, p, depth);
+}
 
 // Largest coordinate magnitude accepted: J^2 grows as the fourth power of the
 // coordinates, so much larger values would overflow the metric terms.

@@ -53,28 +53,10 @@ constexpr double kNoGap = 1e300;       // the gap before any update
 
 bool j_side(int side) { return side == 0 || side == 2; }  // JMIN, JMAX: eta = const walls
 
-// Node (i, j) at along-wall index k and depth m from a side.
-struct Place {
-    int i, j;
-};
-Place place(const Grid &g, int side, int k, int m) {
-    switch (side) {
-    case 0: return {k, m};
-    case 2: return {k, g.nj() - 1 - m};
-    case 3: return {m, k};
-    default: return {g.ni() - 1 - m, k};
-    }
-}
+// Node (i, j) at along-wall index k and depth m from a side (base/grid.hpp).
+NodeIJ place(const Grid &g, int side, int k, int m) { return side_ij(g.ni(), g.nj(), static_cast<Side>(side), k, m); }
 int wall_length(const Grid &g, int side) { return j_side(side) ? g.ni() : g.nj(); }
 int depth_count(const Grid &g, int side) { return j_side(side) ? g.nj() : g.ni(); }
-
-// +1 if the grid is right-handed (J > 0), from the boundary alone.
-double orientation(const Grid &g) {
-    // A counter-clockwise inner curve of an O-grid has the domain on its
-    // right: with eta outward, J = r_xi x r_eta < 0.
-    if (g.topology() == Topology::O) return row_signed_area(g, 0) >= 0.0 ? -1.0 : 1.0;
-    return ring_signed_area(g) >= 0.0 ? 1.0 : -1.0;
-}
 
 class WallControl final : public Control {
 public:
@@ -119,7 +101,7 @@ public:
         decay_ = settings.wall_decay;
         const double omega = std::min(1.0, pace.relaxation * settings.wall_relaxation);
         const double step = pace.step * kStepLimit;
-        const double orient = orientation(g);
+        const double orient = boundary_orientation(g);  // J's sign, from the boundary alone (base/folds.hpp)
         for (int side = 0; side < 4; ++side) {
             if (!active(g, side)) {
                 clear_side(side);
@@ -300,7 +282,7 @@ private:
             if (periodic(g, side)) return (kk + (n - 1)) % (n - 1);
             return kk;
         };
-        const Place pw = place(g, side, k, 0), pm = place(g, side, wrap(k - 1), 0),
+        const NodeIJ pw = place(g, side, k, 0), pm = place(g, side, wrap(k - 1), 0),
                     pp = place(g, side, wrap(k + 1), 0), pc = place(g, side, k, 1);
         const std::size_t ni = static_cast<std::size_t>(g.ni());
         const std::size_t kw = pw.i + ni * pw.j, km = pm.i + ni * pm.j, kp = pp.i + ni * pp.j;
@@ -331,20 +313,13 @@ private:
         L.y = ly;
         const Stencil ls{0, 1, 2, 3, 4, 5, 6, 7, 8};
         const NodeEquation eq = node_equation(System::Winslow, L, ls);
-        const Metrics m = node_metrics(L, ls);
+        Metrics m = node_metrics(L, ls);
         const double xxi = 0.5 * (lx[1] - lx[2]), yxi = 0.5 * (ly[1] - ly[2]);
         const double xeta = 0.5 * (lx[3] - lx[4]), yeta = 0.5 * (ly[3] - ly[4]);
-        // The other terms' C_xi, C_eta at this node, at the target.
-        auto other = [&](Term a, Term b, Term c, Term d) {
-            double v = 0.0;
-            if (const double *f = rest.data(a)) v += m.alpha * f[s.c];
-            if (const double *f = rest.data(b)) v += m.beta * f[s.c];
-            if (const double *f = rest.data(c)) v += m.gamma * f[s.c];
-            if (const double *f = rest.data(d)) v += m.jac2 * f[s.c];
-            return v;
-        };
-        const double oxi = other(Term::AXi, Term::BXi, Term::CXi, Term::DXi);
-        const double oeta = other(Term::AEta, Term::BEta, Term::CEta, Term::DEta);
+        // The other terms' C_xi, C_eta at this node, at the target (L has no
+        // controls, so m.cxi = m.ceta = 0 before).
+        add_control_terms(rest, s.c, m);
+        const double oxi = m.cxi, oeta = m.ceta;
         const double rx = -eq.rx - oxi * xxi - oeta * xeta, ry = -eq.ry - oxi * yxi - oeta * yeta;
         const double det = xxi * yeta - xeta * yxi;
         const double scale = j_side(side) ? m.gamma : m.alpha;
@@ -384,7 +359,7 @@ private:
             const double f = std::exp(-decay_ * (m - 1));
             if (f < kDecayCutoff) break;
             for (int k = k_begin(g, side); k < k_end(g, side); ++k) {
-                const Place p = place(g, side, k, m);
+                const NodeIJ p = place(g, side, k, m);
                 const std::size_t c = static_cast<std::size_t>(p.i) + static_cast<std::size_t>(g.ni()) * p.j;
                 T[c] += f * phi_[side][k];
                 N[c] += f * psi_[side][k];

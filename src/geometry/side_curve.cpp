@@ -5,6 +5,7 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "base/plane.hpp"
 #include "geometry/distribution.hpp"
 #include "geometry/sliding.hpp"
 
@@ -25,13 +26,7 @@ void side_points(const Grid &g, Side s, std::vector<double> &x, std::vector<doub
 }
 
 double signed_area(const std::vector<double> &x, const std::vector<double> &y) {
-    double a = 0.0;
-    const std::size_t n = x.size();
-    for (std::size_t k = 0; k < n; ++k) {
-        const std::size_t m = (k + 1) % n;
-        a += x[k] * y[m] - x[m] * y[k];
-    }
-    return 0.5 * a;
+    return 0.5 * shoelace(x.data(), y.data(), x.size());
 }
 
 Side opposite(Side s) {

@@ -34,6 +34,22 @@ struct Metrics {
     double alpha, beta, gamma, jac2, cxi, ceta;
 };
 
+// Adds the control fields' C_xi = alpha a_xi + beta b_xi + gamma c_xi + J^2 d_xi
+// (likewise C_eta) at node c into m.cxi, m.ceta, from m's metric coefficients.
+inline void add_control_terms(const ControlFields &cf, std::ptrdiff_t c, Metrics &m) {
+    auto add = [&](Term t, double weight, double &into) {
+        if (const double *f = cf.data(t)) into += weight * f[c];
+    };
+    add(Term::AXi, m.alpha, m.cxi);
+    add(Term::BXi, m.beta, m.cxi);
+    add(Term::CXi, m.gamma, m.cxi);
+    add(Term::DXi, m.jac2, m.cxi);
+    add(Term::AEta, m.alpha, m.ceta);
+    add(Term::BEta, m.beta, m.ceta);
+    add(Term::CEta, m.gamma, m.ceta);
+    add(Term::DEta, m.jac2, m.ceta);
+}
+
 inline Metrics node_metrics(const Level &L, const Stencil &s) {
     const double *x = L.x, *y = L.y;
     const double xxi = 0.5 * (x[s.e] - x[s.w]), yxi = 0.5 * (y[s.e] - y[s.w]);
@@ -45,20 +61,7 @@ inline Metrics node_metrics(const Level &L, const Stencil &s) {
     const double jac = xxi * yeta - xeta * yxi;
     m.jac2 = jac * jac;
     m.cxi = m.ceta = 0.0;
-    if (const ControlFields *cf = L.controls) {
-        const std::ptrdiff_t c = s.c;
-        auto add = [&](Term t, double weight, double &into) {
-            if (const double *f = cf->data(t)) into += weight * f[c];
-        };
-        add(Term::AXi, m.alpha, m.cxi);
-        add(Term::BXi, m.beta, m.cxi);
-        add(Term::CXi, m.gamma, m.cxi);
-        add(Term::DXi, m.jac2, m.cxi);
-        add(Term::AEta, m.alpha, m.ceta);
-        add(Term::BEta, m.beta, m.ceta);
-        add(Term::CEta, m.gamma, m.ceta);
-        add(Term::DEta, m.jac2, m.ceta);
-    }
+    if (const ControlFields *cf = L.controls) add_control_terms(*cf, s.c, m);
     return m;
 }
 
