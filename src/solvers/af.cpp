@@ -34,6 +34,7 @@
 #include <limits>
 #include <vector>
 
+#include "solvers/line_relax.hpp"
 #include "solvers/solver.hpp"
 #include "base/tridiagonal.hpp"
 
@@ -225,22 +226,18 @@ public:
     }
 
 private:
-    // The eta factor on the C-grid's line through wake node (i, 0): up
-    // column m = ni-1-i from row nj-2 to row 1 (the upper half, where eta
-    // points the other way: north is the previous node, south the next),
-    // the cut node (its south neighbour is (m, 1)), and column i from row 1
-    // to row nj-2.
+    // The eta factor on the C-grid's line through wake node (i, 0)
+    // (WakeLine, line_relax.hpp: up the upper column, through the cut node,
+    // out along the lower column).
     void solve_wake_line(const Connectivity &conn, int i) {
-        const std::size_t ni = static_cast<std::size_t>(conn.ni());
-        const int nj = conn.nj(), half = nj - 2, len = 2 * half + 1;
-        const std::size_t m = ni - 1 - static_cast<std::size_t>(i);
+        const WakeLine line(conn, i);
+        const int len = line.length();
         line_k_.resize(len);
         line_a_.resize(len); line_b_.resize(len); line_c_.resize(len);
         line_x_.resize(len); line_y_.resize(len);
         for (int t = 0; t < len; ++t) {
-            const bool upper = t < half;
-            const std::size_t k = upper ? m + ni * static_cast<std::size_t>(half - t)
-                                        : static_cast<std::size_t>(i) + ni * static_cast<std::size_t>(t - half);
+            const bool upper = line.reversed(t);
+            const std::size_t k = line.node(t);
             line_k_[t] = k;
             line_a_[t] = upper ? up_[k] : lo_[k];
             line_b_[t] = di_[k];

@@ -195,32 +195,26 @@ static void relax_eta_colour(System system, const Level &L, int first, int i1, d
 // next to the trailing edge (measured on bench naca0012-c).
 static void relax_wake_eta_line(System system, const Level &L, int i, double omega, LineWork &w) {
     const Connectivity &conn = *L.conn;
-    const int nj = conn.nj(), half = nj - 2, iu = conn.ni() - 1 - i;
-    const std::size_t n = static_cast<std::size_t>(2 * half + 1);
-    w.reserve(static_cast<int>(n));
-    auto put = [&](std::size_t k, const Row &r, bool reversed) {
+    const WakeLine line(conn, i);
+    const std::size_t n = static_cast<std::size_t>(line.length());
+    w.reserve(line.length());
+    for (int t = 0; t < line.length(); ++t) {
+        const NodeIJ p = line.at(t);
+        const Row r = line_row(system, L, conn.stencil(p.i, p.j), false);
+        const bool reversed = line.reversed(t);
+        const std::size_t k = static_cast<std::size_t>(t);
         w.a[k] = reversed ? r.c : r.a;
         w.b[k] = r.b;
         w.c[k] = reversed ? r.a : r.c;
         w.dx[k] = -r.rx;
         w.dy[k] = -r.ry;
-    };
-    for (int j = 1; j <= half; ++j)  // upper half: far field first, so j runs backwards
-        put(static_cast<std::size_t>(half - j), line_row(system, L, conn.stencil(iu, j), false), true);
-    put(static_cast<std::size_t>(half), line_row(system, L, conn.stencil(i, 0), false), false);
-    for (int j = 1; j <= half; ++j)
-        put(static_cast<std::size_t>(half + j), line_row(system, L, conn.stencil(i, j), false), false);
-    solve_tridiagonal2(n, w.a.data(), w.b.data(), w.c.data(), w.dx.data(), w.dy.data());
-    const std::ptrdiff_t ni = conn.ni();
-    for (int j = 1; j <= half; ++j) {
-        const std::size_t ku = static_cast<std::size_t>(half - j), kl = static_cast<std::size_t>(half + j);
-        L.x[iu + ni * j] += omega * w.dx[ku];
-        L.y[iu + ni * j] += omega * w.dy[ku];
-        L.x[i + ni * j] += omega * w.dx[kl];
-        L.y[i + ni * j] += omega * w.dy[kl];
     }
-    L.x[i] += omega * w.dx[static_cast<std::size_t>(half)];
-    L.y[i] += omega * w.dy[static_cast<std::size_t>(half)];
+    solve_tridiagonal2(n, w.a.data(), w.b.data(), w.c.data(), w.dx.data(), w.dy.data());
+    for (int t = 0; t < line.length(); ++t) {
+        const std::size_t k = line.node(t);
+        L.x[k] += omega * w.dx[static_cast<std::size_t>(t)];
+        L.y[k] += omega * w.dy[static_cast<std::size_t>(t)];
+    }
     conn.sync_node(L.x, i, 0);
     conn.sync_node(L.y, i, 0);
 }

@@ -11,6 +11,7 @@
 #pragma once
 #include <vector>
 
+#include "base/grid.hpp"
 #include "operator/operator.hpp"
 #include "operator/system.hpp"
 
@@ -33,6 +34,24 @@ void relax_xi_line(System system, const Level &L, int j, double omega, LineWork 
 void relax_eta_line(System system, const Level &L, int i, double omega, LineWork &w);
 // A point update of every node in conn.extra_unknowns() (the C-grid cut).
 void relax_extra_unknowns(System system, const Level &L, double omega);
+
+// A C-grid's eta line through wake node (i, 0), 1 <= i < conn.wake(): the
+// upper column ni-1-i from row nj-2 down to row 1, the cut node (i, 0), the
+// lower column i from row 1 to row nj-2: one grid line of the physical
+// plane, 2(nj-2)+1 nodes. On the upper half eta runs against the line (north
+// is the previous node, south the next), so a row's a and c swap there. AF's
+// eta factor and line relaxation both solve the wake's eta lines this way.
+struct WakeLine {
+    WakeLine(const Connectivity &conn, int column) : ni(conn.ni()), half(conn.nj() - 2), i(column) {}
+    int length() const { return 2 * half + 1; }
+    bool reversed(int t) const { return t < half; }
+    NodeIJ at(int t) const { return t < half ? NodeIJ{ni - 1 - i, half - t} : NodeIJ{i, t - half}; }
+    std::size_t node(int t) const {
+        const NodeIJ p = at(t);
+        return static_cast<std::size_t>(p.i) + static_cast<std::size_t>(ni) * static_cast<std::size_t>(p.j);
+    }
+    int ni, half, i;
+};
 
 // The order in which a sweep visits its lines. Zebra (odd lines, then even)
 // smooths better than lexicographic order when the coupling along the lines
