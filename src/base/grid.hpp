@@ -43,6 +43,11 @@ public:
     // new start must begin from the boundary as set, as a fresh handle does.
     void restore_boundary();
 
+    // The points of side s (side_length(s) each, in increasing index) out
+    // of any ni*nj arrays: x, y or a caller's ring.
+    void read_side(Side s, const double *fx, const double *fy, std::vector<double> &px,
+                   std::vector<double> &py) const;
+
     // Rows 1..rows are held fixed by the solvers (a wall layer made before
     // the solve); 0 releases them. Throws Argument unless 0 <= rows <= nj-3.
     void hold_rows(int rows);
@@ -63,11 +68,8 @@ private:
     void check_closed(Side s, const double *px, const double *py, int n) const;
     // C-grid: the trailing-edge index of a JMIN side (throws Boundary).
     int detect_wake(const double *px, const double *py) const;
-    // A side's points (side_length(s) each) into x, y, and out of any
-    // ni*nj arrays (x, y or a caller's ring).
+    // A side's points (side_length(s) each) into x, y.
     void write_side(Side s, const double *px, const double *py);
-    void read_side(Side s, const double *fx, const double *fy, std::vector<double> &px,
-                   std::vector<double> &py) const;
 
     int ni_, nj_;
     Connectivity base_connectivity_;  // the topology's, no rows held

@@ -15,14 +15,7 @@ namespace {
 
 // The points of side s as the grid holds them.
 void side_points(const Grid &g, Side s, std::vector<double> &x, std::vector<double> &y) {
-    const int n = g.side_length(s);
-    x.resize(static_cast<std::size_t>(n));
-    y.resize(static_cast<std::size_t>(n));
-    for (int p = 0; p < n; ++p) {
-        const std::size_t k = side_node(g, s, p);
-        x[static_cast<std::size_t>(p)] = g.x[k];
-        y[static_cast<std::size_t>(p)] = g.y[k];
-    }
+    g.read_side(s, g.x.data(), g.y.data(), x, y);
 }
 
 double signed_area(const std::vector<double> &x, const std::vector<double> &y) {

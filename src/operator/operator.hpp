@@ -98,6 +98,18 @@ inline NodeEquation node_equation(System system, const Level &L, const Stencil &
     return eq;
 }
 
+// One point Gauss-Seidel/SOR step at node (i, j): r += omega R/diag, then
+// the node's copies (conn.sync_node) follow.
+inline void relax_point(System system, const Level &L, int i, int j, double omega) {
+    const Connectivity &conn = *L.conn;
+    const Stencil s = conn.stencil(i, j);
+    const NodeEquation eq = node_equation(system, L, s);
+    L.x[s.c] += omega * eq.rx / eq.diag;
+    L.y[s.c] += omega * eq.ry / eq.diag;
+    conn.sync_node(L.x, i, j);
+    conn.sync_node(L.y, i, j);
+}
+
 struct ResidualInfo {
     double value = 0.0;  // NUMERICS.md's residual
     int i = -1, j = -1;  // where its maximum is

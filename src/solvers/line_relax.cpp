@@ -221,14 +221,7 @@ static void relax_wake_eta_line(System system, const Level &L, int i, double ome
 
 void relax_extra_unknowns(System system, const Level &L, double omega) {
     const Connectivity &conn = *L.conn;
-    for (const Connectivity::Node &p : conn.extra_unknowns()) {
-        const Stencil s = conn.stencil(p.i, p.j);
-        const NodeEquation eq = node_equation(system, L, s);
-        L.x[s.c] += omega * eq.rx / eq.diag;
-        L.y[s.c] += omega * eq.ry / eq.diag;
-        conn.sync_node(L.x, p.i, p.j);
-        conn.sync_node(L.y, p.i, p.j);
-    }
+    for (const Connectivity::Node &p : conn.extra_unknowns()) relax_point(system, L, p.i, p.j, omega);
 }
 
 namespace {

@@ -16,14 +16,7 @@ double optimal_sor_omega(int n1, int n2) {
 
 void sor_sweep(System system, const Level &L, double omega) {
     const Connectivity &conn = *L.conn;
-    auto relax = [&](int i, int j) {
-        const Stencil s = conn.stencil(i, j);
-        const NodeEquation eq = node_equation(system, L, s);
-        L.x[s.c] += omega * eq.rx / eq.diag;
-        L.y[s.c] += omega * eq.ry / eq.diag;
-        conn.sync_node(L.x, i, j);
-        conn.sync_node(L.y, i, j);
-    };
+    auto relax = [&](int i, int j) { relax_point(system, L, i, j, omega); };
     for (int j = conn.j_begin(); j < conn.j_end(); ++j)
         for (int i = conn.i_begin(); i < conn.i_end(); ++i) relax(i, j);
     for (const Connectivity::Node &n : conn.extra_unknowns()) relax(n.i, n.j);
