@@ -42,14 +42,37 @@
 namespace eg2d {
 
 namespace {
+// Where these numbers come from. The limits on psi and phi and their
+// widening came with the first wall control (823dc6d; limited, relaxed
+// coefficients as in GRAPE and Hilgenstock's updates, above) and have not
+// been measured one by one; what is measured of them is in bench/RESULTS.md
+// ("Wall control"): at the NACA0012 trailing edge phi's target jumps between
+// its limits +-1, and at 257x65, 1e-3 chord the limit binds (the first cell
+// stops 20% short).
+// |psi| <= 3 (823dc6d's text gave 1.5, where the spacing ratio
+// (1 - psi/2)/(1 + psi/2) reaches 7; its code had 3, unchanged since).
 constexpr double kPsiLimit = 3.0;
 constexpr double kPhiLimit = 1.0;
+// The widening by the along-wall metric (the rounded cap round a sharp
+// trailing edge needs more) stops at 4x: a choice, not measured.
 constexpr double kWidenLimit = 4.0;
-constexpr double kMinGain = 1e-3;   // the smallest gain an oscillating node is damped to
-constexpr double kStepLimit = 0.02;  // largest change of a coefficient per update: a ramp from the start grid
-constexpr double kDecayCutoff = 1e-4;  // depths where exp(-a (m-1)) is below this get nothing
-constexpr int kCalmUpdates = 3;        // damped updates before Anderson acceleration (advance)
-constexpr double kNoGap = 1e300;       // the gap before any update
+// The smallest gain an oscillating node is damped to, and the halving on a
+// turn / 10% recovery (damped_update): 3a10abd, which made multigrid
+// converge on seed 000's channel 1; the two-gain measurements are in
+// bench/RESULTS.md, session 5.
+constexpr double kMinGain = 1e-3;
+// Largest change of a coefficient per update: a ramp from the start grid.
+// bench/RESULTS.md ("About 16 cycles are the ramp"): multigrid's pace is 5x
+// this; 7x, 10x and 15x fold a cycle at the leading edge at some sizes.
+constexpr double kStepLimit = 0.02;
+// Depths where exp(-a (m-1)) is below this get nothing: a choice, not
+// measured.
+constexpr double kDecayCutoff = 1e-4;
+// Damped updates before Anderson acceleration (advance): bench/RESULTS.md
+// ("Past the start-up ramp (three damped updates ...)"): started from the
+// first update the acceleration folded cells at 129x33.
+constexpr int kCalmUpdates = 3;
+constexpr double kNoGap = 1e300;       // the gap before any update (a sentinel, larger than any gap)
 
 bool j_side(int side) { return side == 0 || side == 2; }  // JMIN, JMAX: eta = const walls
 
@@ -124,7 +147,7 @@ public:
         if (pace.accelerate && calm_ >= kCalmUpdates) {
             for (int side = 0; side < 4; ++side) add_targets(g, others, orient, side, nodes);
             const double gap = mismatch(nodes);
-            if (gap < 2.0 * best_gap_) {
+            if (gap < 2.0 * best_gap_) {  // twice its best: bench/RESULTS.md, with kCalmUpdates
                 accelerated_update(nodes, omega, step);
                 last_gap_ = gap;
                 best_gap_ = std::min(best_gap_, gap);
@@ -323,6 +346,8 @@ private:
         const double rx = -eq.rx - oxi * xxi - oeta * xeta, ry = -eq.ry - oxi * yxi - oeta * yeta;
         const double det = xxi * yeta - xeta * yxi;
         const double scale = j_side(side) ? m.gamma : m.alpha;
+        // A degenerate stencil (r_xi, r_eta parallel to round-off, relative to
+        // the metric's size) has no target: a guard, not a tuned value.
         if (!(std::fabs(det) > 1e-12 * (m.alpha + m.gamma)) || !(scale > 0.0)) return false;
         const double cxi = (rx * yeta - xeta * ry) / det, ceta = (xxi * ry - yxi * rx) / det;
         // Along-wall (tangential) and wall-normal parts.
