@@ -7,6 +7,7 @@
 
 #include "api/handle.hpp"
 #include "controls/controls.hpp"
+#include "controls/registry.hpp"
 
 using namespace eg2d;
 using namespace eg2d::api;
@@ -115,13 +116,11 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
 
 EG2D_API int eg2d_set_orthogonality(eg2d_grid *grid, int method) {
     return guard(grid, "eg2d_set_orthogonality", [&] {
-        require(method == EG2D_ORTHO_NONE || method == EG2D_ORTHO_MIDDLECOFF_THOMAS || method == EG2D_ORTHO_WALL,
-                format("method = %d: not EG2D_ORTHO_NONE (0), EG2D_ORTHO_MIDDLECOFF_THOMAS (1) or "
-                       "EG2D_ORTHO_WALL (2)", method));
+        const OrthogonalityMethod *m = find_orthogonality(method);
+        require(m != nullptr, format("method = %d: not %s", method, orthogonality_ids().c_str()));
         edit_controls(grid, [&](ControlSet &set) {
-            if (method == EG2D_ORTHO_NONE) set.remove(ControlKind::Orthogonality);
-            else if (method == EG2D_ORTHO_MIDDLECOFF_THOMAS) set.put(make_middlecoff_thomas());
-            else set.put(make_wall_control(wall_sides(grid->wall_height)));
+            if (!m->make) set.remove(ControlKind::Orthogonality);
+            else set.put(m->make(wall_sides(grid->wall_height)));
         });
     });
 }
