@@ -61,8 +61,7 @@ void read_parameters(const Fields &f, const char *section, Case &c) {
         if (!p.available)
             throw Failure(EXIT_UNSUPPORTED, f.at(p.name).str() + ": is not available in this build of eg2d");
         // on/off settings are written true/false (1/0 are accepted too)
-        const bool flag = !std::strcmp(p.name, "fold_check") || !std::strcmp(p.name, "mg_fmg");
-        const double v = flag && f.node(p.name)->is_boolean() ? (f.boolean(p.name, true) ? 1 : 0) : f.number(p.name, c.constants);
+        const double v = p.flag && f.node(p.name)->is_boolean() ? (f.boolean(p.name, true) ? 1 : 0) : f.number(p.name, c.constants);
         c.parameters.push_back({p.id, v, f.at(p.name)});
     }
 }
@@ -95,63 +94,59 @@ void read_sides(const Fields &top, Case &c) {
     }
 }
 
-void read_controls(const Fields &top, Case &c) {
-    if (!top.has("controls")) return;
-    std::vector<std::string> keys = controls_keys;
-    for (const auto &k : parameter_keys("controls")) keys.push_back(k);
-    Fields f(top.table("controls"), top.at("controls"), keys);
-    f.finish();
-    read_parameters(f, "controls", c);
-    if (f.has("orthogonality")) {
-        c.orthogonality = pick_key(f, "orthogonality", "none", orthogonality()).id;
-        c.orthogonality_at = f.at("orthogonality");
-    }
-    for (const auto &feature : controls())
-        if (f.has(feature.name) && !feature.available)
-            throw Failure(EXIT_UNSUPPORTED, f.at(feature.name).str() + ": is not available in this build of eg2d");
 #ifdef EG2D_XI
-    if (f.has("wall_spacing")) {
-        const auto &valid = side_names(c.topology);
-        std::vector<std::string> side_keys;
-        for (const auto &s : valid) side_keys.push_back(s.first);
-        Fields w(f.table("wall_spacing"), f.at("wall_spacing"), side_keys);
-        w.finish();
-        for (const auto &s : valid) {
-            if (!w.has(s.first)) continue;
-            double h;
-            if (w.node(s.first)->is_table()) {  // from a target y+ (eg2d_first_cell_height)
-                Fields y(w.table(s.first), w.at(s.first), {"yplus", "reynolds", "chord"});
-                y.finish();
-                const int status = eg2d_first_cell_height(y.number("yplus", c.constants), y.number("reynolds", c.constants),
-                                                          y.number("chord", 1, c.constants), &h);
-                if (status != EG2D_OK)
-                    throw Failure(EXIT_GEOMETRY, w.at(s.first).str() + ": " + eg2d_last_error(nullptr));
-            } else {
-                h = w.number(s.first, c.constants);
-            }
-            if (h < 0) throw Failure(EXIT_CASE, w.at(s.first).str() + ": must be >= 0 (0 = orthogonality only)");
-            c.wall_spacings.push_back({s.second, h, w.at(s.first)});
+// [controls] wall_spacing: a first-cell height per wall side, or a table
+// {yplus, reynolds, chord} turned into one by eg2d_first_cell_height.
+void read_wall_spacing(const Fields &f, Case &c) {
+    if (!f.has("wall_spacing")) return;
+    const auto &valid = side_names(c.topology);
+    std::vector<std::string> side_keys;
+    for (const auto &s : valid) side_keys.push_back(s.first);
+    Fields w(f.table("wall_spacing"), f.at("wall_spacing"), side_keys);
+    w.finish();
+    for (const auto &s : valid) {
+        if (!w.has(s.first)) continue;
+        double h;
+        if (w.node(s.first)->is_table()) {  // from a target y+ (eg2d_first_cell_height)
+            Fields y(w.table(s.first), w.at(s.first), {"yplus", "reynolds", "chord"});
+            y.finish();
+            const int status = eg2d_first_cell_height(y.number("yplus", c.constants), y.number("reynolds", c.constants),
+                                                      y.number("chord", 1, c.constants), &h);
+            if (status != EG2D_OK)
+                throw Failure(EXIT_GEOMETRY, w.at(s.first).str() + ": " + eg2d_last_error(nullptr));
+        } else {
+            h = w.number(s.first, c.constants);
         }
+        if (h < 0) throw Failure(EXIT_CASE, w.at(s.first).str() + ": must be >= 0 (0 = orthogonality only)");
+        c.wall_spacings.push_back({s.second, h, w.at(s.first)});
     }
-    auto each_table = [&](const char *key, auto &&fn) {
-        if (!f.has(key)) return;
-        const toml::node &n = *f.node(key);
-        if (n.is_table()) return fn(*n.as_table(), f.at(key));
-        const toml::array &a = f.array(key);
-        for (std::size_t k = 0; k < a.size(); ++k) {
-            Location l = locate(f.where(), std::string(key) + "[" + std::to_string(k) + "]", *a.get(k));
-            if (!a.get(k)->is_table()) throw Failure(EXIT_CASE, l.str() + ": expected a table, found " + type_name(*a.get(k)));
-            fn(*a.get(k)->as_table(), l);
-        }
-    };
-    each_table("line_source", [&](const toml::table &t, const Location &l) {
+}
+
+// Calls fn(table, location) for key's table, or for each table of key's array.
+template <class Fn>
+void each_table(const Fields &f, const char *key, Fn &&fn) {
+    if (!f.has(key)) return;
+    const toml::node &n = *f.node(key);
+    if (n.is_table()) return fn(*n.as_table(), f.at(key));
+    const toml::array &a = f.array(key);
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        Location l = locate(f.where(), std::string(key) + "[" + std::to_string(k) + "]", *a.get(k));
+        if (!a.get(k)->is_table()) throw Failure(EXIT_CASE, l.str() + ": expected a table, found " + type_name(*a.get(k)));
+        fn(*a.get(k)->as_table(), l);
+    }
+}
+
+// [controls] line_source, point_source (tables or arrays of tables), and
+// source_arrays {P, Q} (formulas in i, j).
+void read_sources(const Fields &f, Case &c) {
+    each_table(f, "line_source", [&](const toml::table &t, const Location &l) {
         Fields s(t, l, {"direction", "line", "amplitude", "decay"});
         s.finish();
         const std::string d = s.choice("direction", "", {"xi", "eta"});
         c.line_sources.push_back({d == "xi" ? EG2D_XI : EG2D_ETA, s.number("line", c.constants),
                                   s.number("amplitude", c.constants), s.number("decay", c.constants), l});
     });
-    each_table("point_source", [&](const toml::table &t, const Location &l) {
+    each_table(f, "point_source", [&](const toml::table &t, const Location &l) {
         Fields s(t, l, {"xi", "eta", "amplitude", "decay"});
         s.finish();
         c.point_sources.push_back({s.number("xi", c.constants), s.number("eta", c.constants),
@@ -168,29 +163,58 @@ void read_controls(const Fields &top, Case &c) {
         Formula(c.source_p, {"i", "j"}, c.constants, c.source_p_at);
         Formula(c.source_q, {"i", "j"}, c.constants, c.source_q_at);
     }
-    if (f.has("weight")) {
-        c.weight = f.text("weight");
-        c.weight_at = f.at("weight");
-        Formula(c.weight, {"i", "j"}, c.constants, c.weight_at);
+}
+
+// [controls] weight: a formula in i, j.
+void read_weight(const Fields &f, Case &c) {
+    if (!f.has("weight")) return;
+    c.weight = f.text("weight");
+    c.weight_at = f.at("weight");
+    Formula(c.weight, {"i", "j"}, c.constants, c.weight_at);
+}
+
+// [controls] parameter_grid {i, j}: Khattri's (2006) tensor grid of
+// clustering maps, one per direction (uniform where absent).
+void read_parameter_grid(const Fields &f, Case &c) {
+    if (!f.has("parameter_grid")) return;
+    Fields g(f.table("parameter_grid"), f.at("parameter_grid"), {"i", "j"});
+    g.finish();
+    for (const char *dir : {"i", "j"}) {
+        Clustering &k = dir[0] == 'i' ? c.cluster_i : c.cluster_j;
+        k.where = g.at(dir);
+        if (!g.has(dir)) continue;  // uniform in that direction
+        Fields m(g.table(dir), k.where, {"kind", "a", "b", "strength"});
+        m.finish();
+        const std::string kind = m.choice("kind", "", {"uniform", "line", "two_lines", "boundaries"});
+        k.kind = kind == "uniform" ? -1 : kind == "line" ? EG2D_CLUSTER_LINE
+                                        : kind == "two_lines" ? EG2D_CLUSTER_TWO_LINES : EG2D_CLUSTER_BOUNDARIES;
+        k.a = m.number("a", 0.5, c.constants);
+        k.b = m.number("b", 0, c.constants);
+        k.strength = m.number("strength", 0, c.constants);
     }
-    if (f.has("parameter_grid")) {  // Khattri (2006): a tensor grid of clustering maps
-        Fields g(f.table("parameter_grid"), f.at("parameter_grid"), {"i", "j"});
-        g.finish();
-        for (const char *dir : {"i", "j"}) {
-            Clustering &k = dir[0] == 'i' ? c.cluster_i : c.cluster_j;
-            k.where = g.at(dir);
-            if (!g.has(dir)) continue;  // uniform in that direction
-            Fields m(g.table(dir), k.where, {"kind", "a", "b", "strength"});
-            m.finish();
-            const std::string kind = m.choice("kind", "", {"uniform", "line", "two_lines", "boundaries"});
-            k.kind = kind == "uniform" ? -1 : kind == "line" ? EG2D_CLUSTER_LINE
-                                            : kind == "two_lines" ? EG2D_CLUSTER_TWO_LINES : EG2D_CLUSTER_BOUNDARIES;
-            k.a = m.number("a", 0.5, c.constants);
-            k.b = m.number("b", 0, c.constants);
-            k.strength = m.number("strength", 0, c.constants);
-        }
-        c.parameter_grid = true;
+    c.parameter_grid = true;
+}
+#endif
+
+void read_controls(const Fields &top, Case &c) {
+    if (!top.has("controls")) return;
+    std::vector<std::string> keys = controls_keys;
+    for (const auto &k : parameter_keys("controls")) keys.push_back(k);
+    Fields f(top.table("controls"), top.at("controls"), keys);
+    f.finish();
+    read_parameters(f, "controls", c);
+    if (f.has("orthogonality")) {
+        c.orthogonality = pick_key(f, "orthogonality", "none", orthogonality()).id;
+        c.orthogonality_at = f.at("orthogonality");
     }
+    for (const auto &feature : controls())
+        if (f.has(feature.name) && !feature.available)
+            throw Failure(EXIT_UNSUPPORTED, f.at(feature.name).str() + ": is not available in this build of eg2d");
+#ifdef EG2D_XI
+    read_wall_spacing(f, c);
+    read_sources(f, c);
+    read_weight(f, c);
+    read_parameter_grid(f, c);
 #endif
 }
 
@@ -201,11 +225,7 @@ void read_output(const Fields &top, Case &c, const std::string &stem) {
         Fields f(top.table("output"), top.at("output"), {"name", "formats", "svg_quality"});
         f.finish();
         if (f.has("svg_quality")) {  // colour the picture's cells by a per-cell metric
-            static const std::vector<Feature> metrics = {
-                {"folded", EG2D_QUALITY_FOLDED_CELLS, true},     {"area", EG2D_QUALITY_MIN_AREA, true},
-                {"skewness", EG2D_QUALITY_SKEWNESS, true},        {"aspect_ratio", EG2D_QUALITY_ASPECT_RATIO, true},
-                {"smoothness_i", EG2D_QUALITY_SMOOTHNESS_I, true}, {"smoothness_j", EG2D_QUALITY_SMOOTHNESS_J, true}};
-            c.svg_quality = pick_key(f, "svg_quality", "", metrics).id;
+            c.svg_quality = pick_key(f, "svg_quality", "", cell_metrics()).id;
             c.svg_quality_at = f.at("svg_quality");
         }
         name = f.text("name", stem);

@@ -9,19 +9,22 @@ namespace eg2dtool {
 #define EG2D_MISSING(name) {name, -1, false}
 
 const std::vector<Feature> &solvers() {
-    // Solvers are known at run time too: eg2d_solver_name(id) is NULL when absent.
+    // Read from the library's registry (src/solvers/registry.cpp): every
+    // solver id (0-99, eg2d_set_solver) that eg2d_solver_name knows, by that
+    // name, in id order. A new solver needs no line here.
     static const std::vector<Feature> t = [] {
-        std::vector<Feature> v = {{"psor", EG2D_SOLVER_PSOR, true}, {"lsor", EG2D_SOLVER_LSOR, true},
-                                  {"af", EG2D_SOLVER_AF, true}, {"nested", EG2D_SOLVER_NESTED, true},
-                                  {"multigrid", EG2D_SOLVER_MULTIGRID, true}};
-        for (auto &f : v) f.available = eg2d_solver_name(f.id) != nullptr;
+        std::vector<Feature> v;
+        for (int id = 0; id <= 99; ++id)
+            if (const char *name = eg2d_solver_name(id)) v.push_back({name, id, true});
         return v;
     }();
     return t;
 }
 
 // A parameter whose id is not in this header is listed as not available.
+// EG2D_FLAG: an on/off setting, written true/false in a case file (1/0 too).
 #define EG2D_PARAM(name, macro, section) {name, macro, true, "", section}
+#define EG2D_FLAG(name, macro, section) {name, macro, true, "", section, true}
 #define EG2D_NO_PARAM(name, section) {name, -1, false, "", section}
 
 const std::vector<Feature> &parameters() {
@@ -30,7 +33,7 @@ const std::vector<Feature> &parameters() {
         EG2D_PARAM("tolerance", EG2D_PARAM_TOLERANCE, "solver"),
         EG2D_PARAM("max_iterations", EG2D_PARAM_MAX_ITERATIONS, "solver"),
         EG2D_PARAM("divergence_factor", EG2D_PARAM_DIVERGENCE_FACTOR, "solver"),
-        EG2D_PARAM("fold_check", EG2D_PARAM_FOLD_CHECK, "solver"),
+        EG2D_FLAG("fold_check", EG2D_PARAM_FOLD_CHECK, "solver"),
 #ifdef EG2D_PARAM_AF_DTAU_MIN
         EG2D_PARAM("af_dtau_min", EG2D_PARAM_AF_DTAU_MIN, "solver"),
         EG2D_PARAM("af_dtau_max", EG2D_PARAM_AF_DTAU_MAX, "solver"),
@@ -47,7 +50,7 @@ const std::vector<Feature> &parameters() {
         EG2D_PARAM("mg_cycle", EG2D_PARAM_MG_CYCLE, "solver"),
         EG2D_PARAM("mg_pre_smooth", EG2D_PARAM_MG_PRE_SMOOTH, "solver"),
         EG2D_PARAM("mg_post_smooth", EG2D_PARAM_MG_POST_SMOOTH, "solver"),
-        EG2D_PARAM("mg_fmg", EG2D_PARAM_MG_FMG, "solver"),
+        EG2D_FLAG("mg_fmg", EG2D_PARAM_MG_FMG, "solver"),
         EG2D_PARAM("mg_coarsest", EG2D_PARAM_MG_COARSEST, "solver"),
 #else
         EG2D_NO_PARAM("mg_cycle", "solver"), EG2D_NO_PARAM("mg_pre_smooth", "solver"),
@@ -119,6 +122,16 @@ const std::vector<Feature> &formats() {
         {"matlab", EG2D_FORMAT_MATLAB, true, ".m"},
         {"svg", EG2D_FORMAT_SVG, true, ".svg"},
     };
+    return t;
+}
+
+const std::vector<Feature> &cell_metrics() {
+    // The library's per-cell EG2D_QUALITY_* metrics, by the names of its
+    // quality table (src/quality/quality.cpp, also the .vts/.gmv field names).
+    static const std::vector<Feature> t = {
+        {"folded", EG2D_QUALITY_FOLDED_CELLS, true},      {"area", EG2D_QUALITY_MIN_AREA, true},
+        {"skewness", EG2D_QUALITY_SKEWNESS, true},         {"aspect_ratio", EG2D_QUALITY_ASPECT_RATIO, true},
+        {"smoothness_i", EG2D_QUALITY_SMOOTHNESS_I, true}, {"smoothness_j", EG2D_QUALITY_SMOOTHNESS_J, true}};
     return t;
 }
 

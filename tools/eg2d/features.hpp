@@ -14,6 +14,7 @@ struct Feature {
     bool available;    // compiled into this build of the tool's library
     const char *extension = "";  // output formats: file name extension
     const char *section = "solver";  // parameters: the table of the case file that holds them
+    bool flag = false;               // parameters: on/off, written true/false (1/0 accepted)
 };
 
 const std::vector<Feature> &solvers();        // [solver] method
@@ -21,6 +22,7 @@ const std::vector<Feature> &parameters();     // keys that are EG2D_PARAM_* sett
 const std::vector<Feature> &orthogonality();  // [controls] orthogonality
 const std::vector<Feature> &controls();       // the other [controls] keys
 const std::vector<Feature> &formats();        // [output] formats
+const std::vector<Feature> &cell_metrics();   // [output] svg_quality
 const std::vector<Feature> &geometry();       // curves and distributions on sides
 const std::vector<Feature> &systems();
 const std::vector<Feature> &topologies();
