@@ -116,43 +116,72 @@ public:
         const std::vector<double> cycle = af_cycle(p.settings, ni, nj, top_);
         const double tau = cycle[static_cast<std::size_t>(step_) % cycle.size()];
         const double a = p.settings.af_a, b = p.settings.af_b;
-        const double a_tilde = a / (1.0 + a), gain = af_relaxation(p.settings) / b;
-        const bool three_level = a_tilde != 0.0 && prev_x_.size() == size;
+        Step st;
+        st.a_tilde = a / (1.0 + a);
+        st.gain = af_relaxation(p.settings) / b;
+        st.three_level = st.a_tilde != 0.0 && prev_x_.size() == size;
 
         dx_.assign(size, 0.0);
         dy_.assign(size, 0.0);
         lo_.assign(size, 0.0);
         di_.assign(size, 1.0);
         up_.assign(size, 0.0);
-
-        // The xi factor, line by line (eq 11); the eta coefficients are kept for eq 12.
-        const int ib = conn.i_begin(), ie = conn.i_end(), n = ie - ib;
-        row_lo_.resize(n); row_di_.resize(n); row_up_.resize(n); row_c_.resize(n);
         if (!(scale_ > 0.0)) scale_ = diagonal_scale(p.system, L);
-        const double dt = tau / scale_;
-        double log_sum = 0.0;  // for the next step's scale: one pass over the nodes, not two
-        // Node (i, j) as entry r of its xi line; its eta coefficients and right-hand side in place.
-        auto assemble = [&](int i, int j, int r) {
-            const Stencil s = conn.stencil(i, j);
-            Metrics m;
-            const NodeEquation eq = node_equation(p.system, L, s, &m);
-            const double alpha = m.alpha, gamma = m.gamma, cxi = m.cxi, ceta = m.ceta;
-            row_lo_[r] = -dt * (alpha - 0.5 * cxi);
-            row_di_[r] = 1.0 + 2.0 * dt * alpha;
-            row_up_[r] = -dt * (alpha + 0.5 * cxi);
-            lo_[s.c] = -dt * (gamma - 0.5 * ceta);
-            di_[s.c] = 1.0 + 2.0 * dt * gamma;
-            up_[s.c] = -dt * (gamma + 0.5 * ceta);
-            dx_[s.c] = dt * gain * eq.rx;
-            dy_[s.c] = dt * gain * eq.ry;
-            if (three_level) {
-                dx_[s.c] += a_tilde * prev_x_[s.c];
-                dy_[s.c] += a_tilde * prev_y_[s.c];
-            }
-            return eq.diag;
-        };
+        st.dt = tau / scale_;
+
+        const double log_sum = xi_factor(p.system, L, st);
+        eta_factor(conn);
+        apply(L);
+        // The next step's scale, from this step's diagonals: one pass over the nodes, not two.
+        const int n = conn.i_end() - conn.i_begin();
+        scale_ = std::exp(log_sum / (static_cast<double>(n) * (conn.j_end() - conn.j_begin())));
+        if (st.a_tilde != 0.0) {
+            prev_x_.swap(dx_);
+            prev_y_.swap(dy_);
+        }
+        ++step_;
+    }
+
+private:
+    // One step's numbers: dt = tau / D, omega/b, a~ and whether r^n - r^(n-1) is known.
+    struct Step {
+        double dt = 0.0, gain = 0.0, a_tilde = 0.0;
+        bool three_level = false;
+    };
+
+    // Node (i, j) as entry r of its xi line (row_*); its eta coefficients
+    // (lo_, di_, up_) and right-hand side (dx_, dy_) in place. Returns the
+    // node's diagonal 2(alpha+gamma).
+    double assemble(System system, const Level &L, const Step &st, int i, int j, int r) {
+        const Stencil s = L.conn->stencil(i, j);
+        const double dt = st.dt;
+        Metrics m;
+        const NodeEquation eq = node_equation(system, L, s, &m);
+        const double alpha = m.alpha, gamma = m.gamma, cxi = m.cxi, ceta = m.ceta;
+        row_lo_[r] = -dt * (alpha - 0.5 * cxi);
+        row_di_[r] = 1.0 + 2.0 * dt * alpha;
+        row_up_[r] = -dt * (alpha + 0.5 * cxi);
+        lo_[s.c] = -dt * (gamma - 0.5 * ceta);
+        di_[s.c] = 1.0 + 2.0 * dt * gamma;
+        up_[s.c] = -dt * (gamma + 0.5 * ceta);
+        dx_[s.c] = dt * st.gain * eq.rx;
+        dy_[s.c] = dt * st.gain * eq.ry;
+        if (st.three_level) {
+            dx_[s.c] += st.a_tilde * prev_x_[s.c];
+            dy_[s.c] += st.a_tilde * prev_y_[s.c];
+        }
+        return eq.diag;
+    }
+
+    // The xi factor, line by line (eq 11); the eta coefficients are kept for
+    // eq 12. Returns the sum of log(diagonal) over the unknowns.
+    double xi_factor(System system, const Level &L, const Step &st) {
+        const Connectivity &conn = *L.conn;
+        const int ni = conn.ni(), ib = conn.i_begin(), ie = conn.i_end(), n = ie - ib;
+        row_lo_.resize(n); row_di_.resize(n); row_up_.resize(n); row_c_.resize(n);
+        double log_sum = 0.0;
         for (int j = conn.j_begin(); j < conn.j_end(); ++j) {
-            for (int i = ib; i < ie; ++i) log_sum += std::log(assemble(i, j, i - ib));
+            for (int i = ib; i < ie; ++i) log_sum += std::log(assemble(system, L, st, i, j, i - ib));
             double *rx = dx_.data() + static_cast<std::size_t>(ni) * j + ib;
             double *ry = dy_.data() + static_cast<std::size_t>(ni) * j + ib;
             solve_row(conn.periodic_i(), n, rx);
@@ -163,17 +192,21 @@ public:
         // as seed 004 does with the O-grid's branch cut, not relaxed after it.
         const int wake = conn.wake();  // 0 unless a C-grid
         if (wake > 1) {
-            for (int i = 1; i < wake; ++i) assemble(i, 0, i - 1);
+            for (int i = 1; i < wake; ++i) assemble(system, L, st, i, 0, i - 1);
             solve_row(false, wake - 1, dx_.data() + 1);
             solve_row(false, wake - 1, dy_.data() + 1);
         }
+        return log_sum;
+    }
 
-        // The eta factor (eq 12): all columns at once, row after row, so
-        // memory is walked in storage order (Thomas algorithm in place). The
-        // C-grid's wake columns i and ni-1-i are one eta line through the cut
-        // (solve_wake_line); the others run from row 1 to row nj-2.
+    // The eta factor (eq 12): all columns at once, row after row, so memory
+    // is walked in storage order (Thomas algorithm in place). The C-grid's
+    // wake columns i and ni-1-i are one eta line through the cut
+    // (solve_wake_line); the others run from row 1 to row nj-2.
+    void eta_factor(const Connectivity &conn) {
+        const int ni = conn.ni(), wake = conn.wake();
         const int jb = conn.j_begin(), je = conn.j_end();
-        const int i0 = wake > 1 ? wake : ib, i1 = wake > 1 ? ni - wake : ie;
+        const int i0 = wake > 1 ? wake : conn.i_begin(), i1 = wake > 1 ? ni - wake : conn.i_end();
         for (int j = jb; j < je; ++j) {
             const std::size_t row = static_cast<std::size_t>(ni) * j;
             for (int i = i0; i < i1; ++i) {
@@ -199,33 +232,25 @@ public:
             }
         }
         for (int i = 1; i < wake; ++i) solve_wake_line(conn, i);
-
-        // eq 13, and the cut column follows column 0.
-        for (int j = jb; j < je; ++j)
-            for (int i = ib; i < ie; ++i) {
-                const std::size_t k = static_cast<std::size_t>(ni) * j + i;
-                L.x[k] += dx_[k];
-                L.y[k] += dy_[k];
-                conn.sync_node(L.x, i, j);
-                conn.sync_node(L.y, i, j);
-            }
-        // The wake cut's nodes, and their copies on the upper wake.
-        for (const Connectivity::Node &nd : conn.extra_unknowns()) {
-            const std::size_t k = static_cast<std::size_t>(ni) * nd.j + nd.i;
-            L.x[k] += dx_[k];
-            L.y[k] += dy_[k];
-            conn.sync_node(L.x, nd.i, nd.j);
-            conn.sync_node(L.y, nd.i, nd.j);
-        }
-        scale_ = std::exp(log_sum / (static_cast<double>(n) * (conn.j_end() - conn.j_begin())));
-        if (a_tilde != 0.0) {
-            prev_x_.swap(dx_);
-            prev_y_.swap(dy_);
-        }
-        ++step_;
     }
 
-private:
+    // eq 13, and the cut column follows column 0; then the wake cut's nodes
+    // and their copies on the upper wake.
+    void apply(const Level &L) const {
+        const Connectivity &conn = *L.conn;
+        const int ni = conn.ni();
+        auto move = [&](int i, int j) {
+            const std::size_t k = static_cast<std::size_t>(ni) * j + i;
+            L.x[k] += dx_[k];
+            L.y[k] += dy_[k];
+            conn.sync_node(L.x, i, j);
+            conn.sync_node(L.y, i, j);
+        };
+        for (int j = conn.j_begin(); j < conn.j_end(); ++j)
+            for (int i = conn.i_begin(); i < conn.i_end(); ++i) move(i, j);
+        for (const Connectivity::Node &nd : conn.extra_unknowns()) move(nd.i, nd.j);
+    }
+
     // The eta factor on the C-grid's line through wake node (i, 0)
     // (WakeLine, line_relax.hpp: up the upper column, through the cut node,
     // out along the lower column).
