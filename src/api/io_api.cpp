@@ -19,45 +19,46 @@ EG2D_API int eg2d_write(const eg2d_grid *grid, const char *path, int format) {
     });
 }
 
+}  // extern "C"
+
+namespace {
+
+// Both read calls: capacity < 0 is the unchecked eg2d_read_plot3d.
+void read_plot3d_block(const char *path, int block, long long capacity, int *format, int *nblocks, int *ni, int *nj,
+                       double *x, double *y) {
+    require_ptr(path, "path");
+    require(block >= 0, eg2d::format("block = %d: must be >= 0", block));
+    require((x == nullptr) == (y == nullptr), "x and y must both be given or both be NULL");
+    const Plot3dFile file = read_plot3d(path, block);
+    const Plot3dBlock &b = file.blocks[static_cast<std::size_t>(block)];
+    if (x) {
+        require(capacity < 0 || b.x.size() <= static_cast<std::size_t>(capacity),
+                eg2d::format("%s: grid %d has %d x %d = %zu nodes, more than capacity = %lld", path, block, b.ni, b.nj,
+                             b.x.size(), capacity));
+        std::copy(b.x.begin(), b.x.end(), x);
+        std::copy(b.y.begin(), b.y.end(), y);
+    }
+    if (format) *format = file.format;
+    if (nblocks) *nblocks = static_cast<int>(file.blocks.size());
+    if (ni) *ni = b.ni;
+    if (nj) *nj = b.nj;
+}
+
+}  // namespace
+
+extern "C" {
+
 EG2D_API int eg2d_read_plot3d(const char *path, int block, int *format, int *nblocks, int *ni, int *nj, double *x,
                               double *y) {
-    return guard_without_grid("eg2d_read_plot3d", [&] {
-        require_ptr(path, "path");
-        require(block >= 0, eg2d::format("block = %d: must be >= 0", block));
-        require((x == nullptr) == (y == nullptr), "x and y must both be given or both be NULL");
-        const Plot3dFile file = read_plot3d(path, block);
-        const Plot3dBlock &b = file.blocks[static_cast<std::size_t>(block)];
-        if (x) {
-            std::copy(b.x.begin(), b.x.end(), x);
-            std::copy(b.y.begin(), b.y.end(), y);
-        }
-        if (format) *format = file.format;
-        if (nblocks) *nblocks = static_cast<int>(file.blocks.size());
-        if (ni) *ni = b.ni;
-        if (nj) *nj = b.nj;
-    });
+    return guard_without_grid("eg2d_read_plot3d",
+                              [&] { read_plot3d_block(path, block, -1, format, nblocks, ni, nj, x, y); });
 }
 
 EG2D_API int eg2d_read_plot3d_into(const char *path, int block, int capacity, int *format, int *nblocks, int *ni,
                                    int *nj, double *x, double *y) {
     return guard_without_grid("eg2d_read_plot3d_into", [&] {
-        require_ptr(path, "path");
-        require(block >= 0, eg2d::format("block = %d: must be >= 0", block));
         require(capacity >= 0, eg2d::format("capacity = %d: must be >= 0", capacity));
-        require((x == nullptr) == (y == nullptr), "x and y must both be given or both be NULL");
-        const Plot3dFile file = read_plot3d(path, block);
-        const Plot3dBlock &b = file.blocks[static_cast<std::size_t>(block)];
-        if (x) {
-            require(b.x.size() <= static_cast<std::size_t>(capacity),
-                    eg2d::format("%s: grid %d has %d x %d = %zu nodes, more than capacity = %d", path, block, b.ni,
-                                 b.nj, b.x.size(), capacity));
-            std::copy(b.x.begin(), b.x.end(), x);
-            std::copy(b.y.begin(), b.y.end(), y);
-        }
-        if (format) *format = file.format;
-        if (nblocks) *nblocks = static_cast<int>(file.blocks.size());
-        if (ni) *ni = b.ni;
-        if (nj) *nj = b.nj;
+        read_plot3d_block(path, block, capacity, format, nblocks, ni, nj, x, y);
     });
 }
 
