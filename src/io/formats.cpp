@@ -5,6 +5,15 @@
 
 namespace eg2d {
 
+// The writers, each in its own file.
+void write_plot3d(const WriteRequest &r, OutputFile &out);        // plot3d_write.cpp
+void write_plot3d_ascii(const WriteRequest &r, OutputFile &out);
+void write_vts(const WriteRequest &r, OutputFile &out);           // vts.cpp
+void write_cgns(const WriteRequest &r, OutputFile &out);          // cgns_loader.cpp
+void write_gmv(const WriteRequest &r, OutputFile &out);           // gmv.cpp
+void write_matlab(const WriteRequest &r, OutputFile &out);        // matlab.cpp
+void write_svg(const WriteRequest &r, OutputFile &out);           // svg.cpp
+
 namespace {
 constexpr int kFormatMask = 0xff;
 constexpr int kPlot3dFlags = EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI | EG2D_PLOT3D_SINGLE | EG2D_PLOT3D_BIG_ENDIAN | EG2D_PLOT3D_NO_MARKERS;

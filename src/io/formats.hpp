@@ -1,6 +1,6 @@
-// Grid files. Each format is a writer function in its own file and a line in
-// formats.cpp's table (format id -> writer); a format that accepts variant
-// flags (EG2D_PLOT3D_*, OR-ed into the id) lists them.
+// Grid files. Each format is a writer function in its own file, declared and
+// listed in formats.cpp's table (format id -> writer); a format that accepts
+// variant flags (EG2D_PLOT3D_*, OR-ed into the id) lists them.
 #pragma once
 #include "base/settings.hpp"
 #include "base/grid.hpp"
@@ -26,13 +26,5 @@ const FileFormat *find_format(int id);
 
 // Writes the grid to path in the format (id | flags); all-or-nothing.
 void write_grid(const Grid &grid, const Settings &settings, const char *path, int id);
-
-void write_plot3d(const WriteRequest &r, OutputFile &out);        // plot3d_write.cpp
-void write_plot3d_ascii(const WriteRequest &r, OutputFile &out);
-void write_vts(const WriteRequest &r, OutputFile &out);           // vts.cpp
-void write_cgns(const WriteRequest &r, OutputFile &out);          // cgns_loader.cpp
-void write_gmv(const WriteRequest &r, OutputFile &out);           // gmv.cpp
-void write_matlab(const WriteRequest &r, OutputFile &out);        // matlab.cpp
-void write_svg(const WriteRequest &r, OutputFile &out);           // svg.cpp
 
 }  // namespace eg2d
