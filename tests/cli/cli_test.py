@@ -459,6 +459,48 @@ class CommandLine(unittest.TestCase):
                                   "(checked before solving)\n")
             self.assertNotIn("converged", out)
 
+    def test_output_set_respects_what_is_at_the_paths(self):
+        # a symbolic link stays a link with its target rewritten; a file keeps
+        # its permission bits; a second hard link still sees the new bytes
+        with tempfile.TemporaryDirectory() as d:
+            out = os.path.join(d, "out")
+            os.mkdir(out)
+            target = os.path.join(d, "kept.xyz")
+            with open(target, "w") as f:
+                f.write("old")
+            os.symlink(target, os.path.join(out, "swan.xyz"))
+            with open(os.path.join(out, "swan.vts"), "w") as f:
+                f.write("old")
+            os.chmod(os.path.join(out, "swan.vts"), 0o640)
+            with open(os.path.join(out, "swan.svg"), "w") as f:
+                f.write("old")
+            os.link(os.path.join(out, "swan.svg"), os.path.join(d, "other-name.svg"))
+            code, stdout, stderr = run("demo", "-o", out, "--quiet", "--size", "9x9")
+            self.assertEqual(code, 0, stdout + stderr)
+            self.assertTrue(os.path.islink(os.path.join(out, "swan.xyz")))
+            self.assertEqual(os.readlink(os.path.join(out, "swan.xyz")), target)
+            # single-grid 2-D Plot3D: the (ni, nj) record and the x, y record, each between markers
+            self.assertEqual(os.path.getsize(target), (4 + 4 * 2 + 4) + (4 + 8 * 2 * 81 + 4))
+            self.assertEqual(os.stat(os.path.join(out, "swan.vts")).st_mode & 0o777, 0o640)
+            check_svg(self, os.path.join(d, "other-name.svg"))
+            self.assertEqual(os.stat(os.path.join(out, "swan.svg")).st_ino,
+                             os.stat(os.path.join(d, "other-name.svg")).st_ino)
+            self.assertEqual([n for n in os.listdir(out) if n.startswith(".eg2d-set")], [])
+
+    def test_output_path_that_is_a_directory_is_refused_before_solving(self):
+        with tempfile.TemporaryDirectory() as d:
+            os.mkdir(os.path.join(d, "swan.vts"))
+            with open(os.path.join(d, "swan.xyz"), "w") as f:
+                f.write("old")
+            code, out, err = run("demo", "-o", d, "--quiet", "--size", "9x9")
+            self.assertEqual(code, 8, out + err)
+            self.assertEqual(err, f"eg2d: {d}/swan.vts: a directory, not replaced by an output file "
+                                  "(checked before solving)\n")
+            self.assertNotIn("converged", out)
+            with open(os.path.join(d, "swan.xyz")) as f:
+                self.assertEqual(f.read(), "old")
+            self.assertTrue(os.path.isdir(os.path.join(d, "swan.vts")))
+
     def test_directory_as_case_file(self):
         with tempfile.TemporaryDirectory() as d:
             code, out, err = run("run", d, "-o", os.path.join(d, "out"))

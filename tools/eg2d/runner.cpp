@@ -69,6 +69,28 @@ void make_directory(const std::string &dir) {
     }
 }
 
+// Where an output path already is something other than a plain file, the
+// library writes it by its own rules (eg2d.h, eg2d_write): a symbolic link's
+// target is replaced and the link kept, a file with other hard links is
+// rewritten in place, a FIFO or character device is streamed into. A rename
+// from the stage would replace any of them.
+bool written_in_place(const struct stat &st) {
+    return S_ISLNK(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode) || (S_ISREG(st.st_mode) && st.st_nlink > 1);
+}
+
+// An output path that is a directory, a socket or a block device is never
+// replaced: refused before solving.
+void check_output_paths(const Case &c, const RunOptions &o) {
+    for (const auto &out : c.outputs) {
+        const std::string path = (o.out_dir.empty() ? std::string(".") : o.out_dir) + "/" + out.name;
+        struct stat st;
+        if (stat(path.c_str(), &st) != 0) continue;  // new (or a dangling link, whose target is made)
+        if (S_ISDIR(st.st_mode) || S_ISSOCK(st.st_mode) || S_ISBLK(st.st_mode))
+            throw Failure(EXIT_IO, path + ": " + (S_ISDIR(st.st_mode) ? "a directory" : S_ISSOCK(st.st_mode) ? "a socket" : "a block device") +
+                                       ", not replaced by an output file (checked before solving)");
+    }
+}
+
 // Everything that can be checked before the solve is: every requested
 // format's writer can write here (the CGNS plugin may be absent: a probe
 // grid written to /dev/null says so in microseconds, not after the solve),
@@ -99,6 +121,7 @@ void preflight(const Case &c, const RunOptions &o) {
     if (access(d.c_str(), W_OK) != 0)
         throw Failure(EXIT_IO, d + ": not writable, so " + o.out_dir + " cannot be written (checked before solving): " +
                                    std::strerror(errno));
+    check_output_paths(c, o);
 }
 
 void apply_controls(eg2d_grid *g, const Case &c) {
@@ -175,7 +198,11 @@ void print_quality(eg2d_grid *g, int topology) {
 // The output set is written as one unit: every file first into a staging
 // directory beside them, and only when all are written are they renamed
 // into place (a full disk or Ctrl-C part-way leaves the old set as it was,
-// never a new .xyz beside an old .vts).
+// never a new .xyz beside an old .vts). A file renamed over an existing
+// one gets that file's permission bits (and owner, where permitted).
+// Paths that are links, hard-linked files or devices are written by the
+// library first, each atomically where the path allows (written_in_place),
+// then the renames.
 void write_outputs(eg2d_grid *g, const Case &c, const RunOptions &o) {
     make_directory(o.out_dir);
     if (c.svg_quality >= 0) check(g, eg2d_set_parameter(g, EG2D_PARAM_SVG_QUALITY, c.svg_quality), c.svg_quality_at);
@@ -196,7 +223,23 @@ void write_outputs(eg2d_grid *g, const Case &c, const RunOptions &o) {
     if (Progress::interrupted()) throw Failure(EXIT_INTERRUPTED, "interrupted: no files written");
     for (const auto &out : c.outputs) {
         const std::string path = o.out_dir + "/" + out.name;
-        if (std::rename((stage + "/" + out.name).c_str(), path.c_str()) != 0)
+        struct stat st;
+        if (lstat(path.c_str(), &st) == 0 && written_in_place(st)) {
+            check(g, eg2d_write(g, path.c_str(), out.format), out.where);
+            std::printf("wrote %s\n", path.c_str());
+        }
+    }
+    for (const auto &out : c.outputs) {
+        const std::string path = o.out_dir + "/" + out.name, staged = stage + "/" + out.name;
+        struct stat st;
+        if (lstat(path.c_str(), &st) == 0) {
+            if (written_in_place(st)) continue;
+            if (S_ISREG(st.st_mode)) {
+                chmod(staged.c_str(), st.st_mode & 07777);
+                if (chown(staged.c_str(), st.st_uid, st.st_gid) != 0) {}  // kept where the process may
+            }
+        }
+        if (std::rename(staged.c_str(), path.c_str()) != 0)
             throw Failure(EXIT_IO, path + ": cannot move the written file into place: " + std::strerror(errno));
         std::printf("wrote %s\n", path.c_str());
     }
