@@ -187,7 +187,11 @@ EG2D_API int eg2d_set_boundary(eg2d_grid *grid, const double *x, const double *y
 /* Fills the interior from the boundary. Needs the whole boundary. The
  * boundary is the one set: a C-grid's wake cut and sliding sides, which a
  * solve moves, start again from the points given, so a handle re-initialised
- * after a solve runs exactly as a new one. */
+ * after a solve runs exactly as a new one. This call and eg2d_solve /
+ * eg2d_iterate refuse, with EG2D_ERR_BOUNDARY and nothing changed, a
+ * boundary that crosses itself (the message names the two sides' segments
+ * and the point; segments that only touch at a node are not taken for a
+ * crossing) and one that encloses no area. */
 EG2D_API int eg2d_initialize(eg2d_grid *grid, int method);
 
 /* A start grid of the user's own: whole ni*nj arrays, boundary included

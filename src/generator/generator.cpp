@@ -8,6 +8,7 @@
 #include "eg2d.h"
 #include "grid/initializers.hpp"
 #include "base/folds.hpp"
+#include "base/self_crossing.hpp"
 
 namespace eg2d {
 
@@ -73,6 +74,11 @@ void check_extent(const Grid &g) {
     if (!(L >= kMinExtent))
         fail(Failure::Boundary, format("the boundary's extent (bounding-box diagonal) is %g, below %g: the points "
                                        "(nearly) coincide, or the domain needs scaling", L, kMinExtent));
+    const BoundaryCrossing c = find_boundary_crossing(g);
+    if (c.found)
+        fail(Failure::Boundary, format("the boundary crosses itself: %s segment %d-%d crosses %s segment %d-%d near "
+                                       "(%.6g, %.6g)", side_name(c.side_a), c.a, c.a + 1, side_name(c.side_b), c.b,
+                                       c.b + 1, c.x, c.y));
     // A boundary that encloses nothing (every point on one line, a side
     // lying on the side opposite) has no grid: refused, not "solved".
     const double area = boundary_area(g);

@@ -487,10 +487,8 @@ static const bad_input rows[] = {
      "coincide, or the domain needs scaling",
      0},
     {"self-intersecting boundary (JMAX below JMIN)", "eg2d_solve(g)", S_FRESH, r_self_intersecting,
-     EG2D_ERR_FOLDED,
-     "eg2d_solve: the converged grid has * folded cells; the first is cell (*, *) (cells are numbered by their "
-     "lowest node)",
-     KEEPS_WORK},
+     EG2D_ERR_BOUNDARY, "eg2d_solve: the boundary crosses itself: JMIN segment 0-1 crosses JMAX segment 0-1 near (*, 0)",
+     0},
     {"Laplace on a concave domain (swan)", "eg2d_solve(g), EG2D_SYSTEM_LAPLACE", S_SWAN, r_folded,
      EG2D_ERR_FOLDED,
      "eg2d_solve: the converged grid has * folded cells; the first is cell (*, *) (cells are numbered by their "

@@ -5,6 +5,7 @@
  * grids smaller than 2 x 2, and name the path. After every refused call the
  * path has the same type, mode and content as before. */
 #include <errno.h>
+#include <math.h>
 #include <fcntl.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -205,6 +206,56 @@ static void test_flat_domains(void **state) {
     }
 }
 
+/* A boundary that crosses itself is refused before any solve, naming the two
+ * segments and the point, and the handle is unchanged: a bow tie (IMIN and
+ * IMAX as the two diagonals of the unit square) and an O-grid whose inner
+ * circle pokes through the outer one. */
+static void test_self_crossing_boundaries(void **state) {
+    enum { N = 8, M = 33 };
+    double xb[N], yb[N], xr[N], yr[N], xt[N], yt[N], xl[N], yl[N], xi[M], yi[M], xo[M], yo[M], x[N * N];
+    int k;
+    eg2d_grid *g;
+    (void)state;
+    for (k = 0; k < N; ++k) {
+        const double s = k / (N - 1.0);
+        xb[k] = s; yb[k] = 0;          /* bottom (0,0)-(1,0) */
+        xl[k] = s; yl[k] = s;          /* left (0,0)-(1,1) */
+        xr[k] = 1 - s; yr[k] = s;      /* right (1,0)-(0,1) */
+        xt[k] = 1 - s; yt[k] = 1;      /* top (1,1)-(0,1) */
+    }
+    assert_int_equal(eg2d_create(N, N, &g), EG2D_OK);
+    assert_int_equal(eg2d_set_side(g, EG2D_SIDE_JMIN, xb, yb), EG2D_OK);
+    assert_int_equal(eg2d_set_side(g, EG2D_SIDE_IMAX, xr, yr), EG2D_OK);
+    assert_int_equal(eg2d_set_side(g, EG2D_SIDE_JMAX, xt, yt), EG2D_OK);
+    assert_int_equal(eg2d_set_side(g, EG2D_SIDE_IMIN, xl, yl), EG2D_OK);
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_ERR_BOUNDARY);
+    /* the diagonals cross at (0.5, 0.5), between their nodes 3 and 4 of 0..7 */
+    assert_string_equal(eg2d_last_error(g), "eg2d_initialize: the boundary crosses itself: IMAX segment 3-4 crosses "
+                                            "IMIN segment 3-4 near (0.5, 0.5)");
+    assert_int_equal(eg2d_solve(g), EG2D_ERR_BOUNDARY);
+    assert_int_equal(eg2d_get_coordinates(g, x, x), EG2D_ERR_STATE); /* still no interior */
+    eg2d_destroy(g);
+
+    for (k = 0; k < M; ++k) { /* clockwise circles, the first point repeated at the end */
+        const double t = -2 * 3.14159265358979323846 * k / (M - 1.0);
+        xi[k] = cos(t); yi[k] = sin(t);
+        xo[k] = 1.5 + 2 * cos(t); yo[k] = 2 * sin(t);
+    }
+    assert_int_equal(eg2d_create(M, 9, &g), EG2D_OK);
+    assert_int_equal(eg2d_set_topology(g, EG2D_TOPO_O), EG2D_OK);
+    assert_int_equal(eg2d_set_side(g, EG2D_SIDE_JMIN, xi, yi), EG2D_OK);
+    assert_int_equal(eg2d_set_side(g, EG2D_SIDE_JMAX, xo, yo), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_ERR_BOUNDARY);
+    assert_non_null(strstr(eg2d_last_error(g), "eg2d_solve: the boundary crosses itself: "));
+    assert_non_null(strstr(eg2d_last_error(g), "JMIN segment"));
+    assert_non_null(strstr(eg2d_last_error(g), "JMAX segment"));
+    /* the outer circle moved out of the way: the same handle solves */
+    for (k = 0; k < M; ++k) xo[k] -= 1.5;
+    assert_int_equal(eg2d_set_side(g, EG2D_SIDE_JMAX, xo, yo), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    eg2d_destroy(g);
+}
+
 /* The read call that takes the caller's capacity refuses a block larger than it. */
 static void test_read_with_capacity(void **state) {
     eg2d_grid *g = swan9();
@@ -228,6 +279,7 @@ int main(void) {
         cmocka_unit_test(test_write_through_a_link),  cmocka_unit_test(test_write_keeps_mode_and_links),
         cmocka_unit_test(test_write_to_fifo_and_device), cmocka_unit_test(test_write_to_a_directory),
         cmocka_unit_test(test_read_bad_files),         cmocka_unit_test(test_flat_domains),
+        cmocka_unit_test(test_self_crossing_boundaries),
         cmocka_unit_test(test_read_with_capacity),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
