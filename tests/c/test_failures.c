@@ -287,6 +287,65 @@ static int r_plot3d_block(eg2d_grid *g) {
     return done_with_file(
         eg2d_read_plot3d(scratch_file("3 3\n0 1 2 0 1 2 0 1 2\n0 0 0 1 1 1 2 2 2\n"), 1, NULL, NULL, &ni, NULL, NULL, NULL));
 }
+/* A binary scratch file of n 32-bit words. */
+static const char *scratch_words(const int *words, size_t n) {
+    const char *dir = getenv("TMPDIR");
+    int fd;
+    snprintf(scratch, sizeof scratch, "%s/eg2d-bad-input-XXXXXX", dir && *dir ? dir : "/tmp");
+    fd = mkstemp(scratch);
+    if (fd < 0) return "/nonexistent";
+    if (write(fd, words, n * sizeof *words) != (ssize_t)(n * sizeof *words)) {
+        close(fd);
+        return "/nonexistent";
+    }
+    close(fd);
+    return scratch;
+}
+/* Headers that claim far more than the file holds: read under an
+ * address-space limit, so a reader that believed them would fail with
+ * EG2D_ERR_MEMORY (or be killed) instead of the format error. */
+static int r_plot3d_huge_header(eg2d_grid *g) {
+    /* 40000 x 40000 nodes (25.6 GB of coordinates), then a 16-byte record */
+    const int words[] = {8, 40000, 40000, 8, 16, 0, 0, 0, 0, 16};
+    int ni;
+    (void)g;
+    return done_with_file(eg2d_read_plot3d(scratch_words(words, 10), 0, NULL, NULL, &ni, NULL, NULL, NULL));
+}
+static int r_plot3d_huge_block_count(eg2d_grid *g) {
+    /* a multi-grid file claiming 2^31-1 grids */
+    const int words[] = {4, 2147483647, 4, 16, 3, 3, 3, 3, 16};
+    int ni;
+    (void)g;
+    return done_with_file(eg2d_read_plot3d(scratch_words(words, 9), 0, NULL, NULL, &ni, NULL, NULL, NULL));
+}
+static int r_plot3d_ascii_huge(eg2d_grid *g) {
+    int ni;
+    (void)g;
+    return done_with_file(eg2d_read_plot3d(scratch_file("40000 40000\n0 1 2 3\n"), 0, NULL, NULL, &ni, NULL, NULL, NULL));
+}
+/* A valid 1000 x 1000 binary Plot3D file (16 MB of coordinates), written
+ * in small pieces, read under the 64 MB margin: the reader needs less than
+ * four times the data (it keeps one copy, checked before it allocates). */
+static int r_plot3d_big_valid(eg2d_grid *g) {
+    enum { NI = 1000, NJ = 1000 };
+    static double chunk[NI];
+    const char *dir = getenv("TMPDIR");
+    const int head[] = {8, NI, NJ, 8}, mark = 2 * NI * NJ * 8;
+    int fd, k, ni = 0, nj = 0, rc;
+    FILE *f;
+    (void)g;
+    snprintf(scratch, sizeof scratch, "%s/eg2d-bad-input-XXXXXX", dir && *dir ? dir : "/tmp");
+    fd = mkstemp(scratch);
+    if (fd < 0 || !(f = fdopen(fd, "wb"))) return -1;
+    for (k = 0; k < NI; ++k) chunk[k] = k;
+    fwrite(head, sizeof head, 1, f);
+    fwrite(&mark, sizeof mark, 1, f);
+    for (k = 0; k < 2 * NJ; ++k) fwrite(chunk, sizeof chunk, 1, f);
+    fwrite(&mark, sizeof mark, 1, f);
+    fclose(f);
+    rc = done_with_file(eg2d_read_plot3d(scratch, 0, NULL, NULL, &ni, &nj, NULL, NULL));
+    return rc == EG2D_OK && (ni != NI || nj != NJ) ? -1 : rc;
+}
 static int r_points_bad_line(eg2d_grid *g) {
     int n;
     (void)g;
@@ -443,6 +502,20 @@ static const bad_input rows[] = {
      r_plot3d_truncated, EG2D_ERR_IO,
      "eg2d_read_plot3d: */eg2d-bad-input-*: not a Plot3D grid file: its 5 numbers fit no 2D/3D, single-/multi-grid "
      "layout (truncated?)", 0},
+    {"binary Plot3D header claiming 40000 x 40000 nodes, 40 bytes in all", "eg2d_read_plot3d(path, 0, ...)", S_NONE,
+     r_plot3d_huge_header, EG2D_ERR_IO,
+     "eg2d_read_plot3d: */eg2d-bad-input-*: not a Plot3D grid file: it has NUL bytes (binary) but no Plot3D binary "
+     "layout fits its size", MEMORY_LIMIT},
+    {"binary Plot3D header claiming 2147483647 grids", "eg2d_read_plot3d(path, 0, ...)", S_NONE,
+     r_plot3d_huge_block_count, EG2D_ERR_IO,
+     "eg2d_read_plot3d: */eg2d-bad-input-*: not a Plot3D grid file: it has NUL bytes (binary) but no Plot3D binary "
+     "layout fits its size", MEMORY_LIMIT},
+    {"a valid 1000 x 1000 binary Plot3D file, 16 MB of coordinates", "eg2d_read_plot3d(path, 0, ...)", S_NONE,
+     r_plot3d_big_valid, EG2D_OK, "", MEMORY_LIMIT},
+    {"text Plot3D header claiming 40000 x 40000 nodes", "eg2d_read_plot3d(path, 0, ...), \"40000 40000\\n0 1 2 3\\n\"", S_NONE,
+     r_plot3d_ascii_huge, EG2D_ERR_IO,
+     "eg2d_read_plot3d: */eg2d-bad-input-*: not a Plot3D grid file: its 6 numbers fit no 2D/3D, single-/multi-grid "
+     "layout (truncated?)", MEMORY_LIMIT},
     {"Plot3D block the file does not have", "eg2d_read_plot3d(path, 1, ...), one block", S_NONE, r_plot3d_block,
      EG2D_ERR_ARGUMENT, "eg2d_read_plot3d: block = 1: */eg2d-bad-input-* has 1 grid(s)", 0},
     {"point file line that is not two numbers", "eg2d_read_points(path, 0, &n, NULL, NULL), line 3 \"abc 2\"",
