@@ -40,6 +40,34 @@ bool plausible(const Plot3dBlock &b) {
     return b.ni >= 2 && b.nj >= 2 && b.nk >= 1 && nodes(b) <= (std::size_t{1} << 40);
 }
 
+// A coordinate no grid has, in any unit: what a file of another layout (or a
+// cut one) gives when its bytes are read as reals of the wrong size or at the
+// wrong offset (an integer read as a single-precision real is subnormal).
+bool implausible(double v, std::size_t real) {
+    const double a = std::fabs(v);
+    if (real == 4) return a > 1e30 || (a != 0.0 && a < 1.1754943508222875e-38);  // FLT_MIN: subnormal
+    return a > 1e100 || (a != 0.0 && a < 1e-100);
+}
+
+// Whether the file starts with a Fortran record of a Plot3D header (the grid
+// count, or 2 or 3 dimensions: 4, 8 or 12 bytes between equal markers), in
+// either byte order. Such a file has record markers: it is not read as a
+// marker-less file too, which a cut one could otherwise pass as (a 6 x 5 file
+// cut to 392 bytes is a valid marker-less 8 x 6 single-precision grid).
+bool starts_with_record(const std::vector<unsigned char> &b) {
+    for (bool big : {false, true}) {
+        auto word = [&](std::size_t at) {
+            std::uint32_t w = 0;
+            for (int k = 0; k < 4; ++k) w |= static_cast<std::uint32_t>(b[at + (big ? 3 - k : k)]) << (8 * k);
+            return w;
+        };
+        if (b.size() < 8) return false;
+        const std::uint32_t n = word(0);
+        if ((n == 4 || n == 8 || n == 12) && b.size() >= 8 + n && word(4 + n) == n) return true;
+    }
+    return false;
+}
+
 // The largest file read: far beyond any 2-D grid (1e9 nodes in doubles),
 // short of what a device or a runaway file would take.
 constexpr long long kMaxFileBytes = 16LL << 30;
@@ -144,6 +172,7 @@ bool try_binary(const std::vector<unsigned char> &bytes, bool big_endian, bool m
                 if (!std::isfinite(v))
                     fail(Failure::Io, format("a non-finite coordinate (%s) at byte offset %zu", std::isnan(v) ? "NaN" : "Inf",
                                              at + k * real));
+                if (implausible(v, real)) return false;  // not this layout
             }
             c.skip(rec - 2 * n * real);
         } else {
@@ -241,10 +270,11 @@ Plot3dFile read_plot3d(const std::string &path, int block) {
     Plot3dFile file;
     bool found = false;
     try {
+        const bool has_markers = starts_with_record(bytes);
         for (bool markers : {true, false})
             for (bool big : {false, true})
                 for (Layout l : kLayouts)
-                    if (!found) found = try_binary(bytes, big, markers, l, block, file);
+                    if (!found && (markers || !has_markers)) found = try_binary(bytes, big, markers, l, block, file);
     } catch (const Error &e) {  // a layout that fits but holds a bad value
         fail(e.failure(), format("%s: %s", path.c_str(), e.what()));
     }

@@ -256,6 +256,67 @@ static void test_self_crossing_boundaries(void **state) {
     eg2d_destroy(g);
 }
 
+/* Every cut of a written 6 x 5 grid, in every binary layout eg2d writes (2-D
+ * and 3-D, single- and multi-grid, double and single precision, little and
+ * big endian, with and without record markers): with record markers every
+ * cut is refused. A marker-less file has no redundancy to check: a cut that
+ * leaves exactly the bytes of the same grid at the other precision (or with
+ * its nk = 1 read as a coordinate) cannot be told from such a file, but no
+ * cut reads as a grid of another size (before: 1 x n grids). */
+static void test_every_cut_is_refused(void **state) {
+    const int variants[] = {0, EG2D_PLOT3D_3D, EG2D_PLOT3D_MULTI, EG2D_PLOT3D_SINGLE, EG2D_PLOT3D_BIG_ENDIAN,
+                            EG2D_PLOT3D_NO_MARKERS, EG2D_PLOT3D_NO_MARKERS | EG2D_PLOT3D_SINGLE,
+                            EG2D_PLOT3D_NO_MARKERS | EG2D_PLOT3D_MULTI | EG2D_PLOT3D_3D};
+    char path[] = "/tmp/eg2d-cut-XXXXXX", cut[64];
+    unsigned char *bytes;
+    eg2d_grid *g;
+    size_t v;
+    long size, n, accepted = 0, tried = 0;
+    int fd, fmt, nb, ri, rj;
+    FILE *f;
+    (void)state;
+    assert_int_equal(eg2d_create(6, 5, &g), EG2D_OK);
+    assert_int_equal(domain_set(g, "swan"), EG2D_OK);
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
+    fd = mkstemp(path);
+    assert_true(fd >= 0);
+    close(fd);
+    snprintf(cut, sizeof cut, "%s.cut", path);
+    for (v = 0; v < sizeof variants / sizeof variants[0]; ++v) {
+        assert_int_equal(eg2d_write(g, path, EG2D_FORMAT_PLOT3D | variants[v]), EG2D_OK);
+        size = file_size(path);
+        assert_true(size > 0);
+        bytes = malloc(size > 0 ? (size_t)size : 1);
+        assert_non_null(bytes);
+        f = fopen(path, "rb");
+        assert_int_equal(fread(bytes, 1, (size_t)size, f), (size_t)size);
+        fclose(f);
+        assert_int_equal(eg2d_read_plot3d(path, 0, NULL, NULL, NULL, NULL, NULL, NULL), EG2D_OK);
+        for (n = 1; n < size; ++n) {
+            f = fopen(cut, "wb");
+            assert_int_equal(fwrite(bytes, 1, (size_t)n, f), (size_t)n);
+            fclose(f);
+            ++tried;
+            if (eg2d_read_plot3d(cut, 0, &fmt, &nb, &ri, &rj, NULL, NULL) != EG2D_ERR_IO) {
+                print_message("flags 0x%x cut to %ld of %ld bytes is read as format 0x%x, %d grid(s), %d x %d\n",
+                              variants[v], n, size, fmt, nb, ri, rj);
+                if (variants[v] & EG2D_PLOT3D_NO_MARKERS) {
+                    assert_true(ri == 6 && rj == 5 && nb == 1);
+                    assert_true(fmt & EG2D_PLOT3D_NO_MARKERS);
+                } else {
+                    ++accepted;
+                }
+            }
+        }
+        free(bytes);
+    }
+    print_message("%ld cuts tried, %ld of the record-marker files read\n", tried, accepted);
+    assert_int_equal(accepted, 0);
+    unlink(path);
+    unlink(cut);
+    eg2d_destroy(g);
+}
+
 /* The read call that takes the caller's capacity refuses a block larger than it. */
 static void test_read_with_capacity(void **state) {
     eg2d_grid *g = swan9();
@@ -280,6 +341,7 @@ int main(void) {
         cmocka_unit_test(test_write_to_fifo_and_device), cmocka_unit_test(test_write_to_a_directory),
         cmocka_unit_test(test_read_bad_files),         cmocka_unit_test(test_flat_domains),
         cmocka_unit_test(test_self_crossing_boundaries),
+        cmocka_unit_test(test_every_cut_is_refused),
         cmocka_unit_test(test_read_with_capacity),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
