@@ -6,7 +6,9 @@ progress and Ctrl-C. Run by ctest with /usr/bin/python3:
 """
 import os
 import re
+import resource
 import signal
+import stat
 import struct
 import subprocess
 import sys
@@ -500,6 +502,51 @@ class CommandLine(unittest.TestCase):
             with open(os.path.join(d, "swan.xyz")) as f:
                 self.assertEqual(f.read(), "old")
             self.assertTrue(os.path.isdir(os.path.join(d, "swan.vts")))
+
+    def test_failed_write_leaves_the_old_set(self):
+        # swan.vts is a FIFO nobody reads: its write fails, and the old
+        # .xyz and .svg beside it are left as they were (the set is one unit)
+        with tempfile.TemporaryDirectory() as d:
+            for name in ("swan.xyz", "swan.svg"):
+                with open(os.path.join(d, name), "w") as f:
+                    f.write("old")
+            os.mkfifo(os.path.join(d, "swan.vts"))
+            code, out, err = run("demo", "-o", d, "--quiet", "--size", "9x9")
+            self.assertEqual(code, 8, out + err)
+            self.assertIn("swan.vts", err)
+            for name in ("swan.xyz", "swan.svg"):
+                with open(os.path.join(d, name)) as f:
+                    self.assertEqual(f.read(), "old")
+            self.assertTrue(stat.S_ISFIFO(os.lstat(os.path.join(d, "swan.vts")).st_mode))
+            self.assertEqual(sorted(os.listdir(d)), ["swan.svg", "swan.vts", "swan.xyz"])
+
+    def test_absent_plugin_refused_before_solving(self):
+        with tempfile.TemporaryDirectory() as d:
+            case = os.path.join(d, "case.toml")
+            with open(os.path.join(EXAMPLES, "swan.toml")) as f:
+                text = f.read().replace('formats = ["plot3d", "vts", "svg"]', 'formats = ["plot3d", "cgns"]')
+            with open(case, "w") as f:
+                f.write(text)
+            p = subprocess.run([TOOL, "run", case, "-o", os.path.join(d, "out"), "--quiet"], capture_output=True,
+                               text=True, timeout=600, env={**os.environ, "EG2D_PLUGIN_DIR": "/nonexistent"})
+            self.assertEqual(p.returncode, 9, p.stdout + p.stderr)
+            self.assertIn("(checked before solving; no files written)", p.stderr)
+            self.assertNotIn("converged", p.stdout)
+            self.assertFalse(os.path.exists(os.path.join(d, "out")))
+
+    def test_out_of_memory_exit_10(self):
+        with open(TOOL, "rb") as f:
+            binary = f.read()
+            if b"__asan_init" in binary or b"__tsan_init" in binary:
+                self.skipTest("a sanitizer's allocator aborts instead of failing an allocation")
+        limit = lambda: resource.setrlimit(resource.RLIMIT_AS, (2 << 30, resource.RLIM_INFINITY))
+        with tempfile.TemporaryDirectory() as d:
+            p = subprocess.run([TOOL, "demo", "--size", "46340x46340", "-o", d, "--quiet"], capture_output=True,
+                               text=True, timeout=600, preexec_fn=limit)
+            self.assertEqual(p.returncode, 10, p.stdout + p.stderr)
+            self.assertEqual(p.stderr, "eg2d: out of memory: the grid is too large for this machine "
+                                       "(eg2d_create: cannot allocate 2147395600 nodes)\n")
+            self.assertEqual(os.listdir(d), [])
 
     def test_directory_as_case_file(self):
         with tempfile.TemporaryDirectory() as d:
