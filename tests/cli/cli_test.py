@@ -37,6 +37,18 @@ def features():
     return table
 
 
+def case_from_example(directory, example, *replacements):
+    """examples/EXAMPLE.toml with each (old, new) text replaced, written to DIRECTORY/case.toml; its path."""
+    with open(os.path.join(EXAMPLES, example + ".toml")) as f:
+        text = f.read()
+    for old, new in replacements:
+        text = text.replace(old, new)
+    path = os.path.join(directory, "case.toml")
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
 def check_svg(test, path):
     """The picture is well-formed XML with an <svg> root holding drawing elements."""
     root = ET.parse(path).getroot()
@@ -410,12 +422,8 @@ class CommandLine(unittest.TestCase):
 
     def test_not_converged_writes_nothing(self):
         with tempfile.TemporaryDirectory() as d:
-            case = os.path.join(EXAMPLES, "swan.toml")
-            path = os.path.join(d, "case.toml")
-            with open(case) as f:
-                text = f.read().replace("max_iterations = 20000", "max_iterations = 5").replace("# method: the library's default, FAS multigrid", 'method = "psor"')
-            with open(path, "w") as f:
-                f.write(text)
+            path = case_from_example(d, "swan", ("max_iterations = 20000", "max_iterations = 5"),
+                                     ("# method: the library's default, FAS multigrid", 'method = "psor"'))
             code, out, err = run("run", path, "-o", os.path.join(d, "out"), "--size", "17x17")
             self.assertEqual(code, 5, out + err)
             self.assertIn("(no files written)", err)
@@ -425,11 +433,7 @@ class CommandLine(unittest.TestCase):
     def test_folded_grid_exit_7(self):
         # Laplace (Amsden-Hirt) folds the antenna at its reflex corners; Winslow does not
         with tempfile.TemporaryDirectory() as d:
-            path = os.path.join(d, "case.toml")
-            with open(os.path.join(EXAMPLES, "antenna.toml")) as f:
-                text = f.read().replace('system = "winslow"', 'system = "laplace"')
-            with open(path, "w") as f:
-                f.write(text)
+            path = case_from_example(d, "antenna", ('system = "winslow"', 'system = "laplace"'))
             code, out, err = run("run", path, "-o", os.path.join(d, "out"), "--quiet")
             self.assertEqual(code, 7, out + err)
             self.assertRegex(err, r"^eg2d: .*: eg2d_solve: the converged grid has \d+ folded cells; .*\(no files written\)\n$")
@@ -439,12 +443,8 @@ class CommandLine(unittest.TestCase):
     def test_diverged_exit_6(self):
         # point SOR over-relaxed far beyond Winslow's stability
         with tempfile.TemporaryDirectory() as d:
-            path = os.path.join(d, "case.toml")
-            with open(os.path.join(EXAMPLES, "swan.toml")) as f:
-                text = f.read().replace("# method: the library's default, FAS multigrid",
-                                        'method = "psor"\nrelaxation = 1.99')
-            with open(path, "w") as f:
-                f.write(text)
+            path = case_from_example(d, "swan", ("# method: the library's default, FAS multigrid",
+                                                 'method = "psor"\nrelaxation = 1.99'))
             code, out, err = run("run", path, "-o", os.path.join(d, "out"), "--quiet", "--size", "17x17")
             self.assertEqual(code, 6, out + err)
             self.assertRegex(err, r"^eg2d: .*: eg2d_solve: psor diverged at iteration \d+: .*\(no files written\)\n$")
@@ -522,11 +522,7 @@ class CommandLine(unittest.TestCase):
 
     def test_absent_plugin_refused_before_solving(self):
         with tempfile.TemporaryDirectory() as d:
-            case = os.path.join(d, "case.toml")
-            with open(os.path.join(EXAMPLES, "swan.toml")) as f:
-                text = f.read().replace('formats = ["plot3d", "vts", "svg"]', 'formats = ["plot3d", "cgns"]')
-            with open(case, "w") as f:
-                f.write(text)
+            case = case_from_example(d, "swan", ('formats = ["plot3d", "vts", "svg"]', 'formats = ["plot3d", "cgns"]'))
             p = subprocess.run([TOOL, "run", case, "-o", os.path.join(d, "out"), "--quiet"], capture_output=True,
                                text=True, timeout=600, env={**os.environ, "EG2D_PLUGIN_DIR": "/nonexistent"})
             self.assertEqual(p.returncode, 9, p.stdout + p.stderr)
