@@ -323,11 +323,12 @@ static int r_plot3d_ascii_huge(eg2d_grid *g) {
     (void)g;
     return done_with_file(eg2d_read_plot3d(scratch_file("40000 40000\n0 1 2 3\n"), 0, NULL, NULL, &ni, NULL, NULL, NULL));
 }
-/* A valid 1000 x 1000 binary Plot3D file (16 MB of coordinates), written
- * in small pieces, read under the 64 MB margin: the reader needs less than
- * four times the data (it keeps one copy, checked before it allocates). */
+/* A valid 1350 x 1350 binary Plot3D file (29.2 MB of coordinates), written
+ * in small pieces, read under the 64 MB margin: the reader holds at most
+ * 2.2 times the data (the file's bytes and the block's coordinates; 1500 x
+ * 1500, 36 MB, does not fit). */
 static int r_plot3d_big_valid(eg2d_grid *g) {
-    enum { NI = 1000, NJ = 1000 };
+    enum { NI = 1350, NJ = 1350 };
     static double chunk[NI];
     const char *dir = getenv("TMPDIR");
     const int head[] = {8, NI, NJ, 8}, mark = 2 * NI * NJ * 8;
@@ -510,7 +511,7 @@ static const bad_input rows[] = {
      r_plot3d_huge_block_count, EG2D_ERR_IO,
      "eg2d_read_plot3d: */eg2d-bad-input-*: not a Plot3D grid file: it has NUL bytes (binary) but no Plot3D binary "
      "layout fits its size", MEMORY_LIMIT},
-    {"a valid 1000 x 1000 binary Plot3D file, 16 MB of coordinates", "eg2d_read_plot3d(path, 0, ...)", S_NONE,
+    {"a valid 1350 x 1350 binary Plot3D file, 29.2 MB of coordinates (at most 2.2x in memory)", "eg2d_read_plot3d(path, 0, ...)", S_NONE,
      r_plot3d_big_valid, EG2D_OK, "", MEMORY_LIMIT},
     {"text Plot3D header claiming 40000 x 40000 nodes", "eg2d_read_plot3d(path, 0, ...), \"40000 40000\\n0 1 2 3\\n\"", S_NONE,
      r_plot3d_ascii_huge, EG2D_ERR_IO,
