@@ -817,8 +817,9 @@ EG2D_API int eg2d_set_weight(eg2d_grid *grid, const double *w);
  * its normals is its height, so the outer side lies about D from JMIN (the
  * measured figures: bench/RESULTS.md, docs/hyperbolic.md). Sharp convex edges (a trailing edge) march along the bisector
  * of their angle; dissipation, scaled by Chan & Steger's sensors, and area
- * smoothing keep concave corners and the far field from folding. The march
- * does not check for folds: read EG2D_QUALITY_FOLDED_CELLS. Errors: EG2D_ERR_STATE if JMIN is
+ * smoothing keep concave corners and the far field from folding. Errors:
+ * EG2D_ERR_FOLDED if a layer folds (the message names the layer and its
+ * first folded cell; the handle keeps what it had); EG2D_ERR_STATE if JMIN is
  * not set; EG2D_ERR_ARGUMENT if h_1 cannot reach D with growth <= G in
  * nj-1 layers (the message gives the reachable distance); EG2D_ERR_DIVERGED
  * if a layer system is singular (JMIN with repeated points). The parameters

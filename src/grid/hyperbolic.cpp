@@ -13,7 +13,9 @@
 #include <vector>
 
 #include "base/block_tridiagonal.hpp"
+#include "base/cell.hpp"
 #include "base/error.hpp"
+#include "base/folds.hpp"
 #include "grid/march_schedule.hpp"
 
 namespace eg2d {
@@ -274,6 +276,25 @@ struct March {
     }
 };
 
+// +1 if the cells between rows j and j+1 have positive area in total.
+int layer_orientation(const Grid &g, int j) {
+    double total = 0.0;
+    for (int i = 0; i < g.ni() - 1; ++i) total += Cell::at(g, i, j).area();
+    return total < 0.0 ? -1 : 1;
+}
+
+struct FoldedRow {
+    int count = 0, first = -1;
+};
+
+// The folded cells between rows j and j+1 (base/folds.hpp's test).
+FoldedRow folded_cells(const Grid &g, int j, int orientation) {
+    FoldedRow f;
+    for (int i = 0; i < g.ni() - 1; ++i)
+        if (is_folded(Cell::at(g, i, j), orientation) && f.count++ == 0) f.first = i;
+    return f;
+}
+
 }  // namespace
 
 void hyperbolic_march(Grid &g, const Settings &s) {
@@ -302,6 +323,7 @@ void hyperbolic_march(Grid &g, const Settings &s) {
     // Sl = sqrt((l-1)/(lmax-1)) up to 3/4 of the layers, constant beyond.
     const int transition = std::max(2, (3 * layers) / 4);
     bool first = true;
+    int orientation = 1;
     for (int l = 1; l <= layers; ++l) {
         const double Sl = layers > 1 ? std::sqrt(static_cast<double>(std::min(l, transition) - 1) / (layers - 1)) : 0;
         const double ratio = l > 1 ? h[l - 1] / h[l - 2] : (layers > 1 ? h[1] / h[0] : 1.0);
@@ -328,6 +350,15 @@ void hyperbolic_march(Grid &g, const Settings &s) {
             g.x[row + ni - 1] = m.r[0].x;
             g.y[row + ni - 1] = m.r[0].y;
         }
+        // A layer that folds ends the march: the grid beyond is not usable
+        // (NACA 0012 385x97 to 100 chords folded 82 cells at layer 84 and
+        // was handed back as a grid). The first layer's turn is the sign.
+        if (l == 1) orientation = layer_orientation(g, 0);
+        const FoldedRow folded = folded_cells(g, l - 1, orientation);
+        if (folded.count > 0)
+            fail(Failure::Folded,
+                 format("march: layer %d folds %d cell(s), the first at i = %d: lower EG2D_PARAM_MARCH_GROWTH or "
+                        "the distance, raise nj, or raise EG2D_PARAM_MARCH_SMOOTHING", l, folded.count, folded.first));
     }
 }
 

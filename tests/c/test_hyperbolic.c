@@ -369,6 +369,18 @@ static void test_errors(void **state) {
     assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MARCH_END_IMIN, 4), EG2D_ERR_ARGUMENT);
     assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MARCH_DISTANCE, -1), EG2D_ERR_ARGUMENT);
     eg2d_destroy(g);
+
+    /* a march that folds is an error, not a grid: NACA 0012 385x97 to 100
+     * chords from 1e-5 folds its layer 84 (before, 82 folded cells came back
+     * as EG2D_OK) */
+    g = naca_o(385, 97);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MARCH_DISTANCE, 99.5), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MARCH_FIRST_HEIGHT, 1e-5), EG2D_OK);
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_HYPERBOLIC), EG2D_ERR_FOLDED);
+    assert_non_null(strstr(eg2d_last_error(g), "eg2d_initialize: march: layer "));
+    assert_non_null(strstr(eg2d_last_error(g), " folds "));
+    assert_int_equal(eg2d_get_residual(g, &v), EG2D_ERR_STATE); /* no grid handed back */
+    eg2d_destroy(g);
 }
 
 int main(void) {
