@@ -49,4 +49,8 @@ void bench_seed004(void);
 /* The hyperbolic march on NACA 0012 (--march, march.c). */
 void bench_march(void);
 
+/* Wall-resolved O-grids: the wall control, the hybrid layer and the march
+ * side by side (--wall, wall.c). */
+void bench_walls(void);
+
 #endif

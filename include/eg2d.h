@@ -301,10 +301,12 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
                                             control's updates between iterations */
 #define EG2D_PARAM_WALL_GROWTH      202  /* [1, 1.5], default 1.15: cell-to-cell growth of the
                                             marched wall layer (EG2D_PARAM_WALL_LAYER) */
-#define EG2D_PARAM_WALL_LAYER       203  /* 0 (default) or 1: with 1, EG2D_ORTHO_WALL on a C-grid,
-                                            or an O-grid round a body without sharp corners,
-                                            whose only wall is JMIN with a height marches a
-                                            wall layer and holds it (see EG2D_ORTHO_WALL);
+#define EG2D_PARAM_WALL_LAYER       203  /* 0 (default), 1 or 2: with 1, EG2D_ORTHO_WALL on a
+                                            C-grid, or an O-grid round a body without sharp
+                                            corners, whose only wall is JMIN with a height
+                                            marches a wall layer and holds it; with 2, an
+                                            O-grid (sharp corners too) gets the hybrid layer
+                                            of the hyperbolic march (see EG2D_ORTHO_WALL);
                                             experimental: not yet robust on graded wakes */
 #define EG2D_PARAM_SVG_QUALITY      300  /* output 300-399. EG2D_FORMAT_SVG colours cells by this
                                             EG2D_QUALITY_* metric (one with per-cell values);
@@ -716,6 +718,18 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   JMAX). The first cells have the height exactly and leave the wall at 90
  *   degrees; the run reports the layer (eg2d_get_run_event). Experimental:
  *   see bench/RESULTS.md for where it does not yet converge.
+ * WALL with EG2D_PARAM_WALL_LAYER = 2, on an O-grid whose only wall is JMIN
+ *   with a height h (a sharp trailing edge included): the hybrid layer
+ *   (Steger & Sorenson 1980). At initialisation the hyperbolic march
+ *   (EG2D_INIT_HYPERBOLIC, first cell h, the ratio that reaches the least
+ *   distance of JMAX from JMIN in nj-1 layers) makes a grid; its rows
+ *   1..2(nj-1)/3 are kept and held, and the rows above are solved with
+ *   the controls Phi, Psi that make the marched grid an exact solution
+ *   (frozen for the run), which bend it onto the JMAX set. The first cells
+ *   are the march's (h, orthogonal to the wall, growing by the schedule's
+ *   ratio). A march that cannot be made (EG2D_ERR_FOLDED or
+ *   EG2D_ERR_ARGUMENT of EG2D_INIT_HYPERBOLIC) leaves the control below,
+ *   and the run says so (eg2d_get_run_event). On a C-grid 2 acts as 1.
  * WALL otherwise: a Sorenson (GRAPE)-type control, updated between iterations, that
  *   makes the grid lines leave each wall side at 90 degrees with the
  *   first-cell height of eg2d_set_wall_spacing; its influence decays into the

@@ -33,10 +33,13 @@
 // 000's channels, where Middlecoff-Thomas degenerates) are no special case.
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "base/folds.hpp"
+#include "base/error.hpp"
 #include "controls/anderson.hpp"
 #include "controls/controls.hpp"
+#include "grid/hybrid_layer.hpp"
 #include "operator/operator.hpp"
 
 namespace eg2d {
@@ -90,6 +93,14 @@ public:
     bool dynamic() const override { return layer_growth_ == 0.0; }
 
     void add_to(const Grid &g, ControlFields &fields) const override {
+        if (!hybrid_.phi.empty()) {  // frozen: the march's own controls
+            std::vector<double> &phi = fields.at(Term::AXi, g.size()), &psi = fields.at(Term::CEta, g.size());
+            for (std::size_t k = 0; k < phi.size(); ++k) {
+                phi[k] += hybrid_.phi[k];
+                psi[k] += hybrid_.psi[k];
+            }
+            return;
+        }
         if (layer_growth_ > 0.0) return add_wall_layer_fields(g, layer_growth_, fields);
         for (int side = 0; side < 4; ++side) add_side(g, side, fields);
     }
@@ -98,13 +109,28 @@ public:
     // layer, held (grid/wall_layer.hpp). Anything else: the Sorenson-type
     // updates below.
     WallLayerShape shape_start(Grid &g, const Settings &settings, bool fill_above) override {
+        hybrid_ = HybridLayer{};
+        const bool jmin_only = height_[0] > 0.0 && height_[1] < 0.0 && height_[2] < 0.0 && height_[3] < 0.0;
+        std::string note;
+        if (settings.wall_layer == 2.0 && jmin_only && g.topology() == Topology::O) {
+            try {
+                hybrid_ = shape_hybrid_layer(g, settings, height_[0], fill_above);
+                layer_growth_ = hybrid_.shape.growth;
+                return hybrid_.shape;
+            } catch (const Error &e) {  // the march cannot make this grid: the updates below instead
+                note = std::string("wall layer (hybrid) not made: ") + e.what() +
+                       "; the wall control's updates instead";
+            }
+        }
         const bool layer = settings.wall_layer != 0.0 &&
                            (g.topology() == Topology::C || (g.topology() == Topology::O && !wall_has_sharp_corner(g))) &&
-                           height_[0] > 0.0 && height_[1] < 0.0 && height_[2] < 0.0 && height_[3] < 0.0;
-        if (!layer) {
+                           jmin_only;
+        if (!layer || !note.empty()) {
             layer_growth_ = 0.0;
             if (g.held_rows() > 0) g.hold_rows(0);
-            return {};
+            WallLayerShape none;
+            none.note = note;
+            return none;
         }
         const WallLayerShape shape = shape_wall_layer(g, height_[0], settings.wall_growth, fill_above);
         layer_growth_ = shape.rows > 0 ? shape.growth : 0.0;
@@ -396,6 +422,7 @@ private:
 
     std::array<double, 4> height_;
     double layer_growth_ = 0.0;  // > 0: a marched layer is held, and this is its growth
+    HybridLayer hybrid_;         // the hybrid layer's frozen controls, if it is one
     // The state: tangential (phi) and normal (psi) coefficients at depth 1,
     // per along-wall index, and the decay they were made with.
     std::array<std::vector<double>, 4> phi_, psi_;

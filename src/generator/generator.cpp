@@ -248,9 +248,14 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
     if (controls_.has_dynamic() && run_settings.relaxation == 0.0) run_settings.relaxation = 1.0;
     report_ = RunReport{};
     report_.solver = solver_info_->id;
-    if (layer_.rows > 0)
+    if (layer_.rows > 0 && layer_.hybrid)
+        report_.note(format("wall layer (hybrid): %d rows of the hyperbolic march held (growth %.3g at their top); "
+                            "the solver works on the %d rows above with the march's controls",
+                            layer_.rows, layer_.growth, grid_.nj() - 2 - layer_.rows));
+    else if (layer_.rows > 0)
         report_.note(format("wall layer: %d rows marched from the wall and held (growth %g); the solver works on "
                             "the %d rows above", layer_.rows, layer_.growth, grid_.nj() - 2 - layer_.rows));
+    if (!layer_.note.empty()) report_.note(layer_.note);
     if (layer_.fold_row > 0)
         report_.note(format("wall layer: row %d would fold a cell, so the layer has %d of the %d rows asked",
                             layer_.fold_row, layer_.rows, layer_.asked));

@@ -7,6 +7,7 @@
 // is the near-wall part of the hybrid grids of Steger & Sorenson (1980) and
 // Pointwise: marched where the wall decides the grid, elliptic beyond.
 #pragma once
+#include <string>
 #include <vector>
 
 #include "base/grid.hpp"
@@ -18,6 +19,8 @@ struct WallLayerShape {
     int asked = 0;      // rows asked for; fewer where a cell would have folded
     int fold_row = -1;  // the row that would have folded, if any
     double growth = 0;  // the growth used (larger than asked where a corner needs it)
+    bool hybrid = false;  // rows of the hyperbolic march (hybrid_layer.hpp)
+    std::string note;     // why no layer was made, when one was asked for
 };
 
 // The layer rows for an nj-row grid: a third of the rows, at least 1.

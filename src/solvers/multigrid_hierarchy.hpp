@@ -50,6 +50,10 @@ std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, in
 // fine grid, is -2.1 three levels down, and multigrid stalled there (annulus
 // 65x33 with a 1e-3 wall, far field 10: residual stuck at 6e-4).
 constexpr double kMaxCoarseStretching = 1.0;
+// Above held rows (a wall layer) the rings are coarsened only while |Psi|
+// stays below this: the annulus's -0.26 (above) must not pass, the hybrid
+// layer's 0.12 (grid/hybrid_layer.hpp) may, twice.
+constexpr double kMaxHeldStretching = 0.5;
 
 // The largest |Phi| (a_xi) and |Psi| (c_eta) of a control field, 0 without.
 void coarse_stretch(const ControlFields *fields, double &stretch_i, double &stretch_j);

@@ -124,21 +124,85 @@ static void test_smooth_o_grid_every_solver(void **state) {
     free(y);
 }
 
+/* The first note of one iteration on a NACA 0012 O-grid in a circle of
+ * `radius` chords, wall control at height h with EG2D_PARAM_WALL_LAYER `layer`. */
+static void note_of_one_iteration(int ni, int nj, double radius, double h, int layer, char *msg, int size) {
+    eg2d_grid *g;
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    assert_int_equal(domain_set_airfoil_o(g, "0012", radius), EG2D_OK);
+    assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h), EG2D_OK);
+    assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_WALL_LAYER, layer), EG2D_OK);
+    assert_int_equal(eg2d_iterate(g, 1, NULL), EG2D_OK);
+    first_event(g, msg, size);
+    eg2d_destroy(g);
+}
+
 /* Round a sharp trailing edge the rows above a thin layer cannot yet turn
  * robustly: the O-grid keeps the Sorenson-type control, and no layer is said. */
 static void test_sharp_o_grid_keeps_the_control(void **state) {
-    eg2d_grid *g;
     char msg[256];
     (void)state;
-    assert_int_equal(eg2d_create(65, 17, &g), EG2D_OK);
-    assert_int_equal(domain_set_airfoil_o(g, "0012", 10.0), EG2D_OK);
-    assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 1e-3), EG2D_OK);
-    assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
-    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_WALL_LAYER, 1), EG2D_OK);
-    assert_int_equal(eg2d_iterate(g, 1, NULL), EG2D_OK);
-    first_event(g, msg, sizeof msg);
+    note_of_one_iteration(65, 17, 10.0, 1e-3, 1, msg, sizeof msg);
     assert_null(strstr(msg, "wall layer"));
+}
+
+/* The hybrid layer (EG2D_PARAM_WALL_LAYER = 2) round the sharp trailing edge
+ * of a NACA 0012 O-grid, far field 15 chords: every solver converges to a
+ * grid without folds whose first cells have the height (within 0.1%) and
+ * leave the wall within 0.5 degrees, growing no faster than the march's
+ * schedule; multigrid in a few cycles. */
+static void hybrid_o_grid(int ni, int nj, double h, int solver, int cycle_limit, double growth_limit) {
+    double *x = alloc(ni * nj), *y = alloc(ni * nj), dev, hmin, hmax, folded, worst = 0;
+    int it, i, j, rows;
+    char msg[256];
+    eg2d_grid *g;
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    assert_int_equal(domain_set_airfoil_o(g, "0012", 15.0), EG2D_OK);
+    assert_int_equal(eg2d_set_solver(g, solver), EG2D_OK);
+    assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h), EG2D_OK);
+    assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_WALL_LAYER, 2), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
+    if (eg2d_solve(g) != EG2D_OK) fail_msg("%s: %s", eg2d_solver_name(solver), eg2d_last_error(g));
+    assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
+    first_event(g, msg, sizeof msg);
+    assert_int_equal(sscanf(msg, "wall layer (hybrid): %d rows of the hyperbolic march held", &rows), 1);
+    assert_int_equal(rows, 2 * (nj - 1) / 3);
+    assert_int_equal(eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &folded), EG2D_OK);
+    assert_true(folded == 0);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    measure_wall(x, y, ni, nj, EG2D_SIDE_JMIN, 1, 0, ni - 1, &dev, &hmin, &hmax);
+    for (i = 0; i < ni - 1; ++i)
+        for (j = 1; j < 30 && j < nj - 1; ++j) worst = fmax(worst, height(x, y, ni, i, j) / height(x, y, ni, i, j - 1));
+    print_message("hybrid NACA 0012 O-grid %dx%d, wall %g, %-9s %4d iterations, first cell %.6g..%.6g, %.2e deg, "
+                  "growth over 30 cells %.3f\n", ni, nj, h, eg2d_solver_name(solver), it, hmin, hmax, dev, worst);
+    assert_true(fabs(hmin / h - 1) < 1e-3 && fabs(hmax / h - 1) < 1e-3);
+    assert_true(dev < 0.5);
+    assert_true(worst <= growth_limit);
+    if (cycle_limit > 0) assert_true(it <= cycle_limit);
     eg2d_destroy(g);
+    free(x);
+    free(y);
+}
+
+static void test_hybrid_sharp_o_grid(void **state) {
+    int id;
+    (void)state;
+    for (id = 0; id < 100; ++id)
+        if (eg2d_solver_name(id)) hybrid_o_grid(129, 65, 1e-5, id, id == EG2D_SOLVER_MULTIGRID ? 10 : 0, 1.29);
+    /* Construct2D's default case: 250x100, first cell 1.04e-5 chord */
+    hybrid_o_grid(250, 100, 1.04e-5, EG2D_SOLVER_MULTIGRID, 10, 1.2);
+}
+
+/* A march that folds (NACA 0012 385x97 to 100 chords) leaves the
+ * Sorenson-type control, and the run says why. */
+static void test_hybrid_falls_back_and_says_so(void **state) {
+    char msg[512];
+    (void)state;
+    note_of_one_iteration(385, 97, 100.0, 1e-5, 2, msg, sizeof msg);
+    assert_non_null(strstr(msg, "wall layer (hybrid) not made: march: layer "));
+    assert_non_null(strstr(msg, "; the wall control's updates instead"));
 }
 
 int main(void) {
@@ -146,6 +210,8 @@ int main(void) {
         cmocka_unit_test(test_c_grid_layer),
         cmocka_unit_test(test_smooth_o_grid_every_solver),
         cmocka_unit_test(test_sharp_o_grid_keeps_the_control),
+        cmocka_unit_test(test_hybrid_sharp_o_grid),
+        cmocka_unit_test(test_hybrid_falls_back_and_says_so),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

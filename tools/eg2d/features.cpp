@@ -63,6 +63,12 @@ const std::vector<Feature> &parameters() {
 #else
         EG2D_NO_PARAM("wall_decay", "controls"), EG2D_NO_PARAM("wall_relaxation", "controls"),
 #endif
+#ifdef EG2D_PARAM_WALL_LAYER
+        EG2D_PARAM("wall_layer", EG2D_PARAM_WALL_LAYER, "controls"),
+        EG2D_PARAM("wall_growth", EG2D_PARAM_WALL_GROWTH, "controls"),
+#else
+        EG2D_NO_PARAM("wall_layer", "controls"), EG2D_NO_PARAM("wall_growth", "controls"),
+#endif
 #ifdef EG2D_PARAM_HERMITE_SPACING
         EG2D_PARAM("hermite_spacing", EG2D_PARAM_HERMITE_SPACING, "top"),
 #else
