@@ -727,9 +727,11 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   the controls Phi, Psi that make the marched grid an exact solution
  *   (frozen for the run), which bend it onto the JMAX set. The first cells
  *   are the march's (h, orthogonal to the wall, growing by the schedule's
- *   ratio). A march that cannot be made (EG2D_ERR_FOLDED or
- *   EG2D_ERR_ARGUMENT of EG2D_INIT_HYPERBOLIC) leaves the control below,
- *   and the run says so (eg2d_get_run_event). On a C-grid 2 acts as 1.
+ *   ratio). A march that folds is made once more with
+ *   EG2D_PARAM_MARCH_SMOOTHING 1; one that still cannot be made
+ *   (EG2D_ERR_FOLDED or EG2D_ERR_ARGUMENT of EG2D_INIT_HYPERBOLIC) leaves
+ *   the control below. The run says which (eg2d_get_run_event). On a
+ *   C-grid 2 acts as 1.
  * WALL otherwise: a Sorenson (GRAPE)-type control, updated between iterations, that
  *   makes the grid lines leave each wall side at 90 degrees with the
  *   first-cell height of eg2d_set_wall_spacing; its influence decays into the
