@@ -38,21 +38,6 @@ std::array<double, 4> wall_sides(std::array<double, 4> h) {
     return h;
 }
 
-// The grid-less helpers report through the thread's error text.
-template <class Body>
-int guard_free(const char *function, Body &&body) noexcept {
-    try {
-        body();
-        return EG2D_OK;
-    } catch (const Error &e) {
-        try { set_thread_error(std::string(function) + ": " + e.what()); } catch (...) {}
-        return status_of(e.failure());
-    } catch (...) {
-        try { set_thread_error(std::string(function) + ": out of memory"); } catch (...) {}
-        return EG2D_ERR_MEMORY;
-    }
-}
-
 }  // namespace
 
 extern "C" {
@@ -171,7 +156,7 @@ EG2D_API int eg2d_set_weight(eg2d_grid *grid, const double *w) {
 }
 
 EG2D_API int eg2d_clustering_map(int kind, double a, double b, double strength, int n, double *u_out) {
-    return guard_free("eg2d_clustering_map", [&] {
+    return guard_without_grid("eg2d_clustering_map", [&] {
         require(kind >= EG2D_CLUSTER_LINE && kind <= EG2D_CLUSTER_BOUNDARIES,
                 format("kind = %d: not an EG2D_CLUSTER_* value (0-2)", kind));
         require_ptr(u_out, "u_out");
@@ -195,7 +180,7 @@ EG2D_API int eg2d_clustering_map(int kind, double a, double b, double strength, 
 }
 
 EG2D_API int eg2d_tensor_parameter_grid(int ni, int nj, const double *u, const double *v, double *s, double *t) {
-    return guard_free("eg2d_tensor_parameter_grid", [&] {
+    return guard_without_grid("eg2d_tensor_parameter_grid", [&] {
         require(ni >= 3 && nj >= 3, format("ni = %d, nj = %d: need at least 3 each", ni, nj));
         require_ptr(u, "u");
         require_ptr(v, "v");
