@@ -30,7 +30,7 @@ void read_plot3d_block(const char *path, int block, long long capacity, int *for
     require(block >= 0, eg2d::format("block = %d: must be >= 0", block));
     require((x == nullptr) == (y == nullptr), "x and y must both be given or both be NULL");
     const Plot3dFile file = read_plot3d(path, block);
-    const Plot3dBlock &b = file.blocks[static_cast<std::size_t>(block)];
+    const Plot3dBlock &b = file.block;
     if (x) {
         require(capacity < 0 || b.x.size() <= static_cast<std::size_t>(capacity),
                 eg2d::format("%s: grid %d has %d x %d = %zu nodes, more than capacity = %lld", path, block, b.ni, b.nj,
@@ -39,7 +39,7 @@ void read_plot3d_block(const char *path, int block, long long capacity, int *for
         std::copy(b.y.begin(), b.y.end(), y);
     }
     if (format) *format = file.format;
-    if (nblocks) *nblocks = static_cast<int>(file.blocks.size());
+    if (nblocks) *nblocks = file.nblocks;
     if (ni) *ni = b.ni;
     if (nj) *nj = b.nj;
 }

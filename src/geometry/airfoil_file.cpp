@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -50,30 +51,37 @@ bool blank(const std::string &line) {
 
 std::shared_ptr<Curve> read_airfoil(const char *path) {
     require_regular_file(path);
-    std::FILE *f = std::fopen(path, "r");
+    const std::unique_ptr<std::FILE, int (*)(std::FILE *)> file(std::fopen(path, "r"), std::fclose);
+    std::FILE *f = file.get();
     if (!f) fail(Failure::Io, format("cannot open airfoil file \"%s\": %s", path, std::strerror(errno)));
-    std::vector<std::string> lines;
-    std::string line;
-    int c;
-    while ((c = std::fgetc(f)) != EOF) {
-        if (c == '\n') { lines.push_back(line); line.clear(); }
-        else if (c != '\r') line.push_back(static_cast<char>(c));
-    }
-    if (!line.empty()) lines.push_back(line);
-    std::fclose(f);
-    // Line 0 is the name. Collect the numeric lines with their line numbers.
+    // Line by line: what is kept is the points (a file of blank lines or
+    // names costs nothing), never the file's lines. Line 1 is the name.
     std::vector<Pair> pts;
-    std::vector<std::size_t> at;
-    for (std::size_t k = 1; k < lines.size(); ++k) {
-        if (blank(lines[k])) continue;
+    std::size_t first_line = 0, number = 0;
+    std::string line;
+    bool more = true;
+    while (more) {
+        const int c = std::fgetc(f);
+        if (c != '\n' && c != EOF) {
+            if (c != '\r') line.push_back(static_cast<char>(c));
+            continue;
+        }
+        more = c != EOF;
+        if (c == EOF && line.empty()) break;
+        ++number;
+        if (number == 1 || blank(line)) {
+            line.clear();
+            continue;
+        }
         Pair p;
-        if (!parse_pair(lines[k], p))
+        if (!parse_pair(line, p))
             fail(Failure::Argument,
-                 format("airfoil file \"%s\", line %zu: \"%s\" is not a pair of numbers", path, k + 1, lines[k].c_str()));
+                 format("airfoil file \"%s\", line %zu: \"%s\" is not a pair of numbers", path, number, line.c_str()));
         if (!std::isfinite(p.x) || !std::isfinite(p.y))
-            fail(Failure::Argument, format("airfoil file \"%s\", line %zu: non-finite coordinate", path, k + 1));
+            fail(Failure::Argument, format("airfoil file \"%s\", line %zu: non-finite coordinate", path, number));
+        if (pts.empty()) first_line = number;
         pts.push_back(p);
-        at.push_back(k + 1);
+        line.clear();
     }
     if (pts.size() < 4) fail(Failure::Argument, format("airfoil file \"%s\": %zu points, need at least 4", path, pts.size()));
     std::vector<double> x, y;
@@ -84,7 +92,7 @@ std::shared_ptr<Curve> read_airfoil(const char *path) {
         // (UBSan, found by fuzz_airfoil), and size_t sums could wrap.
         if (head.x + head.y != static_cast<double>(pts.size() - 1))
             fail(Failure::Argument, format("Lednicer file \"%s\" (line %zu): announces %.15g + %.15g points but has %zu",
-                                           path, at[0], head.x, head.y, pts.size() - 1));
+                                           path, first_line, head.x, head.y, pts.size() - 1));
         const std::size_t nu = static_cast<std::size_t>(head.x), nl = static_cast<std::size_t>(head.y);
         for (std::size_t k = nu + nl; k > nu; --k) { x.push_back(pts[k].x); y.push_back(pts[k].y); }  // lower, TE -> LE
         for (std::size_t k = 1; k <= nu; ++k) {  // upper, LE -> TE (its LE point is the lower's)

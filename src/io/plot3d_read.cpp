@@ -4,15 +4,12 @@
 // every number. A file that fits none is rejected with what was found.
 #include "io/plot3d_read.hpp"
 
+#include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <iterator>
-#include <sstream>
 
 #include "base/error.hpp"
 #include "base/regular_file.hpp"
@@ -96,9 +93,12 @@ public:
     bool ints(std::int32_t *v, std::size_t n) { return raw_items(v, n, 4); }
     bool reals(double *v, std::size_t n, std::size_t real) {
         if (real == 8) return raw_items(v, n, 8);
-        std::vector<float> f(n);
-        if (!raw_items(f.data(), n, 4)) return false;
-        for (std::size_t k = 0; k < n; ++k) v[k] = f[k];
+        if (n > (b_.size() - pos_) / 4) return false;
+        for (std::size_t k = 0; k < n; ++k) {  // each float straight into its double: no copy of the record
+            float f;
+            raw(&f, 4);
+            v[k] = f;
+        }
         return true;
     }
     void skip(std::size_t bytes) { pos_ += bytes; }
@@ -127,6 +127,15 @@ private:
     std::size_t pos_ = 0, record_ = 0;
 };
 
+// Block g of a header of d dimensions per block.
+Plot3dBlock block_of(const std::int32_t *dims, std::size_t g, int d) {
+    Plot3dBlock b;
+    b.ni = dims[g * d];
+    b.nj = dims[g * d + 1];
+    b.nk = d == 3 ? dims[g * d + 2] : 1;
+    return b;
+}
+
 // Tries one binary layout; on success fills file (and block `want`'s data).
 bool try_binary(const std::vector<unsigned char> &bytes, bool big_endian, bool markers, Layout layout, int want,
                 Plot3dFile &file) {
@@ -136,33 +145,33 @@ bool try_binary(const std::vector<unsigned char> &bytes, bool big_endian, bool m
     if (layout.multi) {
         if (!c.open(len) || !c.ints(&ngrid, 1) || !c.close() || ngrid < 1 || ngrid > (1 << 20)) return false;
     }
-    std::vector<std::int32_t> dims(static_cast<std::size_t>(ngrid) * layout.dims);
-    len = dims.size() * 4;
-    if (!c.open(len) || !c.ints(dims.data(), dims.size()) || !c.close()) return false;
-    std::vector<Plot3dBlock> blocks(static_cast<std::size_t>(ngrid));
+    // The dimensions are allocated once the file is known to hold them.
+    const std::size_t ng = static_cast<std::size_t>(ngrid);
+    len = ng * layout.dims * 4;
+    if (!c.open(len)) return false;
+    std::vector<std::int32_t> dims(ng * layout.dims);
+    if (!c.ints(dims.data(), dims.size()) || !c.close()) return false;
     std::size_t total_nodes = 0;
-    for (std::size_t g = 0; g < blocks.size(); ++g) {
-        Plot3dBlock &b = blocks[g];
-        b.ni = dims[g * layout.dims];
-        b.nj = dims[g * layout.dims + 1];
-        b.nk = layout.dims == 3 ? dims[g * layout.dims + 2] : 1;
+    for (std::size_t g = 0; g < ng; ++g) {
+        const Plot3dBlock b = block_of(dims.data(), g, layout.dims);
         if (!plausible(b)) return false;
         total_nodes += nodes(b);
     }
     // The real size follows from the bytes left: every byte must be used.
-    const std::size_t framing = markers ? 8 * blocks.size() : 0;
+    const std::size_t framing = markers ? 8 * ng : 0;
     if (total_nodes == 0 || c.size() - c.position() < framing) return false;
     const std::size_t left = c.size() - c.position() - framing;
     const std::size_t per = total_nodes * static_cast<std::size_t>(layout.dims);
     if (left % per != 0) return false;
     const std::size_t real = left / per;
     if (real != 4 && real != 8) return false;
-    for (std::size_t g = 0; g < blocks.size(); ++g) {
-        Plot3dBlock &b = blocks[g];
+    Plot3dBlock wanted;
+    for (std::size_t g = 0; g < ng; ++g) {
+        Plot3dBlock b = block_of(dims.data(), g, layout.dims);
         const std::size_t n = nodes(b), rec = n * layout.dims * real;
         std::size_t got = rec;
         if (!c.open(got)) return false;
-        if (static_cast<int>(g) == want) {
+        if (static_cast<int>(g) == want) {  // the record is in the file: its coordinates are at most 2x its bytes
             const std::size_t at = c.position();
             b.x.resize(n);
             b.y.resize(n);
@@ -175,6 +184,7 @@ bool try_binary(const std::vector<unsigned char> &bytes, bool big_endian, bool m
                 if (implausible(v, real)) return false;  // not this layout
             }
             c.skip(rec - 2 * n * real);
+            wanted = std::move(b);
         } else {
             c.skip(rec);
         }
@@ -184,81 +194,133 @@ bool try_binary(const std::vector<unsigned char> &bytes, bool big_endian, bool m
     file.format = EG2D_FORMAT_PLOT3D | (layout.multi ? EG2D_PLOT3D_MULTI : 0) |
                   (layout.dims == 3 ? EG2D_PLOT3D_3D : 0) | (real == 4 ? EG2D_PLOT3D_SINGLE : 0) |
                   (big_endian ? EG2D_PLOT3D_BIG_ENDIAN : 0) | (markers ? 0 : EG2D_PLOT3D_NO_MARKERS);
-    file.blocks = std::move(blocks);
+    file.nblocks = ngrid;
+    file.block = std::move(wanted);
     return true;
 }
 
 bool whole(double v) { return v == std::floor(v) && std::fabs(v) < 2147483647.0; }
 
-bool try_ascii(const std::vector<double> &t, Layout layout, int want, Plot3dFile &file) {
-    std::size_t p = 0;
-    double ngrid = 1;
-    if (layout.multi) {
-        if (t.empty() || !whole(t[0]) || t[0] < 1) return false;
-        ngrid = t[p++];
+// The whitespace- (or comma-) separated numbers of a text file, read in two
+// passes over its bytes rather than kept: scan() counts them and keeps the
+// header's integers, copy() gives one block's coordinates. What grows with
+// the file is only the header (4 bytes an integer, each at least 2 of the
+// file's) and the block asked for.
+class AsciiNumbers {
+public:
+    explicit AsciiNumbers(const std::vector<unsigned char> &bytes) : b_(bytes) {}
+
+    // False at the first token that is not a number (a binary file), with its line in `where`.
+    bool scan(std::string &where) {
+        if (std::memchr(b_.data(), 0, b_.size())) {
+            where = "it has NUL bytes (binary) but no Plot3D binary layout fits its size";
+            return false;
+        }
+        // The header is at most 1 + 3 ngrid numbers, ngrid the first (multi-grid layouts), else 3.
+        std::size_t keep = 3;
+        return each([&](std::size_t k, double v) {
+            if (k == 0 && whole(v) && v >= 1) keep = std::max(keep, 1 + 3 * static_cast<std::size_t>(v));
+            if (k < keep) {
+                if (!whole(v) && first_fraction_ == npos) first_fraction_ = k;
+                header_.push_back(whole(v) ? static_cast<std::int32_t>(v) : 0);
+            }
+            count_ = k + 1;
+            return true;
+        }, &where);
     }
-    const std::size_t ng = static_cast<std::size_t>(ngrid);
-    if (t.size() - p < ng * layout.dims) return false;
-    std::vector<Plot3dBlock> blocks(ng);
-    std::size_t total = 0;
-    for (Plot3dBlock &b : blocks) {
+    std::size_t count() const { return count_; }
+    // The k-th number, if it is an integer of the header.
+    bool integer(std::size_t k, int &v) const {
+        if (k >= header_.size() || k >= first_fraction_) return false;
+        v = header_[k];
+        return true;
+    }
+    // Numbers [from, from + n) into x, the n after them into y.
+    void copy(std::size_t from, std::size_t n, double *x, double *y) const {
+        each([&](std::size_t k, double v) {
+            if (k >= from + 2 * n) return false;
+            if (k >= from) (k < from + n ? x[k - from] : y[k - from - n]) = v;
+            return true;
+        }, nullptr);
+    }
+
+private:
+    static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+    // f(index, value) for each number until it returns false.
+    template <class F>
+    bool each(F f, std::string *where) const {
+        const char *s = reinterpret_cast<const char *>(b_.data()), *end = s + b_.size();
+        int line = 1;
+        std::size_t k = 0;
+        std::string token;
+        while (s < end) {
+            if (*s == '\n') ++line;
+            if (std::isspace(static_cast<unsigned char>(*s)) || *s == ',') {
+                ++s;
+                continue;
+            }
+            // Fortran may write a D exponent (1.5D+00): read it as E.
+            const char *e = s;
+            while (e < end && !std::isspace(static_cast<unsigned char>(*e)) && *e != ',') ++e;
+            token.assign(s, e);
+            for (char &ch : token)
+                if (ch == 'D' || ch == 'd') ch = 'E';
+            char *stop;
+            const double v = std::strtod(token.c_str(), &stop);
+            if (stop != token.c_str() + token.size() || !std::isfinite(v)) {
+                if (where) *where = format("line %d: \"%s\" is not a number", line, std::string(s, e).substr(0, 24).c_str());
+                return false;
+            }
+            if (!f(k++, v)) return true;
+            s = e;
+        }
+        return true;
+    }
+
+    const std::vector<unsigned char> &b_;
+    std::size_t count_ = 0, first_fraction_ = npos;
+    std::vector<std::int32_t> header_;
+};
+
+bool try_ascii(const AsciiNumbers &t, Layout layout, int want, Plot3dFile &file) {
+    std::size_t p = 0, ng = 1;
+    if (layout.multi) {
+        int first;
+        if (!t.integer(0, first) || first < 1) return false;
+        ng = static_cast<std::size_t>(first);
+        p = 1;
+    }
+    if (t.count() - p < ng * layout.dims) return false;
+    const std::size_t data = p + ng * layout.dims;  // where the coordinates begin
+    std::size_t total = 0, wanted_at = 0;
+    Plot3dBlock wanted;
+    for (std::size_t g = 0; g < ng; ++g) {
+        int v[3] = {0, 0, 1};
         for (int d = 0; d < layout.dims; ++d)
-            if (!whole(t[p + d])) return false;
-        b.ni = static_cast<int>(t[p]);
-        b.nj = static_cast<int>(t[p + 1]);
-        b.nk = layout.dims == 3 ? static_cast<int>(t[p + 2]) : 1;
+            if (!t.integer(p + d, v[d])) return false;
+        Plot3dBlock b;
+        b.ni = v[0];
+        b.nj = v[1];
+        b.nk = v[2];
         p += layout.dims;
         if (!plausible(b)) return false;
+        if (static_cast<int>(g) == want) {
+            wanted = b;
+            wanted_at = data + total;
+        }
         total += nodes(b) * layout.dims;
     }
-    if (t.size() - p != total) return false;
-    for (std::size_t g = 0; g < ng; ++g) {
-        Plot3dBlock &b = blocks[g];
-        const std::size_t n = nodes(b);
-        if (static_cast<int>(g) == want) {
-            b.x.assign(t.begin() + static_cast<std::ptrdiff_t>(p), t.begin() + static_cast<std::ptrdiff_t>(p + n));
-            b.y.assign(t.begin() + static_cast<std::ptrdiff_t>(p + n),
-                       t.begin() + static_cast<std::ptrdiff_t>(p + 2 * n));
-        }
-        p += n * layout.dims;
+    if (t.count() - p != total) return false;
+    if (want >= 0 && static_cast<std::size_t>(want) < ng) {  // the numbers are in the file: 8 bytes for each >= 2
+        const std::size_t n = nodes(wanted);
+        wanted.x.resize(n);
+        wanted.y.resize(n);
+        t.copy(wanted_at, n, wanted.x.data(), wanted.y.data());
     }
     file.format = EG2D_FORMAT_PLOT3D_ASCII | (layout.multi ? EG2D_PLOT3D_MULTI : 0) |
                   (layout.dims == 3 ? EG2D_PLOT3D_3D : 0);
-    file.blocks = std::move(blocks);
-    return true;
-}
-
-// All whitespace-separated numbers of a text file; false at the first
-// token that is not one (a binary file), with its line in `where`.
-bool numbers(const std::vector<unsigned char> &bytes, std::vector<double> &out, std::string &where) {
-    std::string text(bytes.begin(), bytes.end());
-    if (text.find('\0') != std::string::npos) {
-        where = "it has NUL bytes (binary) but no Plot3D binary layout fits its size";
-        return false;
-    }
-    const char *s = text.c_str(), *end = s + text.size();
-    int line = 1;
-    while (s < end) {
-        if (*s == '\n') ++line;
-        if (std::isspace(static_cast<unsigned char>(*s)) || *s == ',') {
-            ++s;
-            continue;
-        }
-        // Fortran may write a D exponent (1.5D+00): read it as E.
-        const char *e = s;
-        while (e < end && !std::isspace(static_cast<unsigned char>(*e)) && *e != ',') ++e;
-        std::string token(s, e);
-        for (char &ch : token)
-            if (ch == 'D' || ch == 'd') ch = 'E';
-        char *stop;
-        const double v = std::strtod(token.c_str(), &stop);
-        if (stop != token.c_str() + token.size() || !std::isfinite(v)) {
-            where = format("line %d: \"%s\" is not a number", line, std::string(s, e).substr(0, 24).c_str());
-            return false;
-        }
-        out.push_back(v);
-        s = e;
-    }
+    file.nblocks = static_cast<int>(ng);
+    file.block = std::move(wanted);
     return true;
 }
 
@@ -279,23 +341,22 @@ Plot3dFile read_plot3d(const std::string &path, int block) {
         fail(e.failure(), format("%s: %s", path.c_str(), e.what()));
     }
     if (!found) {
-        std::vector<double> t;
+        AsciiNumbers t(bytes);
         std::string where;
-        if (!numbers(bytes, t, where))
+        if (!t.scan(where))
             fail(Failure::Io, format("%s: not a Plot3D grid file: %s", path.c_str(), where.c_str()));
         for (Layout l : kLayouts)
             if (!found) found = try_ascii(t, l, block, file);
         if (!found)
             fail(Failure::Io, format("%s: not a Plot3D grid file: its %zu numbers fit no 2D/3D, single-/multi-grid "
                                      "layout (truncated?)",
-                                     path.c_str(), t.size()));
+                                     path.c_str(), t.count()));
     }
-    if (block >= static_cast<int>(file.blocks.size()))
-        fail(Failure::Argument,
-             format("block = %d: %s has %zu grid(s)", block, path.c_str(), file.blocks.size()));
-    if (block >= 0 && file.blocks[static_cast<std::size_t>(block)].nk != 1)
+    if (block >= file.nblocks)
+        fail(Failure::Argument, format("block = %d: %s has %d grid(s)", block, path.c_str(), file.nblocks));
+    if (block >= 0 && file.block.nk != 1)
         fail(Failure::Io, format("%s: grid %d is 3D with nk = %d planes; a 2D grid has nk = 1", path.c_str(), block,
-                                 file.blocks[static_cast<std::size_t>(block)].nk));
+                                 file.block.nk));
     return file;
 }
 

@@ -6,7 +6,6 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 
 #include <sys/stat.h>
 
@@ -316,6 +315,9 @@ Case read_case(const std::string &text, const std::string &file, const std::stri
     return c;
 }
 
+// The largest case file read (examples/ are 1 to 3 KB).
+constexpr std::size_t kMaxCaseBytes = std::size_t{1} << 20;
+
 Case read_case_file(const std::string &path, int ni, int nj) {
     struct stat st;
     if (stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
@@ -323,10 +325,19 @@ Case read_case_file(const std::string &path, int ni, int nj) {
                                    ", not a case file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Failure(EXIT_IO, path + ": cannot read the case file: " + std::strerror(errno));
-    std::ostringstream text;
-    text << in.rdbuf();
+    // Case files are written by hand: a bound keeps a wrong path (a grid, a
+    // log) from costing the TOML parser many times its size in memory.
+    std::string text;
+    char buffer[1 << 16];
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+        text.append(buffer, static_cast<std::size_t>(in.gcount()));
+        if (text.size() > kMaxCaseBytes)
+            throw Failure(EXIT_CASE, path + ": more than " + std::to_string(kMaxCaseBytes >> 20) +
+                                         " MiB, too large for a case file (large point sets go in point files: "
+                                         "file = \"...\")");
+    }
     const auto slash = path.find_last_of('/');
-    return read_case(text.str(), path, slash == std::string::npos ? "." : path.substr(0, slash), ni, nj);
+    return read_case(text, path, slash == std::string::npos ? "." : path.substr(0, slash), ni, nj);
 }
 
 }  // namespace eg2dtool

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -190,6 +191,10 @@ int main(int argc, char **argv) {
         std::fflush(stdout);
         std::fprintf(stderr, "eg2d: %s\n", f.what());
         return f.exit_code();
+    } catch (const std::bad_alloc &) {  // the library reports its own; this is the command's (the case file)
+        std::fflush(stdout);
+        std::fprintf(stderr, "eg2d: out of memory\n");
+        return EXIT_MEMORY;
     } catch (const std::exception &e) {
         std::fprintf(stderr, "eg2d: internal error: %s\n", e.what());
         return EXIT_INTERNAL;
