@@ -461,33 +461,102 @@ class CommandLine(unittest.TestCase):
                                   "(checked before solving)\n")
             self.assertNotIn("converged", out)
 
+    def existing_output_set(self, d, svg_fifo=False):
+        """d/out holding an older swan.{xyz,vts,svg}: swan.xyz a symbolic link to d/kept.xyz, swan.vts a
+        plain file of mode 0640, swan.svg a file with a second hard link (or a FIFO with no reader).
+        Returns the out directory and a function that asserts all of it is as it was."""
+        out = os.path.join(d, "out")
+        os.mkdir(out)
+        kept = os.path.join(d, "kept.xyz")
+        with open(kept, "w") as f:
+            f.write("old xyz")
+        os.symlink(kept, os.path.join(out, "swan.xyz"))
+        with open(os.path.join(out, "swan.vts"), "w") as f:
+            f.write("old swan.vts")
+        os.chmod(os.path.join(out, "swan.vts"), 0o640)
+        if svg_fifo:
+            os.mkfifo(os.path.join(out, "swan.svg"))
+        else:
+            with open(os.path.join(out, "swan.svg"), "w") as f:
+                f.write("old swan.svg")
+            os.link(os.path.join(out, "swan.svg"), os.path.join(d, "other-name.svg"))
+
+        def unchanged():
+            self.assertEqual(sorted(os.listdir(out)), ["swan.svg", "swan.vts", "swan.xyz"])  # no stage left
+            self.assertEqual(os.readlink(os.path.join(out, "swan.xyz")), kept)
+            with open(kept, "rb") as f:
+                self.assertEqual(f.read(), b"old xyz")
+            with open(os.path.join(out, "swan.vts")) as f:
+                self.assertEqual(f.read(), "old swan.vts")
+            self.assertEqual(os.stat(os.path.join(out, "swan.vts")).st_mode & 0o777, 0o640)
+            if svg_fifo:
+                self.assertTrue(stat.S_ISFIFO(os.lstat(os.path.join(out, "swan.svg")).st_mode))
+            else:
+                with open(os.path.join(d, "other-name.svg")) as f:
+                    self.assertEqual(f.read(), "old swan.svg")
+                self.assertEqual(os.stat(os.path.join(out, "swan.svg")).st_ino,
+                                 os.stat(os.path.join(d, "other-name.svg")).st_ino)
+        return out, unchanged
+
     def test_output_set_respects_what_is_at_the_paths(self):
         # a symbolic link stays a link with its target rewritten; a file keeps
         # its permission bits; a second hard link still sees the new bytes
         with tempfile.TemporaryDirectory() as d:
-            out = os.path.join(d, "out")
-            os.mkdir(out)
+            out, _ = self.existing_output_set(d)
             target = os.path.join(d, "kept.xyz")
-            with open(target, "w") as f:
-                f.write("old")
-            os.symlink(target, os.path.join(out, "swan.xyz"))
-            with open(os.path.join(out, "swan.vts"), "w") as f:
-                f.write("old")
-            os.chmod(os.path.join(out, "swan.vts"), 0o640)
-            with open(os.path.join(out, "swan.svg"), "w") as f:
-                f.write("old")
-            os.link(os.path.join(out, "swan.svg"), os.path.join(d, "other-name.svg"))
             code, stdout, stderr = run("demo", "-o", out, "--quiet", "--size", "9x9")
             self.assertEqual(code, 0, stdout + stderr)
             self.assertTrue(os.path.islink(os.path.join(out, "swan.xyz")))
             self.assertEqual(os.readlink(os.path.join(out, "swan.xyz")), target)
             # single-grid 2-D Plot3D: the (ni, nj) record and the x, y record, each between markers
             self.assertEqual(os.path.getsize(target), (4 + 4 * 2 + 4) + (4 + 8 * 2 * 81 + 4))
+            with open(target, "rb") as f:
+                self.assertEqual(struct.unpack("<4i", f.read(16)), (8, 9, 9, 8))
             self.assertEqual(os.stat(os.path.join(out, "swan.vts")).st_mode & 0o777, 0o640)
             check_svg(self, os.path.join(d, "other-name.svg"))
             self.assertEqual(os.stat(os.path.join(out, "swan.svg")).st_ino,
                              os.stat(os.path.join(d, "other-name.svg")).st_ino)
             self.assertEqual([n for n in os.listdir(out) if n.startswith(".eg2d-set")], [])
+
+    def test_failed_run_leaves_the_output_set_unchanged(self):
+        # not converged: nothing is written, and no path changes type, mode, links or content
+        with tempfile.TemporaryDirectory() as d:
+            out, unchanged = self.existing_output_set(d)
+            path = os.path.join(d, "swan.toml")
+            with open(os.path.join(EXAMPLES, "swan.toml")) as f:
+                text = f.read().replace("max_iterations = 20000", "max_iterations = 5").replace(
+                    "# method: the library's default, FAS multigrid", 'method = "psor"')
+            with open(path, "w") as f:
+                f.write(text)
+            code, stdout, stderr = run("run", path, "-o", out, "--quiet", "--size", "17x17")
+            self.assertEqual(code, 5, stdout + stderr)
+            self.assertIn("(no files written)", stderr)
+            unchanged()
+
+    def test_fifo_without_a_reader_fails_the_set_unchanged(self):
+        # the FIFO (the set's last file) is written first: its failure comes before the link's
+        # target or any other file of the set is touched
+        with tempfile.TemporaryDirectory() as d:
+            out, unchanged = self.existing_output_set(d, svg_fifo=True)
+            code, stdout, stderr = run("demo", "-o", out, "--quiet", "--size", "9x9")
+            self.assertEqual(code, 8, stdout + stderr)
+            self.assertIn(f"{out}/swan.svg: a FIFO with no reader: not written", stderr)
+            unchanged()
+
+    def test_fifo_with_a_reader_is_streamed_into(self):
+        # the reader is open before the run; the grid (1320 bytes) fits in the pipe's buffer
+        with tempfile.TemporaryDirectory() as d:
+            fifo = os.path.join(d, "swan.xyz")
+            os.mkfifo(fifo)
+            reader = os.open(fifo, os.O_RDONLY | os.O_NONBLOCK)
+            try:
+                code, stdout, stderr = run("demo", "-o", d, "--quiet", "--size", "9x9")
+                got = os.read(reader, 1 << 16)
+            finally:
+                os.close(reader)
+            self.assertEqual(code, 0, stdout + stderr)
+            self.assertTrue(stat.S_ISFIFO(os.lstat(fifo).st_mode))
+            self.assertEqual(len(got), (4 + 4 * 2 + 4) + (4 + 8 * 2 * 81 + 4))
 
     def test_output_path_that_is_a_directory_is_refused_before_solving(self):
         with tempfile.TemporaryDirectory() as d:

@@ -201,8 +201,8 @@ void print_quality(eg2d_grid *g, int topology) {
 // never a new .xyz beside an old .vts). A file renamed over an existing
 // one gets that file's permission bits (and owner, where permitted).
 // Paths that are links, hard-linked files or devices are written by the
-// library first, each atomically where the path allows (written_in_place),
-// then the renames.
+// library first, each atomically where the path allows (written_in_place;
+// streams before files), then the renames.
 void write_outputs(eg2d_grid *g, const Case &c, const RunOptions &o) {
     make_directory(o.out_dir);
     if (c.svg_quality >= 0) check(g, eg2d_set_parameter(g, EG2D_PARAM_SVG_QUALITY, c.svg_quality), c.svg_quality_at);
@@ -221,14 +221,18 @@ void write_outputs(eg2d_grid *g, const Case &c, const RunOptions &o) {
         check(g, eg2d_write(g, (stage + "/" + out.name).c_str(), out.format), out.where);
     }
     if (Progress::interrupted()) throw Failure(EXIT_INTERRUPTED, "interrupted: no files written");
-    for (const auto &out : c.outputs) {
-        const std::string path = o.out_dir + "/" + out.name;
-        struct stat st;
-        if (lstat(path.c_str(), &st) == 0 && written_in_place(st)) {
+    // Streams (a FIFO, a character device, or a link to one) first: a FIFO
+    // with no reader, the likeliest failure here, then leaves every file as it was.
+    for (const bool streams : {true, false})
+        for (const auto &out : c.outputs) {
+            const std::string path = o.out_dir + "/" + out.name;
+            struct stat st, end;
+            if (lstat(path.c_str(), &st) != 0 || !written_in_place(st)) continue;
+            const bool stream = stat(path.c_str(), &end) == 0 && (S_ISFIFO(end.st_mode) || S_ISCHR(end.st_mode));
+            if (stream != streams) continue;
             check(g, eg2d_write(g, path.c_str(), out.format), out.where);
             std::printf("wrote %s\n", path.c_str());
         }
-    }
     for (const auto &out : c.outputs) {
         const std::string path = o.out_dir + "/" + out.name, staged = stage + "/" + out.name;
         struct stat st;
