@@ -863,6 +863,64 @@ EG2D_API int eg2d_set_weight(eg2d_grid *grid, const double *w);
 #define EG2D_MARCH_END_SPLAY     3  /* the end cell widens in proportion to the layer height,
                                        so the end line splays outward */
 
+/*=====================================================================
+ * Boundary patches
+ *
+ * Each side, or a stretch of one, carries a type and a name, which the
+ * solver-ready formats write as its boundary condition: an SU2 marker
+ * (EG2D_FORMAT_SU2), an OpenFOAM patch (EG2D_FORMAT_OPENFOAM) and a CGNS
+ * BC_t (EG2D_FORMAT_CGNS). Where the user sets none, the topology's
+ * defaults hold:
+ *   single block  each side one patch, "jmin", "imax", "jmax", "imin", all
+ *                 EG2D_PATCH_WALL (a closed box until told otherwise: set
+ *                 the inflow, outflow or far field yourself);
+ *   O-grid        JMIN "wall" (WALL), JMAX "farfield" (FARFIELD); the
+ *                 periodic i-cut is internal: its faces are merged (SU2,
+ *                 OpenFOAM) or a 1-to-1 connection (CGNS);
+ *   C-grid        JMIN's body stretch, from trailing edge to trailing edge,
+ *                 "wall" (WALL); JMIN's two wake stretches are the cut,
+ *                 merged or connected 1-to-1 like the O-grid's; JMAX
+ *                 "farfield" (FARFIELD); IMIN and IMAX "outflow" (OUTFLOW).
+ * A patch the user sets replaces the default on its stretch; the rest of
+ * the side keeps the default. Patches are kept across boundary changes and
+ * forgotten with the topology (eg2d_set_topology).
+ *===================================================================*/
+#define EG2D_PATCH_WALL     0  /* a no-slip (or slip) solid wall: OpenFOAM wall, CGNS BCWall */
+#define EG2D_PATCH_FARFIELD 1  /* free stream: OpenFOAM patch, CGNS BCFarfield */
+#define EG2D_PATCH_OUTFLOW  2  /* OpenFOAM patch, CGNS BCOutflow */
+#define EG2D_PATCH_INFLOW   3  /* OpenFOAM patch, CGNS BCInflow */
+#define EG2D_PATCH_SYMMETRY 4  /* OpenFOAM symmetry, CGNS BCSymmetryPlane */
+#define EG2D_PATCH_CUT      5  /* reported only (eg2d_get_patch): the O-grid's periodic cut,
+                                  the C-grid's wake; never set */
+/* Gives nodes first..last (0 <= first < last <= side length - 1, in
+ * increasing index along `side`) of a side, i.e. the last - first edges
+ * between them, a type (EG2D_PATCH_WALL..SYMMETRY) and a name: 1 to 32
+ * characters, a letter first, then letters, digits, '_' or '-' (every
+ * target format takes it as is; "frontAndBack" is the OpenFOAM writer's).
+ * Two stretches may share a name (one marker) only with the same type.
+ * A patch of exactly the range of an existing one replaces it.
+ * EG2D_ERR_ARGUMENT for a side the topology lacks (an O-grid has only JMIN
+ * and JMAX), a range outside the side or overlapping another patch, a bad
+ * type or name, or, on a C-grid whose JMIN is set, a stretch of the wake
+ * cut. A patch set on a C-grid before JMIN is checked against the cut when
+ * the patches are used (eg2d_get_patch, eg2d_write): a patch on the cut is
+ * EG2D_ERR_ARGUMENT there. */
+EG2D_API int eg2d_set_patch(eg2d_grid *grid, int side, int first, int last, int type, const char *name);
+/* Forgets the user's patches: the defaults hold again. */
+EG2D_API int eg2d_clear_patches(eg2d_grid *grid);
+/* The boundary as the writers see it: the user's patches, the defaults on
+ * the rest and the cut (type EG2D_PATCH_CUT; an O-grid's as side IMIN,
+ * nodes 0..nj-1), side by side in the order JMIN, IMAX, JMAX, IMIN and by
+ * increasing index: every boundary edge lies in exactly one of them.
+ * *count is their number; eg2d_get_patch gives the index-th (0-based) with
+ * its name into name[size] (NUL-terminated, cut short to fit; name may be
+ * NULL with size 0). Any output pointer may be NULL. EG2D_ERR_STATE on a
+ * C-grid before JMIN is set (the cut is read from it); EG2D_ERR_ARGUMENT
+ * for an index out of range. */
+EG2D_API int eg2d_get_patch_count(const eg2d_grid *grid, int *count);
+EG2D_API int eg2d_get_patch(const eg2d_grid *grid, int index, int *side, int *first, int *last, int *type,
+                            char *name, int size);
+
 #ifdef __cplusplus
 }
 #endif

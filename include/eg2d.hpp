@@ -381,6 +381,29 @@ public:
         }
         return out;
     }
+    // Boundary patches (EG2D_PATCH_*): set a stretch, back to the defaults,
+    // and the whole boundary as the writers see it.
+    struct patch {
+        int side, first, last, type;
+        std::string name;
+    };
+    void set_patch(int side, int first, int last, int type, const std::string &name) {
+        check(::eg2d_set_patch(g_, side, first, last, type, name.c_str()));
+    }
+    void clear_patches() { check(::eg2d_clear_patches(g_)); }
+    std::vector<patch> get_patches() const {
+        int n = 0;
+        check(::eg2d_get_patch_count(g_, &n));
+        std::vector<patch> out;
+        char buf[64];
+        for (int k = 0; k < n; ++k) {
+            patch p{0, 0, 0, 0, ""};
+            check(::eg2d_get_patch(g_, k, &p.side, &p.first, &p.last, &p.type, buf, static_cast<int>(sizeof buf)));
+            p.name = buf;
+            out.push_back(p);
+        }
+        return out;
+    }
     double get_quality(int metric) const {
         double v = 0;
         check(::eg2d_get_quality(g_, metric, &v));

@@ -121,6 +121,9 @@ POINTERS = {
     "eg2d_read_plot3d_into": {"format": "optional", "nblocks": "optional", "ni": "optional", "nj": "optional",
                               "x": "array optional", "y": "array optional"},
     "eg2d_read_points": {"n": "optional", "x": "array optional", "y": "array optional"},
+    "eg2d_get_patch_count": {"count": "optional"},
+    "eg2d_get_patch": {"side": "optional", "first": "optional", "last": "optional", "type": "optional",
+                       "name": "optional"},
 }
 
 # `#define EG2D_*` names that are not constants of the API.

@@ -87,6 +87,10 @@ module eg2d
     procedure :: set_wall_spacing => grid_set_wall_spacing
     procedure :: set_parameter_grid => grid_set_parameter_grid
     procedure :: set_weight => grid_set_weight
+    procedure :: set_patch => grid_set_patch
+    procedure :: clear_patches => grid_clear_patches
+    procedure :: get_patch_count => grid_get_patch_count
+    procedure :: get_patch => grid_get_patch
     final :: grid_final
   end type eg2d_grid_t
 
@@ -740,6 +744,56 @@ contains
     end if
     call finish(self, eg2d_set_weight(self%handle, w), status)
   end subroutine grid_set_weight
+
+  ! Names and types a stretch of a side for the solver-ready formats:
+  ! nodes first..last (0-based) of side, type EG2D_PATCH_*.
+  subroutine grid_set_patch(self, side, first, last, type, name, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: side, first, last, type
+    character(*), intent(in) :: name
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_set_patch(self%handle, int(side, c_int), int(first, c_int), int(last, c_int), &
+         int(type, c_int), c_path(name)), status)
+  end subroutine grid_set_patch
+
+  ! Back to the topology's default patches.
+  subroutine grid_clear_patches(self, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_clear_patches(self%handle), status)
+  end subroutine grid_clear_patches
+
+  ! The number of stretches of the whole boundary as the writers see it.
+  subroutine grid_get_patch_count(self, count, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(out) :: count
+    integer, intent(out), optional :: status
+    integer(c_int) :: n
+    n = 0
+    call finish(self, eg2d_get_patch_count(self%handle, n), status)
+    count = int(n)
+  end subroutine grid_get_patch_count
+
+  ! The index-th stretch (from 0): side, nodes first..last, type and name.
+  subroutine grid_get_patch(self, index, side, first, last, type, name, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: index
+    integer, intent(out) :: side, first, last, type
+    character(len=*), intent(out) :: name
+    integer, intent(out), optional :: status
+    character(kind=c_char) :: buf(64)
+    integer(c_int) :: s, f, l, t
+    integer :: k
+    s = 0; f = 0; l = 0; t = 0
+    buf = c_null_char
+    call finish(self, eg2d_get_patch(self%handle, int(index, c_int), s, f, l, t, buf, int(size(buf), c_int)), status)
+    side = int(s); first = int(f); last = int(l); type = int(t)
+    name = ''
+    do k = 1, min(len(name), size(buf))
+      if (buf(k) == c_null_char) exit
+      name(k:k) = buf(k)
+    end do
+  end subroutine grid_get_patch
 
   ! Seed 002's clustering map (EG2D_CLUSTER_*) sampled at size(u) points.
   subroutine eg2d_get_clustering_map(kind, a, b, strength, u, status)

@@ -67,6 +67,7 @@ void Grid::set_topology(Topology t) {
     base_connectivity_ = connectivity_ = Connectivity(ni_, nj_, t);
     held_rows_ = 0;
     sides_set_ = 0;
+    patches.clear();
     for (int si = 0; si < 4; ++si) {
         user_x_[si].clear();
         user_y_[si].clear();

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "base/connectivity.hpp"
+#include "base/patches.hpp"
 
 namespace eg2d {
 
@@ -55,6 +56,14 @@ public:
 
     bool initialized() const { return initialized_; }
     void mark_initialized() { initialized_ = true; }
+
+    // C-grid: the trailing-edge index on JMIN read when JMIN was set (0 while
+    // it is not, and for the other topologies), whatever rows are held.
+    int cut_wake() const { return base_connectivity_.wake(); }
+
+    // The user's boundary patches (base/patches.hpp: with_patch checks them,
+    // resolve_patches completes them); forgotten with the topology.
+    std::vector<Patch> patches;
 
     // Diagonal of the bounding box of the boundary ring: the L of NUMERICS.md.
     double extent() const;

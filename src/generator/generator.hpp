@@ -65,6 +65,9 @@ public:
         motions_.push_back(std::move(m));
     }
     void set_coordinates(const double *x, const double *y);
+    // The boundary patches only name and type the boundary for the writers:
+    // no effect on the generation.
+    void set_patches(std::vector<Patch> patches) { grid_.patches = std::move(patches); }
     void initialize(int method);
     void set_system(System s);
     System system() const { return system_; }

@@ -374,6 +374,15 @@ static int r_cell_quality(eg2d_grid *g) {
     return eg2d_get_cell_quality(g, EG2D_QUALITY_ORTHO_MAX_JMIN, v);
 }
 
+static int r_patch_overlap(eg2d_grid *g) {
+    int rc = eg2d_set_patch(g, EG2D_SIDE_JMIN, 0, 4, EG2D_PATCH_WALL, "plate");
+    return rc ? rc : eg2d_set_patch(g, EG2D_SIDE_JMIN, 2, 6, EG2D_PATCH_INFLOW, "inlet");
+}
+static int r_patch_name(eg2d_grid *g) { return eg2d_set_patch(g, EG2D_SIDE_JMIN, 0, 8, EG2D_PATCH_WALL, "my wall"); }
+static int r_patch_ogrid_imin(eg2d_grid *g) { return eg2d_set_patch(g, EG2D_SIDE_IMIN, 0, 8, EG2D_PATCH_WALL, "x"); }
+static int r_patch_cut_type(eg2d_grid *g) { return eg2d_set_patch(g, EG2D_SIDE_IMAX, 0, 8, EG2D_PATCH_CUT, "x"); }
+static int r_patch_range(eg2d_grid *g) { return eg2d_set_patch(g, EG2D_SIDE_JMAX, 3, 9, EG2D_PATCH_WALL, "x"); }
+
 /*---------------------------------------------------------------------
  * The table
  *-------------------------------------------------------------------*/
@@ -593,6 +602,25 @@ static const bad_input rows[] = {
      "eg2d_curve_read_airfoil: Lednicer file \"*/eg2d-bad-input-*\" (line 2): announces 3e+33 + 2 points but has 6", 0},
     {"a weight of DBL_MAX (the control's sums overflowed before)", "eg2d_iterate(g, 3, NULL), w[40] = DBL_MAX",
      S_INIT, r_huge_weight, EG2D_OK, "", KEEPS_WORK},
+    {"a boundary patch overlapping another", "eg2d_set_patch(g, EG2D_SIDE_JMIN, 2, 6, EG2D_PATCH_INFLOW, \"inlet\")",
+     S_SQUARE, r_patch_overlap, EG2D_ERR_ARGUMENT,
+     "eg2d_set_patch: side JMIN nodes [2, 6] overlap patch \"plate\" [0, 4]; set the same range to replace it, or "
+     "eg2d_clear_patches",
+     0},
+    {"a patch name with a space", "eg2d_set_patch(g, EG2D_SIDE_JMIN, 0, 8, EG2D_PATCH_WALL, \"my wall\")", S_SQUARE,
+     r_patch_name, EG2D_ERR_ARGUMENT,
+     "eg2d_set_patch: name \"my wall\": character 3 is not a letter, digit, '_' or '-'", 0},
+    {"a patch on the side an O-grid lacks", "eg2d_set_patch(g, EG2D_SIDE_IMIN, 0, 8, EG2D_PATCH_WALL, \"x\")",
+     S_OGRID, r_patch_ogrid_imin, EG2D_ERR_ARGUMENT,
+     "eg2d_set_patch: side IMIN: the O-grid topology has no such side (its i-cut is periodic)", 0},
+    {"a patch of the reported-only type CUT", "eg2d_set_patch(g, EG2D_SIDE_IMAX, 0, 8, EG2D_PATCH_CUT, \"x\")",
+     S_SQUARE, r_patch_cut_type, EG2D_ERR_ARGUMENT,
+     "eg2d_set_patch: type = 5: not one of EG2D_PATCH_WALL (0), FARFIELD (1), OUTFLOW (2), INFLOW (3), SYMMETRY "
+     "(4); a cut is the topology's",
+     0},
+    {"a patch beyond the side's last node", "eg2d_set_patch(g, EG2D_SIDE_JMAX, 3, 9, EG2D_PATCH_WALL, \"x\")",
+     S_SQUARE, r_patch_range, EG2D_ERR_ARGUMENT,
+     "eg2d_set_patch: first = 3, last = 9: need 0 <= first < last <= 8 (side JMAX has 9 nodes)", 0},
     {"an allocation during a call fails (1000 x 1000, 4 MB margin)", "eg2d_initialize(g, EG2D_INIT_TFI)", S_BIG,
      r_init_oom, EG2D_ERR_MEMORY, "eg2d_initialize: out of memory", MEMORY_LIMIT},
 };

@@ -88,4 +88,9 @@ PROTOTYPES = {
     "eg2d_clustering_map": (c_int, [c_int, c_double, c_double, c_double, c_int, double_p]),
     "eg2d_tensor_parameter_grid": (c_int, [c_int, c_int, double_p, double_p, double_p, double_p]),
     "eg2d_set_weight": (c_int, [grid_p, double_p]),
+    # Boundary patches
+    "eg2d_set_patch": (c_int, [grid_p, c_int, c_int, c_int, c_int, c_char_p]),
+    "eg2d_clear_patches": (c_int, [grid_p]),
+    "eg2d_get_patch_count": (c_int, [grid_p, int_p]),
+    "eg2d_get_patch": (c_int, [grid_p, c_int, int_p, int_p, int_p, int_p, c_char_p, c_int]),
 }

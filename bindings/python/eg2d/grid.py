@@ -256,6 +256,26 @@ class Grid(Handle):
             out.append((it.value, buf.value.decode()))
         return out
 
+    def set_patch(self, side, first, last, type, name):
+        """Names and types nodes first..last of a side (PATCH_* type) for the solver-ready formats."""
+        self._check(lib.eg2d_set_patch(self._handle(), int(side), int(first), int(last), int(type), name.encode()))
+
+    def clear_patches(self):
+        """Back to the topology's default patches."""
+        self._check(lib.eg2d_clear_patches(self._handle()))
+
+    def get_patches(self):
+        """The whole boundary as the writers see it: (side, first, last, type, name) per stretch."""
+        n = c_int()
+        self._check(lib.eg2d_get_patch_count(self._handle(), byref(n)))
+        out = []
+        buf = create_string_buffer(64)
+        for k in range(n.value):
+            v = [c_int() for _ in range(4)]
+            self._check(lib.eg2d_get_patch(self._handle(), k, *(byref(x) for x in v), buf, len(buf)))
+            out.append((v[0].value, v[1].value, v[2].value, v[3].value, buf.value.decode()))
+        return out
+
     def get_quality(self, metric):
         v = c_double()
         self._check(lib.eg2d_get_quality(self._handle(), int(metric), byref(v)))
