@@ -311,6 +311,9 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
 #define EG2D_PARAM_SVG_QUALITY      300  /* output 300-399. EG2D_FORMAT_SVG colours cells by this
                                             EG2D_QUALITY_* metric (one with per-cell values);
                                             -1 (default): no colouring */
+#define EG2D_PARAM_SPAN             301  /* (0, 1e30], default 1: the thickness (z) of the one
+                                            layer of cells of the 3-D files: EG2D_FORMAT_OPENFOAM
+                                            and EG2D_PLOT3D_EXTRUDED */
 #define EG2D_PARAM_HERMITE_SPACING  400  /* geometry and initial grid 400-499. (0, 10], default 1:
                                             alpha of EG2D_INIT_HERMITE */
 EG2D_API int eg2d_set_parameter(eg2d_grid *grid, int param, double value);
@@ -601,7 +604,17 @@ EG2D_API int eg2d_get_cell_quality(const eg2d_grid *grid, int metric, double *va
  * points with z = 0 and every per-cell quality metric as cell data (arrays
  * "folded", "area", "skewness", "aspect_ratio", "smoothness_i", "smoothness_j").
  * EG2D_FORMAT_CGNS: one base (cell dimension 2, physical dimension 2), one
- * structured zone "eg2d" with CoordinateX, CoordinateY. It is an optional
+ * structured zone "eg2d" with CoordinateX, CoordinateY, the per-cell
+ * metrics as a cell-centred FlowSolution "Quality", and the boundary
+ * patches (eg2d_set_patch) as a ZoneBC: one BC_t per stretch, named by its
+ * patch (a name's further stretches name_2, name_3, ...), of type BCWall,
+ * BCFarfield, BCOutflow, BCInflow or BCSymmetryPlane on its vertex
+ * PointRange, in the Family_t of its patch name (whose FamilyBC has that
+ * type). A cut is a ZoneGridConnectivity of the zone with itself, listed
+ * from both sides: an O-grid's i = 1 with i = ni ("cut_imin", "cut_imax",
+ * transform [1, 2]); a C-grid's lower wake i = 1..w+1, j = 1 with the
+ * upper wake i = ni..ni-w ("wake_lower", "wake_upper", transform [-1, -2];
+ * w the trailing-edge index). It is an optional
  * part: libeg2d loads the plugin libeg2d_cgns.so (built when libcgns is
  * found, installed next to libeg2d.so; EG2D_PLUGIN_DIR overrides where it is
  * looked for) when this format is asked for, so that libeg2d itself never
@@ -612,7 +625,30 @@ EG2D_API int eg2d_get_cell_quality(const eg2d_grid *grid, int metric, double *va
  * (1-based, 17 digits) and plots the grid with the boundary in red, Khattri (2006).
  * EG2D_FORMAT_SVG: a picture for a browser: grid lines, the boundary drawn
  * thicker, and cells coloured by the metric EG2D_PARAM_SVG_QUALITY when it
- * is set (blue = best to red = worst of the grid, with a legend). */
+ * is set (blue = best to red = worst of the grid, with a legend).
+ *
+ * Solver-ready formats: the boundary patches (eg2d_set_patch) become the
+ * boundary conditions, and a cut (O-grid, C-grid wake) is interior: its
+ * duplicate nodes are merged, or connected 1-to-1 in CGNS. A C-grid needs
+ * JMIN set (EG2D_ERR_STATE before); a patch left on the cut is
+ * EG2D_ERR_ARGUMENT.
+ * EG2D_FORMAT_SU2: SU2's native mesh, NDIME= 2: the cells as quadrilaterals
+ * (type 9) with corners counter-clockwise, the points (17 digits) with the
+ * cut's duplicates merged, and NMARK markers, one per patch name
+ * (MARKER_TAG= name) with its boundary edges as lines (type 3): every
+ * boundary edge in exactly one marker.
+ * EG2D_FORMAT_OPENFOAM: `path` is an OpenFOAM case directory (made if
+ * missing; its parent must exist) for a 2-D run. constant/polyMesh holds
+ * the grid as one layer of hexahedra between z = 0 and z =
+ * EG2D_PARAM_SPAN (points, faces, owner, neighbour, boundary; ASCII), the
+ * cut merged into internal faces, a patch per patch name (type wall for
+ * EG2D_PATCH_WALL, symmetry for SYMMETRY, patch for the others) and the
+ * front and back faces as the patch "frontAndBack" of type empty.
+ * system/controlDict, fvSchemes and fvSolution are written, minimal, where
+ * the case has none (so checkMesh runs on it as it is; a case's own files
+ * are kept). Each file is written all-or-nothing and the mesh files are put
+ * in place together once all are complete; directories the call made are
+ * removed again when it fails. Takes no flags. */
 #define EG2D_FORMAT_PLOT3D       0
 #define EG2D_FORMAT_PLOT3D_ASCII 1
 #define EG2D_FORMAT_VTS          2
@@ -620,6 +656,8 @@ EG2D_API int eg2d_get_cell_quality(const eg2d_grid *grid, int metric, double *va
 #define EG2D_FORMAT_GMV          4
 #define EG2D_FORMAT_MATLAB       5
 #define EG2D_FORMAT_SVG          6
+#define EG2D_FORMAT_SU2          7
+#define EG2D_FORMAT_OPENFOAM     8
 #define EG2D_PLOT3D_3D         0x100
 #define EG2D_PLOT3D_MULTI      0x200
 #define EG2D_PLOT3D_SINGLE     0x400

@@ -31,6 +31,7 @@ const ParameterInfo kParameters[] = {
     {EG2D_PARAM_WALL_LAYER, "wall_layer", 0.0, 2.0, false, false, true, false, &Settings::wall_layer},
     {EG2D_PARAM_HERMITE_SPACING, "hermite_spacing", 0.0, 10.0, true, false, false, false, &Settings::hermite_spacing},
     {EG2D_PARAM_SVG_QUALITY, "svg_quality", -1.0, 99.0, false, false, true, false, &Settings::svg_quality},
+    {EG2D_PARAM_SPAN, "span", 0.0, 1e30, true, false, false, false, &Settings::span},
     // The hyperbolic march (src/grid/hyperbolic.cpp).
     {EG2D_PARAM_MARCH_DISTANCE, "march_distance", 0.0, 1e30, true, false, false, true, &Settings::march_distance},
     {EG2D_PARAM_MARCH_FIRST_HEIGHT, "march_first_height", 0.0, 1e30, true, false, false, true,

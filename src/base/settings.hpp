@@ -32,6 +32,7 @@ struct Settings {
     double march_end_imin = 0;        // MarchEnd of the i = 0 end (open sides)
     double march_end_imax = 0;        // and of the i = ni-1 end
     double svg_quality = -1;          // EG2D_QUALITY_* colouring SVG cells, -1 none
+    double span = 1.0;                // thickness of the one cell layer of the 3-D files
 
     // Approximate factorisation (seed 004 eqs 5-13); 0 = automatic where allowed.
     double af_dtau_min = 0.5;         // smallest step of the cycle, in units of 1/(2(alpha+gamma))

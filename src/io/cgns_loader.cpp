@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "base/error.hpp"
+#include "base/patches.hpp"
 #include "io/cgns_plugin.h"
 #include "io/formats.hpp"
 #include "quality/quality.hpp"
@@ -63,6 +64,51 @@ eg2d_cgns_write_fn load_plugin() {
                     EG2D_CGNS_PLUGIN_NAME, why.c_str()));
     return loaded;
 }
+// The patches as BC_t ranges and the cut as 1-to-1 connections (CGNS SIDS,
+// 1-based node ranges); the strings live in `names`.
+struct CgnsBoundary {
+    std::vector<std::string> names;
+    std::vector<eg2d_cgns_patch> patches;
+    std::vector<eg2d_cgns_connection> connections;
+};
+
+CgnsBoundary cgns_boundary(const Grid &g) {
+    const std::vector<Patch> resolved = resolve_patches(g);
+    const std::vector<PatchGroup> groups = group_patches(resolved);
+    CgnsBoundary b;
+    b.names.reserve(2 * resolved.size() + 4);  // c_str()s stay valid: no reallocation
+    const int ni = g.ni(), nj = g.nj();
+    for (const PatchGroup &group : groups)
+        for (std::size_t k = 0; k < group.stretches.size(); ++k) {
+            const Patch &p = group.stretches[k];
+            // BC_t names are unique in a zone: a name's second stretch is name_2.
+            b.names.push_back(k == 0 ? group.name : format("%s_%zu", group.name.c_str(), k + 1));
+            const char *name = b.names.back().c_str();
+            b.names.push_back(group.name);
+            eg2d_cgns_patch c{name, b.names.back().c_str(), static_cast<int>(p.type), {0, 0, 0, 0}};
+            const int a = p.first + 1, e = p.last + 1;
+            switch (p.side) {
+            case Side::JMin: c.range[0] = a; c.range[1] = 1; c.range[2] = e; c.range[3] = 1; break;
+            case Side::IMax: c.range[0] = ni; c.range[1] = a; c.range[2] = ni; c.range[3] = e; break;
+            case Side::JMax: c.range[0] = a; c.range[1] = nj; c.range[2] = e; c.range[3] = nj; break;
+            case Side::IMin: c.range[0] = 1; c.range[1] = a; c.range[2] = 1; c.range[3] = e; break;
+            }
+            b.patches.push_back(c);
+        }
+    // Each cut from both of its sides, as the SIDS list a 1-to-1 interface.
+    if (g.topology() == Topology::O) {
+        b.connections.push_back({"cut_imin", {1, 1, 1, nj}, {ni, 1, ni, nj}, {1, 2}});
+        b.connections.push_back({"cut_imax", {ni, 1, ni, nj}, {1, 1, 1, nj}, {1, 2}});
+    } else if (g.topology() == Topology::C) {
+        // Lower wake i = 0..w runs outflow to trailing edge; the upper wake
+        // i = ni-1-w..ni-1 back out: i maps to ni-1-i, and across the cut
+        // +j on one side is -j on the other.
+        const int w = g.cut_wake();
+        b.connections.push_back({"wake_lower", {1, 1, w + 1, 1}, {ni, 1, ni - w, 1}, {-1, -2}});
+        b.connections.push_back({"wake_upper", {ni - w, 1, ni, 1}, {w + 1, 1, 1, 1}, {-1, -2}});
+    }
+    return b;
+}
 }  // namespace
 
 void write_cgns(const WriteRequest &r, OutputFile &out) {
@@ -74,10 +120,13 @@ void write_cgns(const WriteRequest &r, OutputFile &out) {
         names.push_back(f.name.c_str());
         values.push_back(f.values.data());
     }
+    const CgnsBoundary b = cgns_boundary(r.grid);
     out.close_stream();  // the plugin writes the temporary by its name
     char message[512] = "";
     if (write(out.temp_path().c_str(), r.grid.ni(), r.grid.nj(), r.grid.x.data(), r.grid.y.data(),
-              static_cast<int>(fields.size()), names.data(), values.data(), message, sizeof message) != 0)
+              static_cast<int>(fields.size()), names.data(), values.data(), static_cast<int>(b.patches.size()),
+              b.patches.data(), static_cast<int>(b.connections.size()), b.connections.data(), message,
+              sizeof message) != 0)
         fail(Failure::Io, format("%s: %s", out.path().c_str(), message));
 }
 

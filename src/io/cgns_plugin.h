@@ -7,16 +7,36 @@
 #define EG2D_CGNS_PLUGIN_H
 #include <stddef.h>
 
-#define EG2D_CGNS_PLUGIN_ABI 1
+#define EG2D_CGNS_PLUGIN_ABI 2
 #define EG2D_CGNS_PLUGIN_NAME "libeg2d_cgns.so"
+
+/* A boundary condition: BC_t `name` (unique in the zone) of the type
+ * EG2D_PATCH_* `type` on the nodes range[] = {i1, j1, i2, j2} (1-based),
+ * in the family `family` (one Family_t per patch name, whose FamilyBC has
+ * the same type). */
+typedef struct {
+    const char *name, *family;
+    int type;
+    int range[4];
+} eg2d_cgns_patch;
+
+/* A 1-to-1 connection of the zone with itself across a cut: the nodes
+ * range[] match the nodes donor[] (both {i1, j1, i2, j2}, 1-based) with the
+ * index transform transform[] (CGNS's short form: +-1, +-2). */
+typedef struct {
+    const char *name;
+    int range[4], donor[4], transform[2];
+} eg2d_cgns_connection;
 
 /* Writes one base (cell and physical dimension 2) with one structured zone
  * "eg2d" of ni x nj nodes (x, y in Fortran order) and, when nfields > 0, a
  * FlowSolution "Quality" at cell centres with the named (ni-1)*(nj-1)
- * arrays. Returns 0, or nonzero with a message in message[message_size]. */
+ * arrays; a ZoneBC with the patches and a ZoneGridConnectivity with the
+ * connections. Returns 0, or nonzero with a message in message[message_size]. */
 typedef int (*eg2d_cgns_write_fn)(const char *path, int ni, int nj, const double *x, const double *y, int nfields,
-                                  const char *const *names, const double *const *values, char *message,
-                                  size_t message_size);
+                                  const char *const *names, const double *const *values, int npatches,
+                                  const eg2d_cgns_patch *patches, int nconnections,
+                                  const eg2d_cgns_connection *connections, char *message, size_t message_size);
 typedef int (*eg2d_cgns_abi_fn)(void);
 
 #endif

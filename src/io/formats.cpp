@@ -13,6 +13,8 @@ void write_cgns(const WriteRequest &r, OutputFile &out);          // cgns_loader
 void write_gmv(const WriteRequest &r, OutputFile &out);           // gmv.cpp
 void write_matlab(const WriteRequest &r, OutputFile &out);        // matlab.cpp
 void write_svg(const WriteRequest &r, OutputFile &out);           // svg.cpp
+void write_su2(const WriteRequest &r, OutputFile &out);           // su2.cpp
+void write_openfoam(const WriteRequest &r, const std::string &dir);  // openfoam.cpp
 
 namespace {
 constexpr int kFormatMask = 0xff;
@@ -26,8 +28,20 @@ const FileFormat kFormats[] = {
     {EG2D_FORMAT_GMV, "gmv", 0, write_gmv},
     {EG2D_FORMAT_MATLAB, "matlab", 0, write_matlab},
     {EG2D_FORMAT_SVG, "svg", 0, write_svg},
+    {EG2D_FORMAT_SU2, "su2", 0, write_su2},
+};
+
+// Formats that are a directory of files (each written all-or-nothing).
+const DirectoryFormat kDirectoryFormats[] = {
+    {EG2D_FORMAT_OPENFOAM, "openfoam", write_openfoam},
 };
 }  // namespace
+
+const DirectoryFormat *find_directory_format(int id) {
+    for (const DirectoryFormat &f : kDirectoryFormats)
+        if (f.id == id) return &f;
+    return nullptr;
+}
 
 const FileFormat *find_format(int id) {
     for (const FileFormat &f : kFormats)
@@ -36,6 +50,13 @@ const FileFormat *find_format(int id) {
 }
 
 void write_grid(const Grid &grid, const Settings &settings, const char *path, int id) {
+    if (const DirectoryFormat *d = id >= 0 ? find_directory_format(id & kFormatMask) : nullptr) {
+        if (id & ~kFormatMask)
+            fail(Failure::Argument, format("format = %#x: the %s format takes no flags", id, d->name));
+        if (!*path) fail(Failure::Argument, "path is empty");
+        d->write(WriteRequest{grid, settings, 0}, path);
+        return;
+    }
     const FileFormat *f = id >= 0 ? find_format(id & kFormatMask) : nullptr;
     if (!f) fail(Failure::Argument, format("format = %d: no such file format", id));
     const int flags = id & ~kFormatMask;

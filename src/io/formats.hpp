@@ -2,6 +2,8 @@
 // listed in formats.cpp's table (format id -> writer); a format that accepts
 // variant flags (EG2D_PLOT3D_*, OR-ed into the id) lists them.
 #pragma once
+#include <string>
+
 #include "base/settings.hpp"
 #include "base/grid.hpp"
 #include "io/output_file.hpp"
@@ -20,6 +22,15 @@ struct FileFormat {
     int allowed_flags;      // the flags this writer understands
     void (*write)(const WriteRequest &request, OutputFile &out);
 };
+
+// A format that is a directory of files (an OpenFOAM case): the writer
+// makes the directory and writes each file through an OutputFile.
+struct DirectoryFormat {
+    int id;
+    const char *name;
+    void (*write)(const WriteRequest &request, const std::string &directory);
+};
+const DirectoryFormat *find_directory_format(int id);
 
 // nullptr if there is no format with that id.
 const FileFormat *find_format(int id);

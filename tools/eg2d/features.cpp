@@ -127,6 +127,8 @@ const std::vector<Feature> &formats() {
         {"gmv", EG2D_FORMAT_GMV, true, ".gmv"},
         {"matlab", EG2D_FORMAT_MATLAB, true, ".m"},
         {"svg", EG2D_FORMAT_SVG, true, ".svg"},
+        {"su2", EG2D_FORMAT_SU2, true, ".su2"},
+        {"openfoam", EG2D_FORMAT_OPENFOAM, true, "_foam"},
     };
     return t;
 }

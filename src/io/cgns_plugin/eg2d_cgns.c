@@ -2,8 +2,22 @@
  * A separate module so that only this file links libcgns. */
 #include <cgnslib.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "io/cgns_plugin.h"
+
+/* EG2D_PATCH_* (0 wall .. 4 symmetry) as CGNS boundary-condition types
+ * (the SIDS' BCType_t). */
+static BCType_t bc_type(int type) {
+    switch (type) {
+    case 0: return BCWall;
+    case 1: return BCFarfield;
+    case 2: return BCOutflow;
+    case 3: return BCInflow;
+    case 4: return BCSymmetryPlane;
+    }
+    return BCTypeUserDefined;
+}
 
 #if defined(__GNUC__)
 #define PLUGIN_API __attribute__((visibility("default")))
@@ -21,8 +35,10 @@ static int failed(int fn, const char *what, char *message, size_t size) {
 
 PLUGIN_API int eg2d_cgns_plugin_write(const char *path, int ni, int nj, const double *x, const double *y,
                                       int nfields, const char *const *names, const double *const *values,
-                                      char *message, size_t message_size) {
-    int fn = -1, base, zone, coord, sol, field, k;
+                                      int npatches, const eg2d_cgns_patch *patches, int nconnections,
+                                      const eg2d_cgns_connection *connections, char *message,
+                                      size_t message_size) {
+    int fn = -1, base, zone, coord, sol, field, k, m, bc, fam, fambc, conn;
     cgsize_t size[6];
     if (cg_open(path, CG_MODE_WRITE, &fn)) return failed(-1, "cg_open", message, message_size);
     if (cg_base_write(fn, "Base", 2, 2, &base)) return failed(fn, "cg_base_write", message, message_size);
@@ -53,6 +69,37 @@ PLUGIN_API int eg2d_cgns_plugin_write(const char *path, int ni, int nj, const do
         for (k = 0; k < nfields; ++k)
             if (cg_field_write(fn, base, zone, sol, RealDouble, names[k], values[k], &field))
                 return failed(fn, "cg_field_write", message, message_size);
+    }
+    /* One Family_t per patch name (a family's first BC names it), so that a
+     * name split over stretches is one boundary for a solver. */
+    for (k = 0; k < npatches; ++k) {
+        for (m = 0; m < k; ++m)
+            if (!strcmp(patches[m].family, patches[k].family)) break;
+        if (m < k) continue;
+        if (cg_family_write(fn, base, patches[k].family, &fam) ||
+            cg_fambc_write(fn, base, fam, "FamBC", bc_type(patches[k].type), &fambc))
+            return failed(fn, "cg_family_write", message, message_size);
+    }
+    for (k = 0; k < npatches; ++k) {
+        cgsize_t range[4];
+        for (m = 0; m < 4; ++m) range[m] = patches[k].range[m];
+        if (cg_boco_write(fn, base, zone, patches[k].name, bc_type(patches[k].type), PointRange, 2, range, &bc))
+            return failed(fn, "cg_boco_write", message, message_size);
+        if (cg_goto(fn, base, "Zone_t", zone, "ZoneBC_t", 1, "BC_t", bc, "end") ||
+            cg_famname_write(patches[k].family))
+            return failed(fn, "cg_famname_write", message, message_size);
+    }
+    for (k = 0; k < nconnections; ++k) {
+        cgsize_t range[4], donor[4];
+        int transform[2];
+        for (m = 0; m < 4; ++m) {
+            range[m] = connections[k].range[m];
+            donor[m] = connections[k].donor[m];
+        }
+        transform[0] = connections[k].transform[0];
+        transform[1] = connections[k].transform[1];
+        if (cg_1to1_write(fn, base, zone, connections[k].name, "eg2d", range, donor, transform, &conn))
+            return failed(fn, "cg_1to1_write", message, message_size);
     }
     if (cg_close(fn)) return failed(-1, "cg_close", message, message_size);
     return 0;
