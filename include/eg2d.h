@@ -598,6 +598,11 @@ EG2D_API int eg2d_get_cell_quality(const eg2d_grid *grid, int metric, double *va
  *   EG2D_PLOT3D_BIG_ENDIAN big-endian markers, integers and reals (binary only).
  *   EG2D_PLOT3D_NO_MARKERS a C stream ("binary" rather than "unformatted" in
  *                      Pointwise): the same numbers without record markers.
+ *   EG2D_PLOT3D_EXTRUDED the 3D form with two k-planes, z = 0 and z =
+ *                      EG2D_PARAM_SPAN: one layer of cells, for 3-D tools
+ *                      such as OpenFOAM's plot3dToFoam (without -2D; it
+ *                      merges the cut's coincident points). Implies 3D.
+ *                      eg2d_read_plot3d does not read it back (nk = 2).
  * e.g. eg2d_write(g, "grid.x", EG2D_FORMAT_PLOT3D | EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI).
  *
  * EG2D_FORMAT_VTS: VTK XML StructuredGrid (ASCII, 17 significant digits),
@@ -663,6 +668,7 @@ EG2D_API int eg2d_get_cell_quality(const eg2d_grid *grid, int metric, double *va
 #define EG2D_PLOT3D_SINGLE     0x400
 #define EG2D_PLOT3D_BIG_ENDIAN 0x800
 #define EG2D_PLOT3D_NO_MARKERS 0x1000
+#define EG2D_PLOT3D_EXTRUDED   0x2000
 EG2D_API int eg2d_write(const eg2d_grid *grid, const char *path, int format);
 
 /* Reads grid `block` (0-based) of a Plot3D whole-grid file of any variant

@@ -18,11 +18,13 @@ void write_openfoam(const WriteRequest &r, const std::string &dir);  // openfoam
 
 namespace {
 constexpr int kFormatMask = 0xff;
-constexpr int kPlot3dFlags = EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI | EG2D_PLOT3D_SINGLE | EG2D_PLOT3D_BIG_ENDIAN | EG2D_PLOT3D_NO_MARKERS;
+constexpr int kPlot3dFlags = EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI | EG2D_PLOT3D_SINGLE | EG2D_PLOT3D_BIG_ENDIAN |
+                             EG2D_PLOT3D_NO_MARKERS | EG2D_PLOT3D_EXTRUDED;
 
 const FileFormat kFormats[] = {
     {EG2D_FORMAT_PLOT3D, "plot3d", kPlot3dFlags, write_plot3d},
-    {EG2D_FORMAT_PLOT3D_ASCII, "plot3d-ascii", EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI, write_plot3d_ascii},
+    {EG2D_FORMAT_PLOT3D_ASCII, "plot3d-ascii", EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI | EG2D_PLOT3D_EXTRUDED,
+     write_plot3d_ascii},
     {EG2D_FORMAT_VTS, "vts", 0, write_vts},
     {EG2D_FORMAT_CGNS, "cgns", 0, write_cgns},
     {EG2D_FORMAT_GMV, "gmv", 0, write_gmv},

@@ -1,5 +1,6 @@
 // Plot3D writers: Fortran-unformatted binary and ASCII, 2D or 3D (one
-// k-plane, z = 0), single- or multi-grid header (layout in plot3d.hpp).
+// k-plane, z = 0, or two, z = 0 and the span), single- or multi-grid header
+// (layout in plot3d.hpp).
 #include <cstdint>
 #include <vector>
 
@@ -46,41 +47,54 @@ private:
     std::size_t bytes_ = 0;
 };
 
-std::vector<std::int32_t> dimensions(const Grid &g, bool three_d) {
+// EG2D_PLOT3D_EXTRUDED: the 3-D form with two k-planes, z = 0 and z = span
+// (one layer of cells, what 3-D tools such as OpenFOAM's plot3dToFoam
+// without -2D need); EG2D_PLOT3D_3D alone: one k-plane, z = 0.
+int k_planes(int flags) { return (flags & EG2D_PLOT3D_EXTRUDED) ? 2 : (flags & EG2D_PLOT3D_3D) ? 1 : 0; }
+
+std::vector<std::int32_t> dimensions(const Grid &g, int planes) {
     std::vector<std::int32_t> d{g.ni(), g.nj()};
-    if (three_d) d.push_back(1);
+    if (planes > 0) d.push_back(planes);
     return d;
+}
+
+// x, y, z of every k-plane in turn (Fortran order: i fastest, then j, then k).
+std::vector<std::vector<double>> columns(const WriteRequest &r, int planes) {
+    const std::size_t n = r.grid.size();
+    if (planes == 0) return {r.grid.x, r.grid.y};
+    std::vector<std::vector<double>> c(3);
+    for (int k = 0; k < planes; ++k) {
+        c[0].insert(c[0].end(), r.grid.x.begin(), r.grid.x.end());
+        c[1].insert(c[1].end(), r.grid.y.begin(), r.grid.y.end());
+        c[2].insert(c[2].end(), n, k == 0 ? 0.0 : r.settings.span);
+    }
+    return c;
 }
 }  // namespace
 
 void write_plot3d(const WriteRequest &r, OutputFile &out) {
-    const bool three_d = r.flags & EG2D_PLOT3D_3D, single = r.flags & EG2D_PLOT3D_SINGLE;
+    const bool single = r.flags & EG2D_PLOT3D_SINGLE;
+    const int planes = k_planes(r.flags);
     RecordWriter rec(out, r.flags & EG2D_PLOT3D_BIG_ENDIAN, !(r.flags & EG2D_PLOT3D_NO_MARKERS));
     if (r.flags & EG2D_PLOT3D_MULTI) rec.ints({1});
-    rec.ints(dimensions(r.grid, three_d));
-    const std::size_t n = r.grid.size(), real = single ? 4 : 8;
-    rec.begin(n * real * (three_d ? 3 : 2));
-    const std::vector<double> zero(three_d ? n : 0, 0.0);
-    for (const std::vector<double> *v : {&r.grid.x, &r.grid.y, &zero}) {
-        if (v->empty()) continue;
-        if (single) rec.reals<float>(*v);
-        else rec.reals<double>(*v);
+    rec.ints(dimensions(r.grid, planes));
+    const std::vector<std::vector<double>> c = columns(r, planes);
+    const std::size_t real = single ? 4 : 8;
+    rec.begin(c[0].size() * real * c.size());
+    for (const std::vector<double> &v : c) {
+        if (single) rec.reals<float>(v);
+        else rec.reals<double>(v);
     }
     rec.end();
 }
 
 void write_plot3d_ascii(const WriteRequest &r, OutputFile &out) {
-    const bool three_d = r.flags & EG2D_PLOT3D_3D;
+    const int planes = k_planes(r.flags);
     if (r.flags & EG2D_PLOT3D_MULTI) out.print("1\n");
-    for (std::int32_t d : dimensions(r.grid, three_d)) out.print("%d ", d);
+    for (std::int32_t d : dimensions(r.grid, planes)) out.print("%d ", d);
     out.print("\n");
-    const std::size_t n = r.grid.size();
-    auto column = [&](const std::vector<double> *v) {
-        for (std::size_t k = 0; k < n; ++k) out.real(v ? (*v)[k] : 0.0, (k % 4 == 3 || k + 1 == n) ? '\n' : ' ');
-    };
-    column(&r.grid.x);
-    column(&r.grid.y);
-    if (three_d) column(nullptr);
+    for (const std::vector<double> &v : columns(r, planes))
+        for (std::size_t k = 0; k < v.size(); ++k) out.real(v[k], (k % 4 == 3 || k + 1 == v.size()) ? '\n' : ' ');
 }
 
 }  // namespace eg2d

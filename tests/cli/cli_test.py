@@ -113,7 +113,7 @@ class ErrorMessages(unittest.TestCase):
     def test_unknown_key(self):
         self.check('size = [9, 9]\nsovler = "psor"\n' + self.GOOD_SIDES, 3,
                    "CASE:2:1: key 'sovler': unknown key (expected one of: title, size, topology, system, "
-                   "initial, constants, solver, sides, controls, output, hermite_spacing)")
+                   "initial, constants, solver, sides, controls, output, patches, hermite_spacing)")
 
     def test_unknown_key_in_a_side(self):
         self.check('size = [9, 9]\n' + self.GOOD_SIDES + 'z = "1"\n', 3,
@@ -710,6 +710,68 @@ class Progress(unittest.TestCase):
             self.assertEqual(p.returncode, 130, rest + err)
             self.assertRegex(rest, r"(?m)^interrupted at iteration \d+, residual .*: no files written$")
             self.assertFalse(os.path.exists(out_dir))
+
+
+class Patches(unittest.TestCase):
+    """[[patches]] name and type stretches of the sides; the solver formats carry them."""
+
+    CASE = 'size = [9, 5]\n' + ErrorMessages.GOOD_SIDES + textwrap.dedent("""
+        [[patches]]
+        side = "left"
+        type = "inflow"
+        name = "inlet"
+        [[patches]]
+        side = "bottom"
+        first = 2
+        last = 6
+        type = "symmetry"
+        name = "axis"
+        [output]
+        formats = ["su2", "openfoam"]
+        span = 0.25
+        """)
+
+    def run_case(self, text, d):
+        path = os.path.join(d, "case.toml")
+        with open(path, "w") as f:
+            f.write(text)
+        return run("run", path, "-o", os.path.join(d, "out"), "--quiet")
+
+    def test_patches_reach_the_files(self):
+        with tempfile.TemporaryDirectory() as d:
+            code, out, err = self.run_case(self.CASE, d)
+            self.assertEqual(code, 0, err)
+            with open(os.path.join(d, "out", "case.su2")) as f:
+                su2 = f.read()
+            markers = re.findall(r"MARKER_TAG= (\S+)\nMARKER_ELEMS= (\d+)", su2)
+            # bottom's default "jmin" keeps the edges either side of "axis"
+            self.assertEqual(markers, [("jmin", "4"), ("axis", "4"), ("imax", "4"), ("jmax", "8"), ("inlet", "4")])
+            with open(os.path.join(d, "out", "case_foam", "constant", "polyMesh", "boundary")) as f:
+                boundary = f.read()
+            self.assertEqual(re.findall(r"^    (\w+)\n    \{\n        type +(\w+);", boundary, re.M),
+                             [("jmin", "wall"), ("axis", "symmetry"), ("imax", "wall"), ("jmax", "wall"),
+                              ("inlet", "patch"), ("frontAndBack", "empty")])
+            with open(os.path.join(d, "out", "case_foam", "constant", "polyMesh", "points")) as f:
+                z = {float(m) for m in re.findall(r"^\(\S+ \S+ (\S+)\)$", f.read(), re.M)}
+            self.assertEqual(z, {0.0, 0.25})
+
+    def test_bad_patches(self):
+        with tempfile.TemporaryDirectory() as d:
+            text = self.CASE.replace('side = "left"', 'side = "west"')
+            code, _, err = self.run_case(text, d)
+            self.assertEqual(code, 3)
+            self.assertIn("key 'patches[0].side': \"west\" is not one of: bottom, right, top, left", err)
+            text = self.CASE.replace("last = 6", "last = 9")
+            code, _, err = self.run_case(text, d)
+            self.assertEqual(code, 3)
+            self.assertIn("first = 2, last = 9: need whole numbers 0 <= first < last <= 8 (side bottom has 9 nodes)",
+                          err)
+            # the library's own check, located at the table
+            text = self.CASE.replace('side = "left"', 'side = "bottom"')
+            code, _, err = self.run_case(text, d)
+            self.assertNotEqual(code, 0)
+            self.assertIn("patches[1]", err)
+            self.assertIn("eg2d_set_patch: side JMIN nodes [2, 6] overlap patch \"inlet\" [0, 8]", err)
 
 
 def main():

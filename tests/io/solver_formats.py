@@ -116,6 +116,27 @@ def check_openfoam(d, name, ni, nj, wake, checkmesh):
     check(walls == want, f"openfoam {name}: wall patches {walls} == {want}")
 
 
+def check_plot3d(d, name, ni, nj, wake, checkmesh):
+    """The extruded ASCII Plot3D through plot3dToFoam (which merges coincident
+    points, so a cut becomes internal), then checkMesh."""
+    case = os.path.join(d, name + "_p3d")
+    os.makedirs(os.path.join(case, "constant"))
+    shutil.copytree(os.path.join(d, name + "_foam", "system"), os.path.join(case, "system"))
+    env = checkmesh_env()
+    p = subprocess.run([os.path.join(os.path.dirname(checkmesh), "plot3dToFoam"), "-case", case, "-singleBlock",
+                        "-noBlank", os.path.join(d, name + ".p3d")], capture_output=True, text=True, env=env)
+    check(p.returncode == 0, f"plot3d {name}: plot3dToFoam exit {p.returncode}")
+    out = subprocess.run([checkmesh, "-case", case], capture_output=True, text=True, env=env).stdout
+    cells = (ni - 1) * (nj - 1)
+    patches, _ = expected_patches(name, ni, nj, wake)
+    faces = 2 * cells + sum(patches.values())
+    m = re.search(r"^\s*cells:\s+(\d+)", out, re.M)
+    f = re.search(r"^\s+defaultFaces\s+(\d+)", out, re.M)
+    check("\nMesh OK." in out and m and int(m.group(1)) == cells and f and int(f.group(1)) == faces
+          and re.search(r"bounding box \(.*\) \(\S+ \S+ 0\.5\)", out),
+          f"plot3d {name}: checkMesh \"Mesh OK.\", {cells} cells, {faces} boundary faces (the cut merged), span 0.5")
+
+
 def cgns_check(d, name, ni, nj, wake, cgnscheck):
     path = os.path.join(d, name + ".cgns")
     p = subprocess.run([cgnscheck, "-v", path], capture_output=True, text=True)
@@ -168,6 +189,7 @@ def main():
             ni, nj, topology, wake = map(int, f.read().split())
         check_su2(d, name, ni, nj, wake)
         check_openfoam(d, name, ni, nj, wake, checkmesh)
+        check_plot3d(d, name, ni, nj, wake, checkmesh)
         if with_cgns:
             cgns_check(d, name, ni, nj, wake, cgnscheck)
     leftovers = [f for f in os.listdir(d) if ".eg2d-tmp-" in f]

@@ -467,3 +467,24 @@ def test_parameter_grid_clustering_and_weights():
         with pytest.raises(eg2d.ArgumentError):
             g.set_weight(w)
         g.set_weight(None)
+
+
+def test_patches_and_su2(tmp_path):
+    """Patches through the Python wrapper; the SU2 file carries them (read with
+    the file's own MARKER_TAG lines, meshio's check is tests/io)."""
+    with swan(9, 7) as g:
+        assert g.get_patches() == [(eg2d.SIDE_JMIN, 0, 8, eg2d.PATCH_WALL, "jmin"),
+                                   (eg2d.SIDE_IMAX, 0, 6, eg2d.PATCH_WALL, "imax"),
+                                   (eg2d.SIDE_JMAX, 0, 8, eg2d.PATCH_WALL, "jmax"),
+                                   (eg2d.SIDE_IMIN, 0, 6, eg2d.PATCH_WALL, "imin")]
+        g.set_patch(eg2d.SIDE_IMIN, 0, 6, eg2d.PATCH_INFLOW, "inlet")
+        with pytest.raises(eg2d.ArgumentError, match="overlap patch \"inlet\""):
+            g.set_patch(eg2d.SIDE_IMIN, 3, 5, eg2d.PATCH_WALL, "x")
+        assert g.get_patches()[-1] == (eg2d.SIDE_IMIN, 0, 6, eg2d.PATCH_INFLOW, "inlet")
+        g.solve()
+        g.write(str(tmp_path / "g.su2"), eg2d.FORMAT_SU2)
+        text = (tmp_path / "g.su2").read_text()
+        assert "NELEM= 48\n" in text and "NPOIN= 63\n" in text
+        assert "MARKER_TAG= inlet\nMARKER_ELEMS= 6\n" in text
+        g.clear_patches()
+        assert len(g.get_patches()) == 4

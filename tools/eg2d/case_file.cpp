@@ -18,7 +18,7 @@ namespace eg2dtool {
 namespace {
 
 const std::vector<std::string> top_keys = {"title", "size", "topology", "system", "initial", "constants",
-                                           "solver", "sides", "controls", "output"};
+                                           "solver", "sides", "controls", "output", "patches"};
 const std::vector<std::string> controls_keys = {"orthogonality", "wall_spacing",  "line_source", "point_source",
                                                 "source_arrays", "parameter_grid", "weight"};
 
@@ -217,12 +217,47 @@ void read_controls(const Fields &top, Case &c) {
 #endif
 }
 
+// [[patches]]: side (a name of [sides]), first and last node (default: the
+// whole side), type and name, as eg2d_set_patch takes them.
+void read_patches(const Fields &top, Case &c) {
+    if (!top.has("patches")) return;
+    const toml::array &a = top.array("patches");
+    const auto &valid = side_names(c.topology);
+    std::vector<std::string> sides;
+    for (const auto &s : valid) sides.push_back(s.first);
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        const Location l = locate(top.where(), "patches[" + std::to_string(k) + "]", *a.get(k));
+        if (!a.get(k)->is_table()) throw Failure(EXIT_CASE, l.str() + ": expected a table, found " + type_name(*a.get(k)));
+        Fields f(*a.get(k)->as_table(), l, {"side", "first", "last", "type", "name"});
+        f.finish();
+        const std::string side = f.choice("side", "", sides);
+        int id = 0;
+        for (const auto &s : valid)
+            if (s.first == side) id = s.second;
+        const int n = (id == EG2D_SIDE_JMIN || id == EG2D_SIDE_JMAX) ? c.ni : c.nj;
+        const std::string type = f.choice("type", "", {"wall", "farfield", "outflow", "inflow", "symmetry"});
+        const int t = type == "wall" ? EG2D_PATCH_WALL : type == "farfield" ? EG2D_PATCH_FARFIELD
+                    : type == "outflow" ? EG2D_PATCH_OUTFLOW : type == "inflow" ? EG2D_PATCH_INFLOW
+                    : EG2D_PATCH_SYMMETRY;
+        const double first = f.number("first", 0, c.constants), last = f.number("last", n - 1, c.constants);
+        if (!(first >= 0 && first < last && last <= n - 1) || first != static_cast<long>(first) ||
+            last != static_cast<long>(last))
+            throw Failure(EXIT_CASE, f.at(f.has("first") ? "first" : "last").str() + ": first = " + fmt(first) +
+                                         ", last = " + fmt(last) + ": need whole numbers 0 <= first < last <= " +
+                                         std::to_string(n - 1) + " (side " + side + " has " + std::to_string(n) +
+                                         " nodes)");
+        c.patches.push_back({id, static_cast<int>(first), static_cast<int>(last), t, f.text("name"), l});
+    }
+}
+
 void read_output(const Fields &top, Case &c, const std::string &stem) {
     std::string name = stem;
     std::vector<std::pair<std::string, Location>> wanted;
     if (top.has("output")) {
-        Fields f(top.table("output"), top.at("output"), {"name", "formats", "svg_quality"});
+        Fields f(top.table("output"), top.at("output"), {"name", "formats", "svg_quality", "span"});
         f.finish();
+        if (f.has("span"))  // thickness of the 3-D files (OpenFOAM, extruded Plot3D)
+            c.parameters.push_back({EG2D_PARAM_SPAN, f.number("span", c.constants), f.at("span")});
         if (f.has("svg_quality")) {  // colour the picture's cells by a per-cell metric
             c.svg_quality = pick_key(f, "svg_quality", "", cell_metrics()).id;
             c.svg_quality_at = f.at("svg_quality");
@@ -311,6 +346,7 @@ Case read_case(const std::string &text, const std::string &file, const std::stri
     read_solver(top, c);
     read_sides(top, c);
     read_controls(top, c);
+    read_patches(top, c);
     read_output(top, c, stem_of(file));
     return c;
 }

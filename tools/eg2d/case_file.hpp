@@ -34,6 +34,12 @@ struct WallSpacing {  // eg2d_set_wall_spacing
     Location where;
 };
 
+struct PatchSetting {  // eg2d_set_patch
+    int side, first, last, type;
+    std::string name;
+    Location where;
+};
+
 struct Clustering {  // Khattri's (2006) clustering map in one direction (eg2d_clustering_map)
     int kind = -1;      // EG2D_CLUSTER_*; -1: uniform
     double a = 0.5, b = 0, strength = 0;
@@ -71,6 +77,7 @@ struct Case {
     Location weight_at;
     bool parameter_grid = false;  // Khattri (2006): eg2d_set_parameter_grid from two clustering maps
     Clustering cluster_i, cluster_j;
+    std::vector<PatchSetting> patches;  // [[patches]]: boundary conditions of the solver formats
     std::vector<OutputFile> outputs;
     int svg_quality = -1;  // EG2D_QUALITY_* the picture is coloured by; -1: none
     Location svg_quality_at;

@@ -293,6 +293,8 @@ int run_case(const Case &c, const RunOptions &o) {
         side_nodes(s, along_i ? c.ni : c.nj, c.topology == EG2D_TOPO_O, c.constants, x, y);
         check(g, eg2d_set_side(g, s.side, x.data(), y.data()), s.where);
     }
+    for (const auto &p : c.patches)
+        check(g, eg2d_set_patch(g, p.side, p.first, p.last, p.type, p.name.c_str()), p.where);
     apply_controls(g, c);
     check(g, eg2d_initialize(g, c.initial), c.initial_at);
 
