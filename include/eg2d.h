@@ -653,7 +653,24 @@ EG2D_API int eg2d_get_cell_quality(const eg2d_grid *grid, int metric, double *va
  * the case has none (so checkMesh runs on it as it is; a case's own files
  * are kept). Each file is written all-or-nothing and the mesh files are put
  * in place together once all are complete; directories the call made are
- * removed again when it fails. Takes no flags. */
+ * removed again when it fails. Takes no flags.
+ *
+ * Reports, one per grid, after Construct2D's stats file:
+ * EG2D_FORMAT_REPORT as text, EG2D_FORMAT_REPORT_JSON as one JSON object
+ * ("ni", "nj", "topology", "cells", "points", "run", "wall",
+ * "skewness_max_deg", "aspect_ratio_max", "area_min", "folded_cells"):
+ * the sizes (points with a cut's duplicates merged); the last run's solver,
+ * iterations (multigrid: cycles), residual and wall-clock seconds (the
+ * time of the last eg2d_iterate or eg2d_solve); over the inner nodes of the
+ * patches of type EG2D_PATCH_WALL (a stretch's two ends, a trailing edge
+ * or a corner, excluded) the first-cell height normal to the wall (min,
+ * max, mean), the largest ratio of consecutive spacings along the grid
+ * lines leaving the wall within the wall layer (the rows held by a marched
+ * layer, EG2D_PARAM_WALL_LAYER, else the first third of the rows) and the
+ * deviation of the first line from the wall normal (max, mean, degrees);
+ * then the largest skewness and aspect ratio, the smallest cell area and
+ * the folded cells as EG2D_QUALITY_* defines them. "wall" is null without
+ * a wall patch. */
 #define EG2D_FORMAT_PLOT3D       0
 #define EG2D_FORMAT_PLOT3D_ASCII 1
 #define EG2D_FORMAT_VTS          2
@@ -663,6 +680,8 @@ EG2D_API int eg2d_get_cell_quality(const eg2d_grid *grid, int metric, double *va
 #define EG2D_FORMAT_SVG          6
 #define EG2D_FORMAT_SU2          7
 #define EG2D_FORMAT_OPENFOAM     8
+#define EG2D_FORMAT_REPORT       9
+#define EG2D_FORMAT_REPORT_JSON 10
 #define EG2D_PLOT3D_3D         0x100
 #define EG2D_PLOT3D_MULTI      0x200
 #define EG2D_PLOT3D_SINGLE     0x400

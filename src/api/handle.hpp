@@ -19,6 +19,8 @@ struct eg2d_grid {
     // Wall sides for EG2D_ORTHO_WALL (height; < 0: not a wall), kept across
     // eg2d_set_orthogonality calls.
     std::array<double, 4> wall_height{{-1.0, -1.0, -1.0, -1.0}};
+    // Wall-clock seconds of the last eg2d_iterate/eg2d_solve (for the report formats).
+    double run_seconds = 0.0;
 };
 
 namespace eg2d {

@@ -15,7 +15,9 @@ EG2D_API int eg2d_write(const eg2d_grid *grid, const char *path, int format) {
     return guard(grid, "eg2d_write", [&] {
         require_ptr(path, "path");
         grid->gen.require_initialized("write");
-        write_grid(grid->gen.grid(), grid->gen.settings, path, format);
+        const RunSummary run{grid->gen.solver_name(), grid->gen.iterations(), grid->gen.residual().value,
+                             grid->run_seconds};
+        write_grid(grid->gen.grid(), grid->gen.settings, path, format, &run);
     });
 }
 

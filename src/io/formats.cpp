@@ -14,6 +14,8 @@ void write_gmv(const WriteRequest &r, OutputFile &out);           // gmv.cpp
 void write_matlab(const WriteRequest &r, OutputFile &out);        // matlab.cpp
 void write_svg(const WriteRequest &r, OutputFile &out);           // svg.cpp
 void write_su2(const WriteRequest &r, OutputFile &out);           // su2.cpp
+void write_report(const WriteRequest &r, OutputFile &out);        // report.cpp
+void write_report_json(const WriteRequest &r, OutputFile &out);
 void write_openfoam(const WriteRequest &r, const std::string &dir);  // openfoam.cpp
 
 namespace {
@@ -31,6 +33,8 @@ const FileFormat kFormats[] = {
     {EG2D_FORMAT_MATLAB, "matlab", 0, write_matlab},
     {EG2D_FORMAT_SVG, "svg", 0, write_svg},
     {EG2D_FORMAT_SU2, "su2", 0, write_su2},
+    {EG2D_FORMAT_REPORT, "report", 0, write_report},
+    {EG2D_FORMAT_REPORT_JSON, "report-json", 0, write_report_json},
 };
 
 // Formats that are a directory of files (each written all-or-nothing).
@@ -51,12 +55,12 @@ const FileFormat *find_format(int id) {
     return nullptr;
 }
 
-void write_grid(const Grid &grid, const Settings &settings, const char *path, int id) {
+void write_grid(const Grid &grid, const Settings &settings, const char *path, int id, const RunSummary *run) {
     if (const DirectoryFormat *d = id >= 0 ? find_directory_format(id & kFormatMask) : nullptr) {
         if (id & ~kFormatMask)
             fail(Failure::Argument, format("format = %#x: the %s format takes no flags", id, d->name));
         if (!*path) fail(Failure::Argument, "path is empty");
-        d->write(WriteRequest{grid, settings, 0}, path);
+        d->write(WriteRequest{grid, settings, 0, run}, path);
         return;
     }
     const FileFormat *f = id >= 0 ? find_format(id & kFormatMask) : nullptr;
@@ -66,7 +70,7 @@ void write_grid(const Grid &grid, const Settings &settings, const char *path, in
         fail(Failure::Argument, format("format = %#x: flags %#x do not apply to the %s format", id,
                                              flags & ~f->allowed_flags, f->name));
     OutputFile out(path);
-    f->write(WriteRequest{grid, settings, flags}, out);
+    f->write(WriteRequest{grid, settings, flags, run}, out);
     out.commit();
 }
 

@@ -10,10 +10,18 @@
 
 namespace eg2d {
 
+// What the last run did, for the report formats.
+struct RunSummary {
+    const char *solver;
+    int iterations;
+    double residual, seconds;
+};
+
 struct WriteRequest {
     const Grid &grid;
     const Settings &settings;
-    int flags;  // the EG2D_PLOT3D_* bits of the format argument
+    int flags;               // the EG2D_PLOT3D_* bits of the format argument
+    const RunSummary *run;   // nullptr: not known
 };
 
 struct FileFormat {
@@ -36,6 +44,7 @@ const DirectoryFormat *find_directory_format(int id);
 const FileFormat *find_format(int id);
 
 // Writes the grid to path in the format (id | flags); all-or-nothing.
-void write_grid(const Grid &grid, const Settings &settings, const char *path, int id);
+void write_grid(const Grid &grid, const Settings &settings, const char *path, int id,
+                const RunSummary *run = nullptr);
 
 }  // namespace eg2d

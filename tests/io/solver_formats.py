@@ -173,6 +173,62 @@ def cgns_check(d, name, ni, nj, wake, cgnscheck):
     check(conns == want_conn, f"cgns {name}: 1-to-1 connections {conns} == {want_conn}")
 
 
+def read_p3d(path):
+    """x, y as (nj, ni) arrays of the k = 0 plane of an ASCII 3-D Plot3D file."""
+    with open(path) as f:
+        t = f.read().split()
+    ni, nj, nk = map(int, t[:3])
+    v = np.array(t[3:], dtype=float).reshape(3, nk, nj, ni)
+    return ni, nj, v[0, 0], v[1, 0]
+
+
+def check_report(d, name, ni, nj, wake):
+    """The JSON report against numbers worked out here from the Plot3D file
+    and the SU2 file (read by meshio)."""
+    import json
+    import meshio
+    with open(os.path.join(d, name + ".report.json")) as f:
+        r = json.load(f)
+    _, npoints = expected_patches(name, ni, nj, wake)
+    cells = (ni - 1) * (nj - 1)
+    check((r["ni"], r["nj"], r["cells"], r["points"], r["folded_cells"]) == (ni, nj, cells, npoints, 0),
+          f"report {name}: sizes {r['ni']}x{r['nj']}, {r['cells']} cells, {r['points']} points, no folds")
+    check(r["run"]["iterations"] > 0 and r["run"]["residual"] < 1e-3 and r["run"]["seconds"] >= 0,
+          f"report {name}: run {r['run']}")
+    m = meshio.read(os.path.join(d, name + ".su2"))
+    q = np.concatenate([c.data for c in m.cells if c.type == "quad"])
+    x, y = m.points[q, 0], m.points[q, 1]
+    area = 0.5 * (x * np.roll(y, -1, axis=1) - np.roll(x, -1, axis=1) * y).sum(axis=1)
+    check(abs(r["area_min"] - area.min()) <= 1e-12 * abs(area).max(),
+          f"report {name}: smallest area {r['area_min']:.6e} == meshio's quads {area.min():.6e}")
+    _, _, X, Y = read_p3d(os.path.join(d, name + ".p3d"))
+    # The wall's inner nodes: JMIN between the trailing edges (C), all of JMIN but the TE (O).
+    if name == "single":
+        nodes, rows = range(1, ni - 1), max(2, (nj - 1) // 3)  # "bottom" (the lid is on JMAX: checked by count)
+    else:
+        nodes, rows = (range(wake + 1, ni - 1 - wake) if name == "c" else range(1, ni - 1)), max(2, (nj - 1) // 3)
+    i = np.array(list(nodes))
+    t = np.stack([X[0, i + 1] - X[0, i - 1], Y[0, i + 1] - Y[0, i - 1]])
+    dvec = np.stack([X[1, i] - X[0, i], Y[1, i] - Y[0, i]])
+    h = np.abs(t[0] * dvec[1] - t[1] * dvec[0]) / np.hypot(*t)
+    sp = np.hypot(np.diff(X[:rows + 1, i], axis=0), np.diff(Y[:rows + 1, i], axis=0))
+    growth = (sp[1:] / sp[:-1]).max()
+    w = r["wall"]
+    if name == "single":
+        check(w["nodes"] == (ni - 2) + (ni - 1 - 10 - 1), f"report single: {w['nodes']} inner wall nodes (bottom, lid)")
+        return
+    close = lambda a, b: abs(a - b) <= 1e-9 * abs(b)
+    check(w["nodes"] == len(i) and close(w["first_cell_height"]["min"], h.min())
+          and close(w["first_cell_height"]["max"], h.max()) and close(w["growth_max"], growth),
+          f"report {name}: {w['nodes']} wall nodes, first cell {w['first_cell_height']['min']:.6e}.."
+          f"{w['first_cell_height']['max']:.6e}, growth {w['growth_max']:.6f} == {len(i)}, {h.min():.6e}.."
+          f"{h.max():.6e}, {growth:.6f} from the Plot3D file")
+    with open(os.path.join(d, name + ".report.txt")) as f:
+        text = f.read()
+    check("folded cells    0\n" in text and f"{cells} cells" in text and "wall            wall: JMIN" in text,
+          f"report {name}: the text report's folds, cells and wall")
+
+
 def main():
     exe, d = sys.argv[1], sys.argv[2]
     with_cgns = sys.argv[3] == "cgns"
@@ -190,6 +246,7 @@ def main():
         check_su2(d, name, ni, nj, wake)
         check_openfoam(d, name, ni, nj, wake, checkmesh)
         check_plot3d(d, name, ni, nj, wake, checkmesh)
+        check_report(d, name, ni, nj, wake)
         if with_cgns:
             cgns_check(d, name, ni, nj, wake, cgnscheck)
     leftovers = [f for f in os.listdir(d) if ".eg2d-tmp-" in f]

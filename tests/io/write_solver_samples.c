@@ -7,7 +7,8 @@
  * "bottom" wall, IMIN "inlet" inflow, IMAX "outlet" outflow, JMAX nodes
  * 0..10 "top" symmetry and 10..20 "lid" wall.
  * For each, with a span of 0.5: DIR/NAME.su2, DIR/NAME.cgns, the OpenFOAM
- * case DIR/NAME_foam, the one-cell-thick ASCII Plot3D DIR/NAME.p3d,
+ * case DIR/NAME_foam, the one-cell-thick ASCII Plot3D DIR/NAME.p3d, the
+ * reports DIR/NAME.report.txt and DIR/NAME.report.json,
  * and DIR/NAME.txt: "ni nj topology wake" (wake: the C-grid's trailing-edge
  * index, else 0), for the script's own counts. */
 #include <stdio.h>
@@ -70,6 +71,8 @@ int main(int argc, char **argv) {
         check(eg2d_set_parameter(g, EG2D_PARAM_SPAN, 0.5), g, "span");
         write_as(g, argv[1], names[k], ".su2", EG2D_FORMAT_SU2);
         write_as(g, argv[1], names[k], ".p3d", EG2D_FORMAT_PLOT3D_ASCII | EG2D_PLOT3D_EXTRUDED);
+        write_as(g, argv[1], names[k], ".report.txt", EG2D_FORMAT_REPORT);
+        write_as(g, argv[1], names[k], ".report.json", EG2D_FORMAT_REPORT_JSON);
         write_as(g, argv[1], names[k], "_foam", EG2D_FORMAT_OPENFOAM);
         if (with_cgns) write_as(g, argv[1], names[k], ".cgns", EG2D_FORMAT_CGNS);
         snprintf(path, sizeof path, "%s/%s.txt", argv[1], names[k]);

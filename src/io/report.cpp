@@ -1,0 +1,171 @@
+// EG2D_FORMAT_REPORT (text) and EG2D_FORMAT_REPORT_JSON: the numbers a flow
+// solver's user checks before a run, one file per grid, after Construct2D's
+// stats file (Prosser's Construct2D): sizes, the wall's first cells (height, growth
+// away from it, the angle the grid lines leave it at), the worst cells, and
+// what the run took.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "base/error.hpp"
+#include "eg2d.h"
+#include "io/formats.hpp"
+#include "io/unstructured.hpp"
+#include "quality/quality.hpp"
+
+namespace eg2d {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+struct Range {
+    double min = std::numeric_limits<double>::infinity(), max = -std::numeric_limits<double>::infinity(), sum = 0;
+    int n = 0;
+    void add(double v) {
+        min = std::min(min, v);
+        max = std::max(max, v);
+        sum += v;
+        ++n;
+    }
+    double mean() const { return n ? sum / n : 0.0; }
+};
+
+struct WallStats {
+    int nodes = 0;  // wall nodes measured (stretch ends excluded)
+    int rows = 0;   // rows of the wall layer the growth is taken over
+    Range height, growth, angle;
+    std::vector<std::string> stretches;  // "name: SIDE first..last"
+};
+
+struct Report {
+    int ni, nj, cells, points;
+    const char *topology;
+    WallStats wall;
+    double skewness, aspect_ratio, min_area;
+    long folded;
+    const RunSummary *run;
+};
+
+double metric(const Grid &g, int id) { return find_quality_metric(id)->summary(g); }
+
+// The wall stretches (patches of type wall): at each node but a stretch's
+// two ends (a trailing edge, a corner, where the tangent is not defined),
+// the first-cell height normal to the wall, the growth of the spacing along
+// the line leaving it, and that line's deviation from the wall normal.
+WallStats wall_stats(const Grid &g) {
+    WallStats w;
+    // The wall layer: the rows held by a marched layer, else the first third.
+    w.rows = g.held_rows() > 0 ? g.held_rows() + 1 : std::max(2, (g.nj() - 1) / 3);
+    w.rows = std::min(w.rows, g.nj() - 1);
+    for (const Patch &p : resolve_patches(g)) {
+        if (p.type != PatchType::Wall) continue;
+        w.stretches.push_back(format("%s: %s %d..%d", p.name.c_str(), side_name(p.side), p.first, p.last));
+        const int n = g.side_length(p.side);
+        for (int q = p.first + 1; q < p.last; ++q) {
+            const std::size_t k0 = side_node(g, p.side, q), kp = side_node(g, p.side, std::min(q + 1, n - 1)),
+                              km = side_node(g, p.side, std::max(q - 1, 0));
+            const double tx = g.x[kp] - g.x[km], ty = g.y[kp] - g.y[km], tl = std::hypot(tx, ty);
+            const std::size_t k1 = side_node(g, p.side, q, 1);
+            const double dx = g.x[k1] - g.x[k0], dy = g.y[k1] - g.y[k0], dl = std::hypot(dx, dy);
+            if (!(tl > 0 && dl > 0)) continue;
+            ++w.nodes;
+            const double along = (tx * dx + ty * dy) / (tl * dl);  // cosine to the tangent
+            w.height.add(std::fabs(tx * dy - ty * dx) / tl);
+            w.angle.add(std::asin(std::min(1.0, std::fabs(along))) * 180.0 / kPi);
+            double before = dl;
+            for (int m = 2; m <= w.rows; ++m) {
+                const std::size_t a = side_node(g, p.side, q, m - 1), b = side_node(g, p.side, q, m);
+                const double d = std::hypot(g.x[b] - g.x[a], g.y[b] - g.y[a]);
+                if (before > 0) w.growth.add(d / before);
+                before = d;
+            }
+        }
+    }
+    return w;
+}
+
+Report make_report(const WriteRequest &r) {
+    const Grid &g = r.grid;
+    const UnstructuredMesh m = unstructured_mesh(g);
+    Report rep{g.ni(), g.nj(), static_cast<int>(m.cells()), static_cast<int>(m.points()),
+               topology_name(g.topology()), wall_stats(g), metric(g, EG2D_QUALITY_SKEWNESS),
+               metric(g, EG2D_QUALITY_ASPECT_RATIO), metric(g, EG2D_QUALITY_MIN_AREA),
+               std::lround(metric(g, EG2D_QUALITY_FOLDED_CELLS)), r.run};
+    return rep;
+}
+
+// JSON has no infinity or NaN: a value that is not finite is null.
+std::string json_number(double v) { return std::isfinite(v) ? format("%.17g", v) : "null"; }
+
+std::string json_string(const std::string &s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+    }
+    return out + "\"";
+}
+}  // namespace
+
+void write_report(const WriteRequest &r, OutputFile &out) {
+    const Report rep = make_report(r);
+    out.print("eg2d grid report\n");
+    out.print("grid            %d x %d nodes, %s: %d cells, %d points (a cut's duplicates merged)\n", rep.ni, rep.nj,
+              rep.topology, rep.cells, rep.points);
+    if (rep.run)
+        out.print("run             %s, %d iterations (one multigrid cycle each), residual %.3e, %.3f s\n",
+                  rep.run->solver, rep.run->iterations, rep.run->residual, rep.run->seconds);
+    const WallStats &w = rep.wall;
+    if (w.nodes == 0) {
+        out.print("wall            none (no patch of type wall with inner nodes)\n");
+    } else {
+        for (const std::string &s : w.stretches) out.print("wall            %s\n", s.c_str());
+        out.print("first cell      height normal to the wall min %.4e, max %.4e, mean %.4e (%d nodes, stretch "
+                  "ends excluded)\n",
+                  w.height.min, w.height.max, w.height.mean(), w.nodes);
+        if (w.growth.n)
+            out.print("wall growth     largest ratio of consecutive spacings off the wall %.4f (rows 1..%d)\n",
+                      w.growth.max, w.rows);
+        out.print("wall angle      deviation of the first line from the wall normal max %.3f, mean %.3f deg\n",
+                  w.angle.max, w.angle.mean());
+    }
+    out.print("skewness        largest %.3f deg (corner angle from 90)\n", rep.skewness);
+    out.print("aspect ratio    largest %.4g\n", rep.aspect_ratio);
+    out.print("cell area       smallest %.4e\n", rep.min_area);
+    out.print("folded cells    %ld\n", rep.folded);
+}
+
+void write_report_json(const WriteRequest &r, OutputFile &out) {
+    const Report rep = make_report(r);
+    out.print("{\n  \"ni\": %d,\n  \"nj\": %d,\n  \"topology\": \"%s\",\n  \"cells\": %d,\n  \"points\": %d,\n",
+              rep.ni, rep.nj, rep.topology, rep.cells, rep.points);
+    if (rep.run)
+        out.print("  \"run\": {\"solver\": \"%s\", \"iterations\": %d, \"residual\": %s, \"seconds\": %s},\n",
+                  rep.run->solver, rep.run->iterations, json_number(rep.run->residual).c_str(),
+                  json_number(rep.run->seconds).c_str());
+    else
+        out.print("  \"run\": null,\n");
+    const WallStats &w = rep.wall;
+    if (w.nodes == 0) {
+        out.print("  \"wall\": null,\n");
+    } else {
+        out.print("  \"wall\": {\n    \"stretches\": [");
+        for (std::size_t k = 0; k < w.stretches.size(); ++k)
+            out.print("%s%s", k ? ", " : "", json_string(w.stretches[k]).c_str());
+        out.print("],\n    \"nodes\": %d,\n", w.nodes);
+        out.print("    \"first_cell_height\": {\"min\": %s, \"max\": %s, \"mean\": %s},\n",
+                  json_number(w.height.min).c_str(), json_number(w.height.max).c_str(),
+                  json_number(w.height.mean()).c_str());
+        out.print("    \"growth_rows\": %d,\n    \"growth_max\": %s,\n", w.rows,
+                  w.growth.n ? json_number(w.growth.max).c_str() : "null");
+        out.print("    \"angle_deviation_deg\": {\"max\": %s, \"mean\": %s}\n  },\n", json_number(w.angle.max).c_str(),
+                  json_number(w.angle.mean()).c_str());
+    }
+    out.print("  \"skewness_max_deg\": %s,\n  \"aspect_ratio_max\": %s,\n  \"area_min\": %s,\n  \"folded_cells\": %ld\n}\n",
+              json_number(rep.skewness).c_str(), json_number(rep.aspect_ratio).c_str(),
+              json_number(rep.min_area).c_str(), rep.folded);
+}
+
+}  // namespace eg2d
