@@ -263,6 +263,18 @@ int main(int argc, char **argv) {
         c.set_weight({});
     }
 
+    // boundary patches
+    {
+        eg2d::grid p(9, 7);
+        CHECK(p.get_patches().size() == 4 && p.get_patches()[2].name == "jmax");
+        p.set_patch(EG2D_SIDE_IMIN, 0, 6, EG2D_PATCH_INFLOW, "inlet");
+        const auto all = p.get_patches();
+        CHECK(all.back().side == EG2D_SIDE_IMIN && all.back().type == EG2D_PATCH_INFLOW && all.back().name == "inlet");
+        CHECK(throws([&] { p.set_patch(EG2D_SIDE_IMIN, 2, 4, EG2D_PATCH_WALL, "x"); }, EG2D_ERR_ARGUMENT, "eg2d_set_patch"));
+        p.clear_patches();
+        CHECK(p.get_patches().back().name == "imin");
+    }
+
     // the swan of the C library (tests/support/swan_write_c.c)
     if (argc > 1) {
         std::ifstream in(argv[1]);
