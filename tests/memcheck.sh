@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # valgrind memcheck over every compiled test of a (non-sanitizer) build:
-# ctest -T memcheck, no suppression file, and any error or definite/indirect
+# ctest -T memcheck, suppressing only the third-party defects listed (with
+# their evidence) in tests/memcheck.supp, and any error or definite/indirect
 # leak makes valgrind exit 99, which fails that test. The tests are those whose
 # program was built in BUILD_DIR (found from ctest's JSON): tests that run
 # bash, cmake or python are left out, as what they run is either a compiled
@@ -24,7 +25,7 @@ rm -f "$build"/Testing/Temporary/MemoryChecker.*.log
 ctest --test-dir "$build" -T memcheck -R "^($compiled)\$" --output-on-failure -j "${EG2D_MEMCHECK_JOBS:-2}" \
       --overwrite MemoryCheckCommand="$valgrind" \
       --overwrite MemoryCheckCommandOptions="$opts" \
-      --overwrite MemoryCheckSuppressionFile=""
+      --overwrite MemoryCheckSuppressionFile="$(cd "$(dirname "$0")" && pwd)/memcheck.supp"
 # ctest also counts defects it parsed from the logs; there must be none.
 if grep -l "ERROR SUMMARY: [1-9]" "$build"/Testing/Temporary/MemoryChecker.*.log 2>/dev/null; then
     echo "memcheck: the logs above report errors" >&2
