@@ -751,9 +751,7 @@ class Patches(unittest.TestCase):
             self.assertEqual(re.findall(r"^    (\w+)\n    \{\n        type +(\w+);", boundary, re.M),
                              [("jmin", "wall"), ("axis", "symmetry"), ("imax", "wall"), ("jmax", "wall"),
                               ("inlet", "patch"), ("frontAndBack", "empty")])
-            with open(os.path.join(d, "out", "case_foam", "constant", "polyMesh", "points")) as f:
-                z = {float(m) for m in re.findall(r"^\(\S+ \S+ (\S+)\)$", f.read(), re.M)}
-            self.assertEqual(z, {0.0, 0.25})
+            self.assertEqual(self.points_z(os.path.join(d, "out", "case_foam")), {0.0, 0.25})
 
     def test_bad_patches(self):
         with tempfile.TemporaryDirectory() as d:
@@ -772,6 +770,52 @@ class Patches(unittest.TestCase):
             self.assertNotEqual(code, 0)
             self.assertIn("patches[1]", err)
             self.assertIn("eg2d_set_patch: side JMIN nodes [2, 6] overlap patch \"inlet\" [0, 8]", err)
+
+    def points_z(self, case):
+        with open(os.path.join(case, "constant", "polyMesh", "points")) as f:
+            return {float(m) for m in re.findall(r"^\(\S+ \S+ (\S+)\)$", f.read(), re.M)}
+
+    def test_existing_case_is_updated_in_place(self):
+        # the second run replaces the mesh and keeps the case's own files; no stage is left
+        with tempfile.TemporaryDirectory() as d:
+            code, _, err = self.run_case(self.CASE, d)
+            self.assertEqual(code, 0, err)
+            case = os.path.join(d, "out", "case_foam")
+            with open(os.path.join(case, "system", "controlDict"), "w") as f:
+                f.write("the user's controlDict")
+            os.mkdir(os.path.join(case, "0"))
+            open(os.path.join(case, "0", "U"), "w").close()
+            code, _, err = self.run_case(self.CASE.replace("span = 0.25", "span = 0.5"), d)
+            self.assertEqual(code, 0, err)
+            self.assertEqual(self.points_z(case), {0.0, 0.5})
+            with open(os.path.join(case, "system", "controlDict")) as f:
+                self.assertEqual(f.read(), "the user's controlDict")
+            self.assertTrue(os.path.exists(os.path.join(case, "0", "U")))
+            self.assertEqual(sorted(os.listdir(os.path.join(d, "out"))), ["case.su2", "case_foam"])
+
+    def test_case_path_that_is_a_file_is_refused_before_solving(self):
+        with tempfile.TemporaryDirectory() as d:
+            os.mkdir(os.path.join(d, "out"))
+            blocker = os.path.join(d, "out", "case_foam")
+            with open(blocker, "w") as f:
+                f.write("old")
+            code, out, err = self.run_case(self.CASE, d)
+            self.assertEqual(code, 8, out + err)
+            self.assertEqual(err, f"eg2d: {blocker}: not a directory, so no case can be written there "
+                                  "(checked before solving)\n")
+            with open(blocker) as f:
+                self.assertEqual(f.read(), "old")
+
+    def test_failed_set_leaves_no_staged_case(self):
+        # case.su2 is a FIFO nobody reads: the set fails after the case was staged,
+        # and the staged case directory goes with the stage
+        with tempfile.TemporaryDirectory() as d:
+            os.mkdir(os.path.join(d, "out"))
+            os.mkfifo(os.path.join(d, "out", "case.su2"))
+            code, out, err = self.run_case(self.CASE, d)
+            self.assertEqual(code, 8, out + err)
+            self.assertIn("case.su2", err)
+            self.assertEqual(os.listdir(os.path.join(d, "out")), ["case.su2"])
 
 
 def main():

@@ -50,6 +50,7 @@ struct OutputFile {
     int format;         // EG2D_FORMAT_* (or the tool's own SVG until the library has one)
     std::string name;   // file name, e.g. "swan.svg"
     Location where;
+    bool directory = false;  // a directory format (Feature::directory): NAME_foam
 };
 
 struct Case {

@@ -128,7 +128,7 @@ const std::vector<Feature> &formats() {
         {"matlab", EG2D_FORMAT_MATLAB, true, ".m"},
         {"svg", EG2D_FORMAT_SVG, true, ".svg"},
         {"su2", EG2D_FORMAT_SU2, true, ".su2"},
-        {"openfoam", EG2D_FORMAT_OPENFOAM, true, "_foam"},
+        {"openfoam", EG2D_FORMAT_OPENFOAM, true, "_foam", "", false, true},
         {"report", EG2D_FORMAT_REPORT, true, ".report.txt"},
         {"report-json", EG2D_FORMAT_REPORT_JSON, true, ".report.json"},
     };

@@ -15,6 +15,7 @@ struct Feature {
     const char *extension = "";  // output formats: file name extension
     const char *section = "solver";  // parameters: the table of the case file that holds them
     bool flag = false;               // parameters: on/off, written true/false (1/0 accepted)
+    bool directory = false;          // output formats: a directory (an OpenFOAM case), not a file
 };
 
 const std::vector<Feature> &solvers();        // [solver] method

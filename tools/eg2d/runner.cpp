@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
 #include "failure.hpp"
@@ -74,17 +75,27 @@ void make_directory(const std::string &dir) {
 // target is replaced and the link kept, a file with other hard links is
 // rewritten in place, a FIFO or character device is streamed into. A rename
 // from the stage would replace any of them.
-bool written_in_place(const struct stat &st) {
-    return S_ISLNK(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode) || (S_ISREG(st.st_mode) && st.st_nlink > 1);
+// An OpenFOAM case that exists (a directory, or a link to one) is updated by
+// the library in place too: its mesh files are replaced, each all-or-nothing,
+// and the case's own files (system/, 0/) are kept, which a rename would lose.
+bool written_in_place(const OutputFile &out, const struct stat &st) {
+    return out.directory || S_ISLNK(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode) ||
+           (S_ISREG(st.st_mode) && st.st_nlink > 1);
 }
 
 // An output path that is a directory, a socket or a block device is never
-// replaced: refused before solving.
+// replaced: refused before solving. A directory format's path (an OpenFOAM
+// case) must be a directory if it exists.
 void check_output_paths(const Case &c, const RunOptions &o) {
     for (const auto &out : c.outputs) {
         const std::string path = (o.out_dir.empty() ? std::string(".") : o.out_dir) + "/" + out.name;
         struct stat st;
         if (stat(path.c_str(), &st) != 0) continue;  // new (or a dangling link, whose target is made)
+        if (out.directory) {
+            if (!S_ISDIR(st.st_mode))
+                throw Failure(EXIT_IO, path + ": not a directory, so no case can be written there (checked before solving)");
+            continue;
+        }
         if (S_ISDIR(st.st_mode) || S_ISSOCK(st.st_mode) || S_ISBLK(st.st_mode))
             throw Failure(EXIT_IO, path + ": " + (S_ISDIR(st.st_mode) ? "a directory" : S_ISSOCK(st.st_mode) ? "a socket" : "a block device") +
                                        ", not replaced by an output file (checked before solving)");
@@ -200,19 +211,20 @@ void print_quality(eg2d_grid *g, int topology) {
 // into place (a full disk or Ctrl-C part-way leaves the old set as it was,
 // never a new .xyz beside an old .vts). A file renamed over an existing
 // one gets that file's permission bits (and owner, where permitted).
-// Paths that are links, hard-linked files or devices are written by the
-// library first, each atomically where the path allows (written_in_place;
-// streams before files), then the renames.
+// Paths that are links, hard-linked files or devices, and existing case
+// directories, are written by the library first, each atomically where the
+// path allows (written_in_place; streams before files), then the renames.
 void write_outputs(eg2d_grid *g, const Case &c, const RunOptions &o) {
     make_directory(o.out_dir);
     if (c.svg_quality >= 0) check(g, eg2d_set_parameter(g, EG2D_PARAM_SVG_QUALITY, c.svg_quality), c.svg_quality_at);
     std::string stage = o.out_dir + "/.eg2d-set-XXXXXX";
     if (!mkdtemp(&stage[0])) throw Failure(EXIT_IO, o.out_dir + ": cannot stage the output files: " + std::strerror(errno));
-    struct Cleanup {  // what is left of the stage (nothing after the renames)
+    struct Cleanup {  // what is left of the stage (nothing after the renames): files, case directories
         const std::string &dir;
         const Case &c;
         ~Cleanup() {
-            for (const auto &out : c.outputs) std::remove((dir + "/" + out.name).c_str());
+            std::error_code ignored;
+            for (const auto &out : c.outputs) std::filesystem::remove_all(dir + "/" + out.name, ignored);
             rmdir(dir.c_str());
         }
     } cleanup{stage, c};
@@ -227,7 +239,7 @@ void write_outputs(eg2d_grid *g, const Case &c, const RunOptions &o) {
         for (const auto &out : c.outputs) {
             const std::string path = o.out_dir + "/" + out.name;
             struct stat st, end;
-            if (lstat(path.c_str(), &st) != 0 || !written_in_place(st)) continue;
+            if (lstat(path.c_str(), &st) != 0 || !written_in_place(out, st)) continue;
             const bool stream = stat(path.c_str(), &end) == 0 && (S_ISFIFO(end.st_mode) || S_ISCHR(end.st_mode));
             if (stream != streams) continue;
             check(g, eg2d_write(g, path.c_str(), out.format), out.where);
@@ -237,7 +249,7 @@ void write_outputs(eg2d_grid *g, const Case &c, const RunOptions &o) {
         const std::string path = o.out_dir + "/" + out.name, staged = stage + "/" + out.name;
         struct stat st;
         if (lstat(path.c_str(), &st) == 0) {
-            if (written_in_place(st)) continue;
+            if (written_in_place(out, st)) continue;
             if (S_ISREG(st.st_mode)) {
                 chmod(staged.c_str(), st.st_mode & 07777);
                 if (chown(staged.c_str(), st.st_uid, st.st_gid) != 0) {}  // kept where the process may
