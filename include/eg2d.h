@@ -301,13 +301,17 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
                                             control's updates between iterations */
 #define EG2D_PARAM_WALL_GROWTH      202  /* [1, 1.5], default 1.15: cell-to-cell growth of the
                                             marched wall layer (EG2D_PARAM_WALL_LAYER) */
-#define EG2D_PARAM_WALL_LAYER       203  /* 0 (default), 1 or 2: with 1, EG2D_ORTHO_WALL on a
-                                            C-grid, or an O-grid round a body without sharp
-                                            corners, whose only wall is JMIN with a height
-                                            marches a wall layer and holds it; with 2, an
-                                            O-grid (sharp corners too) gets the hybrid layer
-                                            of the hyperbolic march (see EG2D_ORTHO_WALL);
-                                            experimental: not yet robust on graded wakes */
+#define EG2D_PARAM_WALL_LAYER       203  /* 0, 1, 2 or 3 (default): the layer EG2D_ORTHO_WALL
+                                            makes where the only wall is JMIN with a height.
+                                            0: the Sorenson-type control alone; 1: C-grids
+                                            and O-grids round bodies without sharp corners
+                                            march a layer along the normals and hold it;
+                                            2: O-grids (sharp corners too) get the hybrid
+                                            layer of the hyperbolic march; 3: automatic,
+                                            the hybrid layer on an O-grid where its rows
+                                            grow by at most 1.25 and its first cells are
+                                            within 1% and 0.5 degrees, else 0 (see
+                                            EG2D_ORTHO_WALL; the run says which) */
 #define EG2D_PARAM_SVG_QUALITY      300  /* output 300-399. EG2D_FORMAT_SVG colours cells by this
                                             EG2D_QUALITY_* metric (one with per-cell values);
                                             -1 (default): no colouring */
@@ -795,6 +799,16 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   (EG2D_ERR_FOLDED or EG2D_ERR_ARGUMENT of EG2D_INIT_HYPERBOLIC) leaves
  *   the control below. The run says which (eg2d_get_run_event). On a
  *   C-grid 2 acts as 1.
+ * WALL with EG2D_PARAM_WALL_LAYER = 3 (the default): the hybrid layer of 2
+ *   is made and kept on an O-grid when the march's rows grow by at most
+ *   1.25 and its first cells are within 1% of h and 0.5 degrees of the
+ *   wall's normal (they are within 0.1% and 0.05 degrees where nj is
+ *   ample for the far field: NACA 0012 250x100 at 1.04e-5 chord to 15
+ *   chords); otherwise (too few rows for the far field at that first
+ *   cell, a first cell too coarse for the wall's curvature, a C-grid, a
+ *   single block, several walls) the control below, and a run event says
+ *   why (eg2d_get_run_event). Set 0 for the control's contract (height and
+ *   90 degrees to the solver tolerance) everywhere.
  * WALL otherwise: a Sorenson (GRAPE)-type control, updated between iterations, that
  *   makes the grid lines leave each wall side at 90 degrees with the
  *   first-cell height of eg2d_set_wall_spacing; its influence decays into the

@@ -28,7 +28,7 @@ const ParameterInfo kParameters[] = {
     {EG2D_PARAM_WALL_RELAXATION, "wall_relaxation", 0.0, 1.0, true, false, false, false,
      &Settings::wall_relaxation},
     {EG2D_PARAM_WALL_GROWTH, "wall_growth", 1.0, 1.5, false, false, false, false, &Settings::wall_growth},
-    {EG2D_PARAM_WALL_LAYER, "wall_layer", 0.0, 2.0, false, false, true, false, &Settings::wall_layer},
+    {EG2D_PARAM_WALL_LAYER, "wall_layer", 0.0, 3.0, false, false, true, false, &Settings::wall_layer},
     {EG2D_PARAM_HERMITE_SPACING, "hermite_spacing", 0.0, 10.0, true, false, false, false, &Settings::hermite_spacing},
     {EG2D_PARAM_SVG_QUALITY, "svg_quality", -1.0, 99.0, false, false, true, false, &Settings::svg_quality},
     {EG2D_PARAM_SPAN, "span", 0.0, 1e30, true, false, false, false, &Settings::span},

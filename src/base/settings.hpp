@@ -21,7 +21,7 @@ struct Settings {
     double wall_decay = 0.3;          // a: the wall control decays as exp(-a (m-1)) at depth m
     double wall_relaxation = 0.1;     // under-relaxation of its updates, (0, 1]
     double wall_growth = 1.15;        // cell-to-cell growth of a marched wall layer, [1, 1.5]
-    double wall_layer = 0;            // 1: EG2D_ORTHO_WALL marches a layer where it can (wall.cpp)
+    double wall_layer = 3;            // EG2D_PARAM_WALL_LAYER: 0 control, 1 normals, 2 hybrid, 3 automatic (wall.cpp)
     double hermite_spacing = 1.0;     // EG2D_INIT_HERMITE's alpha (seed 001 eq 2.6)
     // The hyperbolic march (src/grid/hyperbolic.cpp, docs/hyperbolic.md).
     double march_distance = 0.0;      // marching distance; 0: 10 x the JMIN curve's bounding-box diagonal

@@ -116,6 +116,18 @@ HybridLayer shape_hybrid_layer(Grid &g, const Settings &settings, double h, bool
                 out.psi[at(ni, ni - 1, j)] = out.psi[at(ni, 0, j)];
             }
         }
+    // The first cells against the wall control's contract (height along the
+    // normal to the wall's central difference r(i+1) - r(i-1)).
+    for (int i = 0; i < ni - 1; ++i) {
+        const int a = i > 0 ? i - 1 : ni - 2, b = i + 1;
+        const double tx = m.x[at(ni, b, 0)] - m.x[at(ni, a, 0)], ty = m.y[at(ni, b, 0)] - m.y[at(ni, a, 0)];
+        const double ex = m.x[at(ni, i, 1)] - m.x[at(ni, i, 0)], ey = m.y[at(ni, i, 1)] - m.y[at(ni, i, 0)];
+        const double e = std::hypot(ex, ey), t = std::hypot(tx, ty);
+        out.height_error = std::max(out.height_error, std::fabs(e - h) / h);
+        if (e > 0.0 && t > 0.0)
+            out.wall_angle = std::max(out.wall_angle, std::asin(std::min(1.0, std::fabs(ex * tx + ey * ty) / (e * t))) *
+                                                          (180.0 / 3.14159265358979323846));
+    }
     g.hold_rows(rows);
     out.shape.rows = out.shape.asked = rows;
     out.shape.hybrid = true;

@@ -22,6 +22,8 @@ namespace eg2d {
 struct HybridLayer {
     WallLayerShape shape;
     std::vector<double> phi, psi;  // ni*nj; zero on held rows and boundaries
+    double height_error = 0;       // largest |first cell - h| / h over the wall nodes
+    double wall_angle = 0;         // largest angle (degrees) of the first line from the wall normal
 };
 
 // O-grids only. Marches from JMIN (first cell h; the schedule's own ratio)

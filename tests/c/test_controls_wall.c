@@ -115,6 +115,10 @@ static void wall_multigrid_on(const char *name, int (*set_domain)(eg2d_grid *), 
     assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
     assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
     assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h), EG2D_OK);
+    /* The Sorenson-type control itself (the automatic default takes the
+     * hybrid layer where its first cells are within 1% and 0.5 degrees:
+     * tests/c/test_wall_layer.c). */
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_WALL_LAYER, 0), EG2D_OK);
     assert_int_equal(eg2d_solve(g), EG2D_OK);
     assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
     assert_int_equal(eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &folded), EG2D_OK);

@@ -459,6 +459,7 @@ static void test_run_report(void **state) {
     assert_int_equal(domain_set_airfoil_o(g, "0012", 10.0), EG2D_OK);
     assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
     assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 1e-4), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_WALL_LAYER, 0), EG2D_OK); /* the control, no layer note */
     assert_int_equal(eg2d_solve(g), EG2D_OK);
     assert_int_equal(eg2d_get_run_info(g, EG2D_RUN_EVENTS, &n), EG2D_OK);
     for (k = 0; k < n; ++k) {

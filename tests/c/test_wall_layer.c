@@ -165,7 +165,7 @@ static void test_sharp_o_grid_keeps_the_control(void **state) {
  * grid without folds whose first cells have the height (within 0.1%) and
  * leave the wall within 0.5 degrees, growing no faster than the march's
  * schedule; multigrid in a few cycles. */
-static void hybrid_o_grid(int ni, int nj, double h, int solver, int cycle_limit, double growth_limit) {
+static void hybrid_o_grid(int ni, int nj, double h, int solver, int cycle_limit, double growth_limit, int layer) {
     double *x = alloc(ni * nj), *y = alloc(ni * nj), dev, hmin, hmax, folded, worst = 0;
     int it, i, j, rows;
     char msg[256];
@@ -175,7 +175,7 @@ static void hybrid_o_grid(int ni, int nj, double h, int solver, int cycle_limit,
     assert_int_equal(eg2d_set_solver(g, solver), EG2D_OK);
     assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h), EG2D_OK);
     assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
-    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_WALL_LAYER, 2), EG2D_OK);
+    if (layer >= 0) assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_WALL_LAYER, layer), EG2D_OK);
     assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
     if (eg2d_solve(g) != EG2D_OK) fail_msg("%s: %s", eg2d_solver_name(solver), eg2d_last_error(g));
     assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
@@ -203,9 +203,44 @@ static void test_hybrid_sharp_o_grid(void **state) {
     int id;
     (void)state;
     for (id = 0; id < 100; ++id)
-        if (eg2d_solver_name(id)) hybrid_o_grid(129, 65, 1e-5, id, id == EG2D_SOLVER_MULTIGRID ? 10 : 0, 1.29);
+        if (eg2d_solver_name(id)) hybrid_o_grid(129, 65, 1e-5, id, id == EG2D_SOLVER_MULTIGRID ? 10 : 0, 1.29, 2);
     /* Construct2D's default case: 250x100, first cell 1.04e-5 chord */
-    hybrid_o_grid(250, 100, 1.04e-5, EG2D_SOLVER_MULTIGRID, 10, 1.2);
+    hybrid_o_grid(250, 100, 1.04e-5, EG2D_SOLVER_MULTIGRID, 10, 1.2, 2);
+}
+
+/* The default, EG2D_PARAM_WALL_LAYER = 3 (automatic): a user who sets only a
+ * first-cell height and solves gets the hybrid layer where its rows grow by
+ * at most 1.25 and its first cells are within 1% and 0.5 degrees
+ * (Construct2D's case, 250x100 at 1.04e-5 chord, far field 15 chords: growth
+ * <= 1.2 over the first 30 cells, 10 cycles at most), and the Sorenson-type
+ * control, which meets the height and the angle exactly, where they are not
+ * (65x17: 16 rows to 10 chords grow by 2.1), saying why. */
+static void test_default_is_automatic(void **state) {
+    double value = -1, *x = alloc(65 * 17), *y = alloc(65 * 17), dev, hmin, hmax;
+    char msg[1024];
+    eg2d_grid *g;
+    (void)state;
+    assert_int_equal(eg2d_create(9, 9, &g), EG2D_OK);
+    assert_int_equal(eg2d_get_parameter(g, EG2D_PARAM_WALL_LAYER, &value), EG2D_OK);
+    assert_true(value == 3.0);
+    eg2d_destroy(g);
+    hybrid_o_grid(250, 100, 1.04e-5, EG2D_SOLVER_MULTIGRID, 10, 1.2, -1);
+    assert_int_equal(eg2d_create(65, 17, &g), EG2D_OK);
+    assert_int_equal(domain_set_airfoil_o(g, "0012", 10.0), EG2D_OK);
+    assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 1e-4), EG2D_OK);
+    assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    first_event(g, msg, sizeof msg);
+    print_message("65x17 at 1e-4, default: %s\n", msg);
+    assert_non_null(strstr(msg, "wall layer (automatic): the hybrid layer would grow by 2.08 per row"));
+    assert_non_null(strstr(msg, "the wall control's updates instead"));
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    measure_wall(x, y, 65, 17, EG2D_SIDE_JMIN, 1, 0, 64, &dev, &hmin, &hmax);
+    assert_true(fabs(hmin / 1e-4 - 1) < 1e-3 && fabs(hmax / 1e-4 - 1) < 1e-3);
+    eg2d_destroy(g);
+    free(x);
+    free(y);
 }
 
 /* A march that folds at its default dissipation is made again with more
@@ -230,6 +265,7 @@ int main(void) {
         cmocka_unit_test(test_sharp_o_grid_keeps_the_control),
         cmocka_unit_test(test_hybrid_sharp_o_grid),
         cmocka_unit_test(test_hybrid_retries_then_falls_back_and_says_so),
+        cmocka_unit_test(test_default_is_automatic),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
