@@ -1,5 +1,7 @@
-/* Wall-resolved O-grids side by side (eg2d_bench --wall): NACA 0012 with a
- * sharp trailing edge inside a circle, first cells of 1e-5 to 1e-7 chord.
+/* Wall-resolved grids side by side (eg2d_bench --wall): NACA 0012 with a
+ * sharp trailing edge, O-grids inside a circle and C-grids
+ * (domain_set_airfoil_c_graded), first cells of 4.46e-6 (y+ 1 at Re 6e6)
+ * to 1e-7 chord.
  * Per case three ways to the grid, each from the same boundary:
  *   control  EG2D_ORTHO_WALL with eg2d_set_wall_spacing, the default solver
  *            (the Sorenson-type control; one run, at most 10000 iterations);
@@ -25,6 +27,7 @@
 typedef struct {
     int ni, nj;
     double h, radius;
+    int wake; /* > 0: a C-grid (domain_set_airfoil_c_graded) with this many cut nodes a side */
 } wall_case;
 
 typedef enum { CONTROL, HYBRID, MARCH, DEFAULT } method;
@@ -53,7 +56,10 @@ static void run(const wall_case *w, method m) {
     for (int r = 0; r < repeats; ++r) {
         eg2d_grid *g;
         eg2d_create(ni, nj, &g);
-        domain_set_airfoil_o(g, "0012", w->radius);
+        if (w->wake > 0)
+            domain_set_airfoil_c_graded(g, "0012", w->wake, w->radius, 1e-3, 2e-3);
+        else
+            domain_set_airfoil_o(g, "0012", w->radius);
         double t0;
         if (m == MARCH) {
             eg2d_initialize(g, EG2D_INIT_TFI);
@@ -78,11 +84,21 @@ static void run(const wall_case *w, method m) {
         if (r == repeats - 1 && eg2d_get_run_info(g, EG2D_RUN_EVENTS, &events) == EG2D_OK && events > 0)
             eg2d_get_run_event(g, 0, NULL, note, sizeof note);
         if (r == repeats - 1 && status == EG2D_OK && eg2d_get_coordinates(g, x, y) == EG2D_OK) {
-            measure_wall(x, y, ni, nj, EG2D_SIDE_JMIN, 1, 0, ni - 1, &dev, &hmin, &hmax);
+            /* the body's nodes: an O-grid's all, a C-grid's between the cut's */
+            const int b0 = w->wake, b1 = w->wake > 0 ? ni - w->wake : ni - 1;
+            measure_wall(x, y, ni, nj, EG2D_SIDE_JMIN, w->wake == 0, b0, b1, &dev, &hmin, &hmax);
             eg2d_get_quality(g, EG2D_QUALITY_SKEWNESS, &skew);
+            if (w->wake > 0) { /* the wake's cells only: the body's own corners are the O-grids' 81.8 */
+                double *cells = malloc(sizeof(double) * (size_t)((ni - 1) * (nj - 1)));
+                eg2d_get_cell_quality(g, EG2D_QUALITY_SKEWNESS, cells);
+                skew = 0;
+                for (int k = 0; k < (ni - 1) * (nj - 1); ++k)
+                    if (k % (ni - 1) < w->wake || k % (ni - 1) >= ni - 1 - w->wake) skew = fmax(skew, cells[k]);
+                free(cells);
+            }
             eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &folds);
             growth = 0;
-            for (int i = 0; i < ni - 1; ++i)
+            for (int i = b0; i < b1; ++i)
                 for (int j = 1; j < 30 && j < nj - 1; ++j) {
                     const double a = measure_distance(x, y, ni, i, j, i, j + 1), b = measure_distance(x, y, ni, i, j - 1, i, j);
                     growth = fmax(growth, a / b);
@@ -91,7 +107,8 @@ static void run(const wall_case *w, method m) {
         eg2d_destroy(g);
     }
     qsort(cpu, (size_t)repeats, sizeof *cpu, by_value);
-    printf("| %dx%d, %g, R %g | %s | %s | %.3f | %d | %.4g-%.4g | %.3f | %.3f | %.1f | %g | %s |\n", ni, nj, w->h,
+    printf("| %s %dx%d, %g, R %g | %s | %s | %.3f | %d | %.4g-%.4g | %.3f | %.3f | %.1f | %g | %s |\n",
+           w->wake > 0 ? "C" : "O", ni, nj, w->h,
            w->radius, method_name[m], status == EG2D_OK ? "ok" : eg2d_status_string(status), cpu[repeats / 2], it, hmin,
            hmax, growth, dev, skew, folds, note);
     free(x);
@@ -99,9 +116,12 @@ static void run(const wall_case *w, method m) {
 
 void bench_walls(void) {
     static const wall_case cases[] = {
-        {250, 100, 1.04e-5, 15}, {300, 80, 1e-5, 15}, {250, 100, 1e-7, 15}, {257, 129, 1e-6, 100}, {385, 97, 1e-5, 100},
+        {250, 100, 1.04e-5, 15, 0}, {300, 80, 1e-5, 15, 0},   {250, 100, 1e-7, 15, 0}, {257, 129, 1e-6, 100, 0},
+        {385, 97, 1e-5, 100, 0},    {385, 97, 4.46e-6, 100, 80}, {769, 193, 4.46e-6, 500, 160},
     };
-    printf("NACA 0012 O-grids with a sharp trailing edge, far field a circle of radius R chords; residual 1e-10\n\n");
+    printf("NACA 0012 with a sharp trailing edge; O-grids inside a circle of radius R chords, C-grids (the section\n"
+           "clustered at its edges, the cut growing from the trailing edge's spacing) with the far field R chords out;\n"
+           "residual 1e-10. C-grid rows: first cell, growth and angle over the body, skewness over the wake's cells.\n\n");
     printf("| case (size, first cell, R) | method | status | CPU s | iterations | first cell | growth (30 cells) | "
            "wall angle deg | skewness deg | folds | the run's first note |\n|---|---|---|---:|---:|---|---:|---:|---:|---:|---|\n");
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k)

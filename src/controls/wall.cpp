@@ -125,7 +125,7 @@ public:
         const bool jmin_only = height_[0] > 0.0 && height_[1] < 0.0 && height_[2] < 0.0 && height_[3] < 0.0;
         std::string note;
         const bool automatic = settings.wall_layer == kAutomaticLayer;
-        if ((settings.wall_layer == 2.0 || automatic) && jmin_only && g.topology() == Topology::O) {
+        if ((settings.wall_layer == 2.0 || automatic) && g.topology() != Topology::Single && jmin_only) {
             try {
                 Grid trial = g;
                 HybridLayer hybrid = shape_hybrid_layer(trial, settings, height_[0], fill_above);

@@ -26,12 +26,18 @@ struct HybridLayer {
     double wall_angle = 0;         // largest angle (degrees) of the first line from the wall normal
 };
 
-// O-grids only. Marches from JMIN (first cell h; the schedule's own ratio)
-// to the least distance of the JMAX nodes from the wall nodes, holds its
-// rows 1..hybrid_layer_rows(nj), inverts the controls above, and with
-// fill_above starts the rows above from the march moved onto the user's
-// JMAX. Throws what the march throws (Failure::Folded, Failure::Argument):
-// the grid is then unchanged.
+// O- and C-grids. Marches from JMIN (first cell h; the schedule's own
+// ratio) to the least distance of the JMAX nodes from the wall nodes,
+// retrying with more dissipation while it folds; puts each column's rows
+// 1..hybrid_layer_rows(nj) back along it at geometric distances from its
+// first height, and holds them; inverts the controls above (kept within
+// |Phi|, |Psi| <= 1); with fill_above starts the rows above from the march
+// moved onto JMAX. On a C-grid the cut's first heights grow downstream
+// (hybrid_cgrid.hpp), the cut is held with the rows, and the outflow sides
+// and the far field keep their lines with their nodes moved along them to
+// follow the march. Retries, moves and clipping are in shape.note. Throws
+// what the march throws (Failure::Folded, Failure::Argument): the grid is
+// then unchanged.
 HybridLayer shape_hybrid_layer(Grid &g, const Settings &settings, double h, bool fill_above);
 
 // The rows held: two thirds of them (at most nj-3). Measured on NACA 0012

@@ -6,6 +6,7 @@
 #include "base/cell.hpp"
 #include "base/error.hpp"
 #include "base/folds.hpp"
+#include "base/polyline.hpp"
 
 namespace eg2d {
 
@@ -50,23 +51,6 @@ std::vector<Vec> wall_normals(const Grid &g) {
     return n;
 }
 
-// A polyline's points at arc lengths s (from its first point), clamped to its ends.
-std::vector<Vec> along(const std::vector<Vec> &line, const std::vector<double> &s) {
-    std::vector<double> cum(line.size(), 0.0);
-    for (std::size_t k = 1; k < line.size(); ++k)
-        cum[k] = cum[k - 1] + std::hypot(line[k].x - line[k - 1].x, line[k].y - line[k - 1].y);
-    std::vector<Vec> out;
-    std::size_t seg = 1;
-    for (double d : s) {
-        d = std::clamp(d, 0.0, cum.back());
-        while (seg + 1 < line.size() && cum[seg] < d) ++seg;
-        const double len = cum[seg] - cum[seg - 1], t = len > 0.0 ? (d - cum[seg - 1]) / len : 0.0;
-        out.push_back({line[seg - 1].x + t * (line[seg].x - line[seg - 1].x),
-                       line[seg - 1].y + t * (line[seg].y - line[seg - 1].y)});
-    }
-    return out;
-}
-
 // Distances along one column: the layer (rows 0..rows) then its geometric
 // continuation over `length` to row nj-1.
 std::vector<double> column_distances(double first, double growth, int rows, int nj, double length) {
@@ -85,14 +69,10 @@ std::vector<double> column_distances(double first, double growth, int rows, int 
 
 // Places a boundary column (a C-grid's outflow side) along its own line.
 void redistribute_side(Grid &g, int i, const std::vector<double> &s) {
-    std::vector<Vec> line;
-    for (int j = 0; j < g.nj(); ++j) line.push_back(point(g, i, j));
-    std::vector<double> scaled = s;
-    double total = 0.0;
-    for (std::size_t k = 1; k < line.size(); ++k) total += std::hypot(line[k].x - line[k - 1].x, line[k].y - line[k - 1].y);
-    for (double &d : scaled) d = std::min(d, total);
-    const std::vector<Vec> p = along(line, scaled);
-    for (int j = 1; j < g.nj() - 1; ++j) put(g, i, j, p[static_cast<std::size_t>(j)]);
+    std::vector<Vec2> line;
+    for (int j = 0; j < g.nj(); ++j) line.push_back({g.x[at(g, i, j)], g.y[at(g, i, j)]});
+    const std::vector<Vec2> p = points_along(line, s);  // clamped to the side's length
+    for (int j = 1; j < g.nj() - 1; ++j) put(g, i, j, {p[static_cast<std::size_t>(j)].x, p[static_cast<std::size_t>(j)].y});
 }
 
 }  // namespace

@@ -172,6 +172,91 @@ int domain_set_airfoil_c(eg2d_grid *g, const char *digits, int wake, double radi
     return status;
 }
 
+/* The ratio r of n geometric cells from `first` that add up to `length`. */
+static double geometric_ratio(double first, double length, int n) {
+    double lo = 1.0, hi = 2.0;
+    for (int it = 0; it < 200; ++it) {
+        const double r = 0.5 * (lo + hi);
+        if (first * (pow(r, n) - 1) / (r - 1) < length) lo = r;
+        else hi = r;
+    }
+    return 0.5 * (lo + hi);
+}
+
+int domain_set_airfoil_c_graded(eg2d_grid *g, const char *digits, int wake, double radius, double le, double te) {
+    int ni, nj, na, half, i, j, status;
+    double *x, *y, *s, *s2, length, s_le = 0.5, lo = 0.0, hi = 1.0;
+    eg2d_curve *foil = NULL;
+    if ((status = eg2d_get_size(g, &ni, &nj))) return status;
+    na = ni - 2 * wake;
+    if (wake < 2 || na < 5 || na % 2 == 0) return EG2D_ERR_ARGUMENT;
+    half = na / 2;
+    if ((status = eg2d_set_topology(g, EG2D_TOPO_C))) return status;
+    if ((status = eg2d_curve_naca4(digits, EG2D_NACA_CLOSED_TE, &foil))) return status;
+    x = malloc(sizeof(double) * (size_t)(ni + nj));
+    y = malloc(sizeof(double) * (size_t)(ni + nj));
+    s = malloc(sizeof(double) * (size_t)(half + 1));
+    s2 = malloc(sizeof(double) * (size_t)na);
+    if (!x || !y || !s || !s2) {
+        free(x); free(y); free(s); free(s2);
+        eg2d_curve_destroy(foil);
+        return EG2D_ERR_MEMORY;
+    }
+    eg2d_curve_length(foil, &length);
+    for (i = 0; i < 200; ++i) { /* the leading edge: ternary search for the least x */
+        double xa, xb, ya;
+        const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
+        eg2d_curve_evaluate(foil, a, &xa, &ya);
+        eg2d_curve_evaluate(foil, b, &xb, &ya);
+        if (xa < xb) hi = b;
+        else lo = a;
+    }
+    s_le = 0.5 * (lo + hi);
+    status = eg2d_distribution(EG2D_DIST_VINOKUR, half + 1, te / (s_le * length), le / (s_le * length), s);
+    for (i = 0; !status && i <= half; ++i) status = eg2d_curve_evaluate(foil, s_le * s[i], x + wake + i, y + wake + i);
+    if (!status)
+        status = eg2d_distribution(EG2D_DIST_VINOKUR, half + 1, le / ((1 - s_le) * length), te / ((1 - s_le) * length), s);
+    for (i = 0; !status && i <= half; ++i)
+        status = eg2d_curve_evaluate(foil, s_le + (1 - s_le) * s[i], x + wake + half + i, y + wake + half + i);
+    eg2d_curve_destroy(foil);
+    if (!status) {
+        const double ds = hypot(x[wake + 1] - x[wake], y[wake + 1] - y[wake]), r = geometric_ratio(ds, radius, wake);
+        double cell = ds, at = 1.0;
+        x[wake] = x[ni - 1 - wake] = 1.0;
+        y[wake] = y[ni - 1 - wake] = 0.0;
+        for (i = wake - 1; i >= 0; --i, cell *= r) {
+            at += cell;
+            x[i] = x[ni - 1 - i] = i == 0 ? 1 + radius : at;
+            y[i] = y[ni - 1 - i] = 0;
+        }
+        status = eg2d_set_side(g, EG2D_SIDE_JMIN, x, y);
+    }
+    /* The far field: the same x above the wake, a half circle about the TE
+     * between, its nodes by Vinokur's distribution from the wake's spacing
+     * at the TE on to both ends (no jump in spacing where the two meet). */
+    if (!status)
+        status = eg2d_distribution(EG2D_DIST_VINOKUR, na, te / (EG2D_TEST_PI * radius), te / (EG2D_TEST_PI * radius), s2);
+    for (i = 0; i < ni; ++i) {
+        if (i <= wake || i >= ni - 1 - wake) {
+            y[i] = i <= wake ? -radius : radius;
+        } else {
+            const double a = -EG2D_TEST_PI / 2 - EG2D_TEST_PI * s2[i - wake];
+            x[i] = 1 + radius * cos(a);
+            y[i] = radius * sin(a);
+        }
+    }
+    if (!status) status = eg2d_set_side(g, EG2D_SIDE_JMAX, x, y);
+    for (j = 0; j < nj; ++j) { /* the outflow lines */
+        x[j] = 1 + radius;
+        y[j] = -radius * (double)j / (nj - 1);
+    }
+    if (!status) status = eg2d_set_side(g, EG2D_SIDE_IMIN, x, y);
+    for (j = 0; j < nj; ++j) y[j] = -y[j];
+    if (!status) status = eg2d_set_side(g, EG2D_SIDE_IMAX, x, y);
+    free(x); free(y); free(s); free(s2);
+    return status;
+}
+
 int domain_set_rectangle_columns(eg2d_grid *g, const double *X, double height) {
     int ni, nj, i, status;
     double *x, *y;

@@ -31,6 +31,18 @@ int domain_set_airfoil_o(eg2d_grid *grid, const char *digits, double radius);
  * the outflow lines. ni - 2 wake points lie on the section. */
 int domain_set_airfoil_c(eg2d_grid *grid, const char *digits, int wake, double radius);
 
+/* A C-grid as flow solvers use it: the section with `wake` points on each
+ * side of the cut, the cut from the trailing edge to the outflow x = 1 +
+ * radius growing geometrically from the section's trailing-edge spacing
+ * `te`; the section by Vinokur's distribution on each surface, `te` at the
+ * trailing edge and `le` at the leading edge (the least x of the section);
+ * JMAX the lines y = -radius and y = radius above the cut (at the cut's x)
+ * and the half circle of that radius about the trailing edge between, its
+ * nodes by Vinokur's distribution with `te` at both ends; IMIN and IMAX
+ * the outflow lines, uniform. ni - 2 wake points, an odd count, lie on the
+ * section. */
+int domain_set_airfoil_c_graded(eg2d_grid *grid, const char *digits, int wake, double radius, double le, double te);
+
 /* The body r = 1 + 0.25 cos 2t + 0.15 sin 3t + 0.08 cos 5t (an irregular
  * blob) inside the circle r = 8, as an O-grid: the setup of Tai, Chiang &
  * Su's comparison of point, line and AF schemes (87 x 31 there). */

@@ -1,0 +1,24 @@
+// Points along a polyline by arc length: the grid's rows and columns taken
+// as lines, when nodes are moved along them (the wall layers re-space their
+// columns and a C-grid's outflow and far-field sides).
+#pragma once
+#include <vector>
+
+#include "base/block_tridiagonal.hpp"  // Vec2
+#include "base/grid.hpp"
+
+namespace eg2d {
+
+// Cumulative arc length from the first point: s[0] = 0, s[k] = s[k-1] + |p[k] - p[k-1]|.
+std::vector<double> arc_lengths(const std::vector<Vec2> &line);
+
+// The points of `line` at arc lengths s (from its first point), each
+// clamped to the line's ends; linear between its points.
+std::vector<Vec2> points_along(const std::vector<Vec2> &line, const std::vector<double> &s);
+
+// Column i of a grid, rows 0..last; row j, columns 0..ni-1; one node.
+std::vector<Vec2> grid_column(const Grid &g, int i, int last);
+std::vector<Vec2> grid_row(const Grid &g, int j);
+void set_node(Grid &g, int i, int j, Vec2 p);
+
+}  // namespace eg2d
