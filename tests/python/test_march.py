@@ -72,3 +72,68 @@ def test_hybrid_wall_layer():
     assert np.allclose(first, h, rtol=1e-3)
     heights = np.hypot(np.diff(x, axis=1), np.diff(y, axis=1))[:, :30]
     assert np.max(heights[:, 1:] / heights[:, :-1]) <= 1.3
+
+
+def graded_c_grid(ni, nj, wake, radius, le, te):
+    """NACA 0012 C-grid boundary as tests/support's domain_set_airfoil_c_graded."""
+    g = eg2d.Grid(ni, nj)
+    g.set_topology(eg2d.TOPO_C)
+    na = ni - 2 * wake
+    half = na // 2
+    with eg2d.Curve.naca4("0012", eg2d.NACA_CLOSED_TE) as foil:
+        length = foil.length()
+        s = np.linspace(0, 1, 2001)
+        s_le = s[np.argmin([foil.evaluate(v)[0] for v in s])]
+        lower = s_le * eg2d.distribution(eg2d.DIST_VINOKUR, half + 1, te / (s_le * length), le / (s_le * length))
+        upper = s_le + (1 - s_le) * eg2d.distribution(
+            eg2d.DIST_VINOKUR, half + 1, le / ((1 - s_le) * length), te / ((1 - s_le) * length))
+        body = np.array([foil.evaluate(v) for v in np.concatenate([lower, upper[1:]])])
+    body[0] = body[-1] = (1.0, 0.0)
+    ds = np.hypot(*(body[1] - body[0]))
+    lo_r, hi_r = 1.0, 2.0  # the cut's ratio: wake cells from ds adding up to radius
+    for _ in range(200):
+        r = 0.5 * (lo_r + hi_r)
+        lo_r, hi_r = (r, hi_r) if ds * (r ** wake - 1) / (r - 1) < radius else (lo_r, r)
+    cut = 1 + np.cumsum(ds * r ** np.arange(wake))[::-1]
+    cut[0] = 1 + radius
+    x = np.concatenate([cut, body[:, 0], cut[::-1]])
+    y = np.concatenate([np.zeros(wake), body[:, 1], np.zeros(wake)])
+    g.set_side(eg2d.SIDE_JMIN, x, y)
+    f = eg2d.distribution(eg2d.DIST_VINOKUR, na, te / (np.pi * radius), te / (np.pi * radius))
+    a = -np.pi / 2 - np.pi * f
+    xf = np.concatenate([cut, [1.0], 1 + radius * np.cos(a[1:-1]), [1.0], cut[::-1]])
+    yf = np.concatenate([-radius * np.ones(wake), [-radius], radius * np.sin(a[1:-1]), [radius], radius * np.ones(wake)])
+    g.set_side(eg2d.SIDE_JMAX, xf, yf)
+    yo = -radius * np.linspace(0, 1, nj)
+    g.set_side(eg2d.SIDE_IMIN, np.full(nj, 1 + radius), yo)
+    g.set_side(eg2d.SIDE_IMAX, np.full(nj, 1 + radius), -yo)
+    return g
+
+
+def test_hybrid_c_grid_by_default():
+    """A C-grid with only a first-cell height set (y+ 1 at Re 6e6, far field
+    100 chords): the default takes the hybrid layer; first cell as asked on
+    the whole body, graded at most 1.2, no folds, wake cells within 45
+    degrees, the cut's spacing growing downstream, a few cycles."""
+    ni, nj, wake = 385, 97, 80
+    h = eg2d.first_cell_height(1.0, 6e6)
+    g = graded_c_grid(ni, nj, wake, 100.0, 1e-3, 2e-3)
+    g.set_wall_spacing(eg2d.SIDE_JMIN, h)
+    g.set_orthogonality(eg2d.ORTHO_WALL)
+    g.set_tolerance(1e-10)
+    g.solve()
+    assert g.get_iterations() <= 10
+    assert g.get_quality(eg2d.QUALITY_FOLDED_CELLS) == 0
+    events = [text for _, text in g.get_run_events()]
+    assert events[0].startswith("wall layer (hybrid): 64 rows of the hyperbolic march held")
+    x, y = g.get_coordinates()
+    body = slice(wake, ni - wake)
+    first = np.hypot(x[body, 1] - x[body, 0], y[body, 1] - y[body, 0])
+    assert np.allclose(first, h, rtol=1e-3)
+    heights = np.hypot(np.diff(x, axis=1), np.diff(y, axis=1))[body, :30]
+    ratio = heights[:, 1:] / heights[:, :-1]
+    assert ratio.min() >= 1.0 and ratio.max() <= 1.2
+    skew = g.get_cell_quality(eg2d.QUALITY_SKEWNESS)
+    assert max(skew[:wake, :].max(), skew[ni - 1 - wake:, :].max()) <= 45.0
+    cut = np.hypot(x[1:wake, 1] - x[1:wake, 0], y[1:wake, 1] - y[1:wake, 0])  # outflow -> trailing edge
+    assert np.all(np.diff(cut) <= 1e-12) and cut[0] > 10 * h
