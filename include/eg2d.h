@@ -450,6 +450,8 @@ EG2D_API int eg2d_curve_evaluate(const eg2d_curve *curve, double s, double *x, d
  *               largest at u = c, so points thin out there and gather toward the
  *               ends: c = 1 is TANH_ONE with delta = 2b (clusters at s = 0, the seed's
  *               attraction point 1 - c), c = 0 clusters at s = 1, c = 1/2 at both.
+ *               Both tanh maps are evaluated in sinh/cosh form, without
+ *               cancellation: a first spacing of 1e-12 keeps its relative accuracy.
  *  VINOKUR      p1, p2 > 0: the first and last spacings, in the curve's length
  *               units (eg2d_distribution: fractions of 1), met to 1e-11 relative:
  *               Vinokur's two-sided tanh/tan function (J. Comput. Phys. 50, 1983)
@@ -460,6 +462,33 @@ EG2D_API int eg2d_curve_evaluate(const eg2d_curve *curve, double s, double *x, d
 #define EG2D_DIST_TANH_TWO    3
 #define EG2D_DIST_VINOKUR     4
 EG2D_API int eg2d_distribution(int distribution, int n, double p1, double p2, double *s);
+
+/* The parameter p1 that gives a wanted first spacing s_1 - s_0 =
+ * first_spacing (a fraction of the length, in (0, 1), as eg2d_distribution's
+ * s) with n points, into *p1, such that eg2d_distribution(distribution, n,
+ * *p1, p2, s) meets it to 1e-12 relative (VINOKUR: 1e-11):
+ *  EXPONENTIAL  beta (p2 ignored): beta > 0 for a first spacing below the
+ *               uniform 1/(n-1), beta < 0 above it; the first spacing falls
+ *               strictly as beta grows, so there is one answer.
+ *  TANH_ONE     delta (p2 ignored): below 1/(n-1) only (it clusters at s = 0).
+ *  TANH_TWO     b for the given c = p2. The first spacing falls as b grows
+ *               when c >= 1/2 and rises when c = 0; in between it can rise
+ *               and then fall, and the smallest b that gives it is returned.
+ *  VINOKUR      p1 is the first spacing itself: *p1 = first_spacing once the
+ *               pair (first_spacing, p2 = the last spacing) is checked to be
+ *               attainable.
+ * The parameter is found by scanning its range (a geometric grid) for the
+ * first sign change of s_1 - first_spacing and bisecting to the last bit.
+ * EG2D_ERR_ARGUMENT, with *p1 unchanged and a message that names
+ * first_spacing and the range of first spacings the function reaches
+ * within its parameter's bound, when no parameter gives it: exactly
+ * 1/(n-1) (that is UNIFORM: the parameter would be 0), one above it for
+ * TANH_ONE or TANH_TWO with c >= 1/2, below it for TANH_TWO with c = 0,
+ * one beyond what |beta| <= 700, delta <= 700 or b <= 350 reach;
+ * also for UNIFORM (no parameter), an unknown id, n < 2, a first_spacing
+ * outside (0, 1), a p2 out of its range, p1 NULL. No grid: failures are
+ * reported by eg2d_last_error(NULL). */
+EG2D_API int eg2d_distribution_parameter(int distribution, int n, double first_spacing, double p2, double *p1);
 
 /* n >= 2 points of a curve at the normalized arc lengths of a distribution. */
 EG2D_API int eg2d_curve_points(const eg2d_curve *curve, int n, int distribution, double p1, double p2,
@@ -895,6 +924,22 @@ EG2D_API int eg2d_tensor_parameter_grid(int ni, int nj, const double *u, const d
  * midpoint weights. For solution-adaptive regridding, set the new weights
  * and solve again from the current grid. NULL removes it. */
 EG2D_API int eg2d_set_weight(eg2d_grid *grid, const double *w);
+
+/* The control terms in force, per node (ni*nj, Fortran order), as the P
+ * and Q of Thompson, Thames & Mastin (1974): every control above summed and
+ * written as J^2 (P r_xi + Q r_eta), that is P = C_xi / J^2 and
+ * Q = C_eta / J^2 with C_xi, C_eta the coefficients of r_xi, r_eta in
+ * docs/NUMERICS.md, evaluated on the current grid (central differences,
+ * index units). Sources and source arrays give their own P, Q; Phi and Psi
+ * (MIDDLECOFF_THOMAS, the weight, a wall layer's rows) give alpha Phi / J^2
+ * and gamma Psi / J^2; the parameter grid's terms likewise. A dynamic
+ * control (EG2D_ORTHO_WALL's Sorenson-type one) gives its current state:
+ * after a run, its last update. Only nodes the equation is solved at have
+ * values: the boundary, rows held by a wall layer and nodes where J = 0 are
+ * 0 (an O-grid's column ni-1 and a C-grid's upper wake repeat the nodes they
+ * coincide with). No control, or the Laplace system: all 0. Needs an
+ * initialised grid (EG2D_ERR_STATE); either pointer may be NULL, not both. */
+EG2D_API int eg2d_get_controls(const eg2d_grid *grid, double *P, double *Q);
 
 /*=====================================================================
  * Hyperbolic marching

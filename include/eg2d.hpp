@@ -101,6 +101,12 @@ inline std::vector<double> distribution(int dist, int n, double p1 = 0, double p
     detail::check(::eg2d_distribution(dist, n, p1, p2, s.data()), nullptr);
     return s;
 }
+/* The p1 of an EG2D_DIST_* distribution whose first spacing (a fraction of 1) is first_spacing. */
+inline double distribution_parameter(int dist, int n, double first_spacing, double p2 = 0) {
+    double p1 = 0;
+    detail::check(::eg2d_distribution_parameter(dist, n, first_spacing, p2, &p1), nullptr);
+    return p1;
+}
 /* The wall spacing for a target y+ at a chord Reynolds number. */
 inline double first_cell_height(double yplus, double reynolds, double chord = 1) {
     double h = 0;
@@ -349,11 +355,7 @@ public:
     }
     /* x, y resized to ni*nj, node (i, j) at i + ni*j. */
     void get_coordinates(std::vector<double> &x, std::vector<double> &y) const {
-        const auto [ni, nj] = get_size();
-        std::vector<double> xs(static_cast<std::size_t>(ni) * static_cast<std::size_t>(nj)), ys(xs.size());
-        check(::eg2d_get_coordinates(g_, xs.data(), ys.data()));
-        x.swap(xs);
-        y.swap(ys);
+        node_arrays(x, y, [this](double *a, double *b) { return ::eg2d_get_coordinates(g_, a, b); });
     }
     double get_residual() const {
         double r = 0;
@@ -418,6 +420,11 @@ public:
         return v;
     }
 
+    /* The control terms as Thompson's P, Q per node (ni*nj each, Fortran order). */
+    void get_controls(std::vector<double> &P, std::vector<double> &Q) const {
+        node_arrays(P, Q, [this](double *a, double *b) { return ::eg2d_get_controls(g_, a, b); });
+    }
+
     void set_side_curve(int side, const curve &c, int dist = EG2D_DIST_UNIFORM, double p1 = 0, double p2 = 0,
                         int flags = 0) {
         check(::eg2d_set_side_curve(g_, side, c.get(), dist, p1, p2, flags));
@@ -447,6 +454,15 @@ private:
         check(status);
     }
     void check(int status) const { detail::check(status, g_); }
+    /* Two per-node arrays (ni*nj each) from one query; a and b keep their contents on failure. */
+    template <class Query>
+    void node_arrays(std::vector<double> &a, std::vector<double> &b, Query query) const {
+        const auto [ni, nj] = get_size();
+        std::vector<double> u(static_cast<std::size_t>(ni) * static_cast<std::size_t>(nj)), v(u.size());
+        check(query(u.data(), v.data()));
+        a.swap(u);
+        b.swap(v);
+    }
     std::size_t side_points(int side) const {
         const auto [ni, nj] = get_size();
         if (side == EG2D_SIDE_JMIN || side == EG2D_SIDE_JMAX) return static_cast<std::size_t>(ni);

@@ -116,6 +116,7 @@ POINTERS = {
     "eg2d_curve_points": {"x": "array", "y": "array"},
     "eg2d_get_coordinates": {"x": "array", "y": "array"},
     "eg2d_get_cell_quality": {"values": "array"},
+    "eg2d_get_controls": {"P": "array optional", "Q": "array optional"},
     "eg2d_read_plot3d": {"format": "optional", "nblocks": "optional", "ni": "optional", "nj": "optional",
                          "x": "array optional", "y": "array optional"},
     "eg2d_read_plot3d_into": {"format": "optional", "nblocks": "optional", "ni": "optional", "nj": "optional",

@@ -76,6 +76,7 @@ module eg2d
     procedure :: get_run_event => grid_get_run_event
     procedure :: get_quality => grid_get_quality
     procedure :: get_cell_quality => grid_get_cell_quality
+    procedure :: get_controls => grid_get_controls
     procedure :: write => grid_write
     procedure :: set_side_from_file => grid_set_side_from_file
     procedure :: set_side_curve => grid_set_side_curve
@@ -118,7 +119,7 @@ module eg2d
   public :: eg2d_c_string, eg2d_status_message, eg2d_solver_short_name, eg2d_version_string
   public :: eg2d_get_parameter_bounds, eg2d_live_grids
   public :: eg2d_read_plot3d_grid, eg2d_read_point_file
-  public :: eg2d_get_distribution, eg2d_get_first_cell_height
+  public :: eg2d_get_distribution, eg2d_get_distribution_parameter, eg2d_get_first_cell_height
   public :: eg2d_get_clustering_map, eg2d_get_tensor_parameter_grid
 
   ! Grids created through eg2d_grid_t and not yet freed (to check finalisation).
@@ -576,6 +577,23 @@ contains
     call finish(self, eg2d_get_cell_quality(self%handle, int(metric, c_int), values), status)
   end subroutine grid_get_cell_quality
 
+  ! The control terms as Thompson's P, Q per node into P(ni, nj), Q(ni, nj).
+  subroutine grid_get_controls(self, P, Q, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    real(c_double), intent(inout) :: P(:, :), Q(:, :)
+    integer, intent(out), optional :: status
+    integer(c_int) :: ni, nj
+    character(160) :: buf
+    if (.not. size_of(self, ni, nj, status)) return
+    if (any(shape(P) /= [ni, nj]) .or. any(shape(Q) /= [ni, nj])) then
+      write (buf, '("P is (",i0,",",i0,"), Q (",i0,",",i0,"): both must be (ni,nj) = (",i0,",",i0,")")') &
+           shape(P), shape(Q), ni, nj
+      call fail(self, EG2D_ERR_ARGUMENT, 'get_controls', trim(buf), status)
+      return
+    end if
+    call finish(self, eg2d_get_controls(self%handle, P, Q), status)
+  end subroutine grid_get_controls
+
   ! ---------------------------------------------------------------- files
   ! Writes the grid to path in an EG2D_FORMAT_* (ior() with EG2D_PLOT3D_* flags).
   subroutine grid_write(self, path, format, status)
@@ -969,6 +987,17 @@ contains
     call settle(eg2d_distribution(int(distribution, c_int), int(size(s), c_int), p1, p2, s), &
          eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
   end subroutine eg2d_get_distribution
+
+  ! The parameter p1 of a distribution whose first spacing (a fraction of 1) with n points is
+  ! first_spacing (p2: TANH_TWO's c, VINOKUR's last spacing).
+  subroutine eg2d_get_distribution_parameter(distribution, n, first_spacing, p2, p1, status)
+    integer, intent(in) :: distribution, n
+    real(c_double), intent(in) :: first_spacing, p2
+    real(c_double), intent(inout) :: p1
+    integer, intent(out), optional :: status
+    call settle(eg2d_distribution_parameter(int(distribution, c_int), int(n, c_int), first_spacing, p2, p1), &
+         eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
+  end subroutine eg2d_get_distribution_parameter
 
   ! The wall spacing for a target y+ at Reynolds number re on a body of this chord.
   subroutine eg2d_get_first_cell_height(yplus, re, chord, height, status)

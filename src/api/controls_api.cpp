@@ -2,6 +2,7 @@
 // Thomas, wall), parameter grid, weight; and seed 002's clustering helpers.
 // Each call checks everything, builds the new ControlSet on a copy and only
 // then replaces the grid's (a failed call changes nothing).
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -198,6 +199,17 @@ EG2D_API int eg2d_tensor_parameter_grid(int ni, int nj, const double *u, const d
                 s[k] = u[i];
                 t[k] = v[j];
             }
+    });
+}
+
+EG2D_API int eg2d_get_controls(const eg2d_grid *grid, double *P, double *Q) {
+    return guard(grid, "eg2d_get_controls", [&] {
+        require(P || Q, "P and Q are both NULL");
+        const std::size_t n = grid->gen.grid().x.size();
+        std::vector<double> p(P ? n : 0), q(Q ? n : 0);
+        grid->gen.control_sources(P ? p.data() : nullptr, Q ? q.data() : nullptr);
+        if (P) std::copy(p.begin(), p.end(), P);
+        if (Q) std::copy(q.begin(), q.end(), Q);
     });
 }
 

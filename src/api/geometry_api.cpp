@@ -123,6 +123,13 @@ EG2D_API int eg2d_distribution(int distribution, int n, double p1, double p2, do
     });
 }
 
+EG2D_API int eg2d_distribution_parameter(int distribution, int n, double first_spacing, double p2, double *p1) {
+    return guard_without_grid("eg2d_distribution_parameter", [&] {
+        require_ptr(p1, "p1");
+        *p1 = distribution_parameter(distribution, n, first_spacing, p2);
+    });
+}
+
 EG2D_API int eg2d_curve_points(const eg2d_curve *curve, int n, int distribution, double p1, double p2, double *x,
                                double *y) {
     return guard_without_grid("eg2d_curve_points", [&] {

@@ -225,6 +225,18 @@ ResidualInfo Generator::residual() const {
     return finite_residual(system_, p.level(), grid_.extent());
 }
 
+void Generator::control_sources(double *P, double *Q) const {
+    require_initialized("controls");
+    const std::size_t n = grid_.x.size();
+    if (P) std::fill(P, P + n, 0.0);
+    if (Q) std::fill(Q, Q + n, 0.0);
+    if (system_ == System::Laplace || controls_.empty()) return;  // Laplace has no control terms
+    Grid &g = const_cast<Grid &>(grid_);  // the Level view is read-only here
+    const ControlFields &f = controls_.update(g, false);
+    Problem p{g, system_, f, settings};
+    equivalent_sources(p.level(), P, Q);
+}
+
 Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
     // The control terms are coefficients of the quasi-linear (Winslow/TTM)
     // equation; Laplace has no place for them, and silently dropping the

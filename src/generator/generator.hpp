@@ -88,6 +88,10 @@ public:
 
     // NUMERICS.md's residual of the grid as it is. Needs an initialised grid.
     ResidualInfo residual() const;
+    // The control terms in force as Thompson's P, Q per node (operator's
+    // equivalent_sources; 0 at the nodes not solved for). Needs an
+    // initialised grid; P, Q (either may be null) hold ni*nj values.
+    void control_sources(double *P, double *Q) const;
     int iterations() const { return iterations_; }
     // What the last eg2d_iterate/eg2d_solve ran (solvers/run_report.hpp).
     const RunReport &report() const { return report_; }

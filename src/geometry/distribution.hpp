@@ -10,4 +10,11 @@ namespace eg2d {
 // parameter's name and allowed range.
 void distribute(int id, int n, double p1, double p2, double length, double *s);
 
+// The parameter p1 of EXPONENTIAL, TANH_ONE or TANH_TWO (with p2 = c) whose
+// n points have s[1] - s[0] = first (a fraction of 1), to 1e-12 relative;
+// VINOKUR's p1 is the spacing itself (checked with p2 as the last one).
+// Throws Argument naming first_spacing and the reachable range when no
+// parameter within its bound gives it.
+double distribution_parameter(int id, int n, double first, double p2);
+
 }  // namespace eg2d

@@ -35,4 +35,24 @@ ResidualInfo residual(System system, const Level &L, double extent) {
     return r;
 }
 
+void equivalent_sources(const Level &L, double *P, double *Q) {
+    const Connectivity &conn = *L.conn;
+    auto visit = [&](int i, int j) {
+        const Stencil s = conn.stencil(i, j);
+        const Metrics m = node_metrics(L, s);
+        const bool singular = !(m.jac2 > 0.0);
+        if (P) {
+            P[s.c] = singular ? 0.0 : m.cxi / m.jac2;
+            conn.sync_node(P, i, j);
+        }
+        if (Q) {
+            Q[s.c] = singular ? 0.0 : m.ceta / m.jac2;
+            conn.sync_node(Q, i, j);
+        }
+    };
+    for (int j = conn.j_begin(); j < conn.j_end(); ++j)
+        for (int i = conn.i_begin(); i < conn.i_end(); ++i) visit(i, j);
+    for (const Connectivity::Node &n : conn.extra_unknowns()) visit(n.i, n.j);
+}
+
 }  // namespace eg2d

@@ -118,4 +118,9 @@ struct ResidualInfo {
 // max over unknown nodes of max(|R_x|, |R_y|)/diag, divided by `extent` (L).
 ResidualInfo residual(System system, const Level &L, double extent);
 
+// The control terms at every unknown node as Thompson's P, Q: C_xi/J^2,
+// C_eta/J^2 (0 where J = 0), each node's copies synced; P and Q (either may
+// be null) hold ni*nj values and are left untouched at the other nodes.
+void equivalent_sources(const Level &L, double *P, double *Q);
+
 }  // namespace eg2d

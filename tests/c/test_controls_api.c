@@ -164,6 +164,82 @@ static void test_neutral_controls(void **state) {
     eg2d_destroy(g);
 }
 
+/* eg2d_get_controls: the user's arrays come back as they were set at the
+ * unknown nodes (0 on the boundary); a weight's Phi, Psi come back as
+ * alpha Phi / J^2, gamma Psi / J^2 from the grid's central differences;
+ * the Laplace system and no control give 0; an O-grid's column ni-1 is
+ * its column 0. */
+static void test_get_controls(void **state) {
+    eg2d_grid *g;
+    double P[NI * NJ], Q[NI * NJ], w[NI * NJ], x[NI * NJ], y[NI * NJ], gp[NI * NJ], gq[NI * NJ];
+    int i, j, k;
+    (void)state;
+    for (j = 0; j < NJ; ++j)
+        for (i = 0; i < NI; ++i) {
+            P[i + NI * j] = 0.1 * i - 0.3;
+            Q[i + NI * j] = -0.05 * j * j;
+            w[i + NI * j] = 1 + 0.2 * i + 0.05 * j * j;
+        }
+    assert_int_equal(eg2d_create(NI, NJ, &g), EG2D_OK);
+    assert_int_equal(domain_set(g, "valley"), EG2D_OK);
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
+    expect_error(g, eg2d_get_controls(g, NULL, NULL), EG2D_ERR_ARGUMENT, "P and Q are both NULL");
+    for (k = 0; k < NI * NJ; ++k) gp[k] = gq[k] = 7;
+    assert_int_equal(eg2d_get_controls(g, gp, gq), EG2D_OK); /* no control */
+    for (k = 0; k < NI * NJ; ++k) assert_true(gp[k] == 0 && gq[k] == 0);
+
+    assert_int_equal(eg2d_set_source_arrays(g, P, Q), EG2D_OK);
+    assert_int_equal(eg2d_iterate(g, 3, NULL), EG2D_OK);
+    assert_int_equal(eg2d_get_controls(g, gp, NULL), EG2D_OK);
+    assert_int_equal(eg2d_get_controls(g, NULL, gq), EG2D_OK);
+    for (j = 0; j < NJ; ++j)
+        for (i = 0; i < NI; ++i) {
+            k = i + NI * j;
+            if (i == 0 || j == 0 || i == NI - 1 || j == NJ - 1) {
+                assert_true(gp[k] == 0 && gq[k] == 0);
+            } else {
+                assert_true(fabs(gp[k] - P[k]) <= 1e-13 * (1 + fabs(P[k])));
+                assert_true(fabs(gq[k] - Q[k]) <= 1e-13 * (1 + fabs(Q[k])));
+            }
+        }
+
+    assert_int_equal(eg2d_set_source_arrays(g, NULL, NULL), EG2D_OK);
+    assert_int_equal(eg2d_set_weight(g, w), EG2D_OK);
+    assert_int_equal(eg2d_iterate(g, 2, NULL), EG2D_OK);
+    assert_int_equal(eg2d_get_controls(g, gp, gq), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    for (j = 1; j < NJ - 1; ++j)
+        for (i = 1; i < NI - 1; ++i) {
+            const int c = i + NI * j, e = c + 1, wst = c - 1, n = c + NI, so = c - NI;
+            const double xxi = 0.5 * (x[e] - x[wst]), yxi = 0.5 * (y[e] - y[wst]);
+            const double xeta = 0.5 * (x[n] - x[so]), yeta = 0.5 * (y[n] - y[so]);
+            const double alpha = xeta * xeta + yeta * yeta, gamma = xxi * xxi + yxi * yxi;
+            const double jac = xxi * yeta - xeta * yxi;
+            const double phi = 2 * (w[e] - w[wst]) / (w[wst] + 2 * w[c] + w[e]);
+            const double psi = 2 * (w[n] - w[so]) / (w[so] + 2 * w[c] + w[n]);
+            assert_true(fabs(gp[c] - alpha * phi / (jac * jac)) <= 1e-12 * fabs(alpha * phi / (jac * jac)));
+            assert_true(fabs(gq[c] - gamma * psi / (jac * jac)) <= 1e-12 * fabs(gamma * psi / (jac * jac)));
+        }
+    assert_int_equal(eg2d_set_system(g, EG2D_SYSTEM_LAPLACE), EG2D_OK);
+    assert_int_equal(eg2d_get_controls(g, gp, gq), EG2D_OK);
+    for (k = 0; k < NI * NJ; ++k) assert_true(gp[k] == 0 && gq[k] == 0);
+    eg2d_destroy(g);
+
+    /* O-grid: the cut column repeats column 0 */
+    assert_int_equal(eg2d_create(NI, NJ, &g), EG2D_OK);
+    assert_int_equal(eg2d_set_topology(g, EG2D_TOPO_O), EG2D_OK);
+    assert_int_equal(domain_set_annulus(g, 1, 3), EG2D_OK);
+    assert_int_equal(eg2d_add_line_source(g, EG2D_XI, 3, 2, 0.5), EG2D_OK);
+    assert_int_equal(eg2d_iterate(g, 2, NULL), EG2D_OK);
+    assert_int_equal(eg2d_get_controls(g, gp, gq), EG2D_OK);
+    for (j = 1; j < NJ - 1; ++j) {
+        assert_true(gp[NI * j] != 0 && gp[NI * j] == gp[NI - 1 + NI * j]);
+        assert_true(gq[NI * j] == gq[NI - 1 + NI * j]);
+    }
+    for (i = 0; i < NI; ++i) assert_true(gp[i] == 0 && gp[i + NI * (NJ - 1)] == 0);
+    eg2d_destroy(g);
+}
+
 static void test_parameter_bounds(void **state) {
     double lo, hi, def;
     (void)state;
@@ -177,7 +253,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_bad_arguments_change_nothing), cmocka_unit_test(test_wall_side_must_exist),
         cmocka_unit_test(test_laplace_refuses_controls),     cmocka_unit_test(test_neutral_controls),
-        cmocka_unit_test(test_parameter_bounds),
+        cmocka_unit_test(test_parameter_bounds),            cmocka_unit_test(test_get_controls),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

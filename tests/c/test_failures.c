@@ -245,6 +245,16 @@ static int r_yplus_underflow(eg2d_grid *g) {
     (void)g;
     return eg2d_first_cell_height(4.9406564584124654e-324, 1e6, 1, &h);
 }
+/* Unreachable first spacings: *p1 must be left as it was. */
+static int parameter_untouched(int dist, double first) {
+    double p1 = 42;
+    const int rc = eg2d_distribution_parameter(dist, N, first, 0, &p1);
+    return p1 == 42 ? rc : -1;
+}
+static int r_dparam_above(eg2d_grid *g) { (void)g; return parameter_untouched(EG2D_DIST_TANH_ONE, 0.2); }
+static int r_dparam_uniform(eg2d_grid *g) { (void)g; return parameter_untouched(EG2D_DIST_EXPONENTIAL, 0.125); }
+static int r_dparam_beyond(eg2d_grid *g) { (void)g; return parameter_untouched(EG2D_DIST_EXPONENTIAL, 1e-300); }
+static int r_controls_early(eg2d_grid *g) { double P[N * N], Q[N * N]; return eg2d_get_controls(g, P, Q); }
 static int r_huge_weight(eg2d_grid *g) {
     double w[N * N];
     int k;
@@ -505,6 +515,26 @@ static const bad_input rows[] = {
      "eg2d_get_coordinates: x and y are both NULL", 0},
     {"unknown quality metric", "eg2d_get_quality(g, 999, &v)", S_INIT, r_quality_999, EG2D_ERR_ARGUMENT,
      "eg2d_get_quality: metric = 999: no such quality metric", 0},
+    {"control functions before the interior", "eg2d_get_controls(g, P, Q)", S_SQUARE, r_controls_early,
+     EG2D_ERR_STATE, "eg2d_get_controls: controls: the grid has a boundary but no interior yet: call "
+     "eg2d_initialize, eg2d_iterate or eg2d_solve first", 0},
+    {"a first spacing above the uniform one for a clustering function",
+     "eg2d_distribution_parameter(EG2D_DIST_TANH_ONE, 9, 0.2, 0, &p1)", S_NONE, r_dparam_above, EG2D_ERR_ARGUMENT,
+     "eg2d_distribution_parameter: first_spacing = 0.2: not reachable with n = 9: over tanh delta in (0, 700] the "
+     "first spacing stays within [*, 0.125] (it clusters at s = 0: its first spacing is below the uniform 1/(n-1))",
+     0},
+    {"the uniform first spacing (the parameter would be 0)",
+     "eg2d_distribution_parameter(EG2D_DIST_EXPONENTIAL, 9, 0.125, 0, &p1)", S_NONE, r_dparam_uniform,
+     EG2D_ERR_ARGUMENT,
+     "eg2d_distribution_parameter: first_spacing = 0.125 is the uniform spacing 1/(n-1) with n = 9: that is "
+     "EG2D_DIST_UNIFORM (exponential beta in [-700, 700] would be 0)",
+     0},
+    {"a first spacing beyond the parameter's bound",
+     "eg2d_distribution_parameter(EG2D_DIST_EXPONENTIAL, 9, 1e-300, 0, &p1)", S_NONE, r_dparam_beyond,
+     EG2D_ERR_ARGUMENT,
+     "eg2d_distribution_parameter: first_spacing = 1e-300: not reachable with n = 9: over exponential beta in "
+     "[-700, 700] the first spacing stays within [*, *]",
+     0},
     {"Plot3D file that does not exist", "eg2d_read_plot3d(\"/nonexistent/grid.x\", 0, ...)", S_NONE,
      r_plot3d_missing, EG2D_ERR_IO,
      "eg2d_read_plot3d: /nonexistent/grid.x: cannot open: No such file or directory", 0},

@@ -224,6 +224,85 @@ static void test_distribution_errors(void **state) {
     assert_int_equal(eg2d_distribution(EG2D_DIST_UNIFORM, 5, 0, 0, NULL), EG2D_ERR_ARGUMENT);
 }
 
+/* The solved parameter gives the wanted first spacing (through eg2d_distribution,
+ * to 1e-10 relative) for every function and several n. */
+static void check_first_spacing(int dist, int n, double first, double p2) {
+    double *s = alloc(n), p1 = 0, err;
+    const int rc = eg2d_distribution_parameter(dist, n, first, p2, &p1);
+    if (rc != EG2D_OK) fail_msg("dist %d n %d first %g p2 %g: %s", dist, n, first, p2, eg2d_last_error(NULL));
+    assert_int_equal(eg2d_distribution(dist, n, p1, p2, s), EG2D_OK);
+    err = fabs((s[1] - s[0]) / first - 1);
+    if (!(err < 1e-10)) fail_msg("dist %d n %d first %g p2 %g: p1 %.17g gives %.17g (relative error %.1e)", dist, n,
+                                 first, p2, p1, s[1] - s[0], err);
+    free(s);
+}
+
+static void test_distribution_parameter(void **state) {
+    static const int ns[] = {5, 17, 65, 257, 1025};
+    static const double below[] = {1e-12, 1e-8, 1e-5, 1e-3}; /* fractions of the uniform 1/(n-1) */
+    size_t a, b;
+    double p1;
+    (void)state;
+    for (a = 0; a < sizeof ns / sizeof ns[0]; ++a) {
+        const int n = ns[a];
+        const double uniform = 1.0 / (n - 1);
+        for (b = 0; b < sizeof below / sizeof below[0]; ++b) {
+            const double h = below[b] * uniform;
+            check_first_spacing(EG2D_DIST_EXPONENTIAL, n, h, 0);
+            check_first_spacing(EG2D_DIST_TANH_ONE, n, h, 0);
+            check_first_spacing(EG2D_DIST_TANH_TWO, n, h, 0.5);
+            check_first_spacing(EG2D_DIST_TANH_TWO, n, h, 1.0);
+            check_first_spacing(EG2D_DIST_VINOKUR, n, h, 0.5 * uniform);
+        }
+        check_first_spacing(EG2D_DIST_EXPONENTIAL, n, 0.5 * uniform, 0);
+        check_first_spacing(EG2D_DIST_TANH_ONE, n, 0.999 * uniform, 0);
+        check_first_spacing(EG2D_DIST_EXPONENTIAL, n, 3 * uniform, 0); /* beta < 0 widens the first interval */
+        check_first_spacing(EG2D_DIST_TANH_TWO, n, 3 * uniform, 0.0);   /* c = 0 clusters at s = 1 */
+    }
+    /* TANH_TWO with 1/(n-1) < c < 1/2: the first spacing rises, then falls with b; the smallest b is given */
+    assert_int_equal(eg2d_distribution_parameter(EG2D_DIST_TANH_TWO, 11, 0.15, 0.2, &p1), EG2D_OK);
+    check_first_spacing(EG2D_DIST_TANH_TWO, 11, 0.15, 0.2);
+    {
+        double q = 0, s[11];
+        assert_int_equal(eg2d_distribution_parameter(EG2D_DIST_TANH_TWO, 11, 1e-4, 0.2, &q), EG2D_OK);
+        assert_true(q > p1); /* the same c reaches small spacings on the falling side */
+        assert_int_equal(eg2d_distribution(EG2D_DIST_TANH_TWO, 11, p1 * 0.5, 0.2, s), EG2D_OK);
+        assert_true(s[1] > 0.1 && s[1] < 0.15); /* below the answer it has not risen to 0.15 yet */
+    }
+}
+
+/* Unreachable spacings: EG2D_ERR_ARGUMENT naming first_spacing, *p1 untouched. */
+static void check_unreachable(int dist, int n, double first, double p2, const char *says) {
+    double p1 = -123.5;
+    assert_int_equal(eg2d_distribution_parameter(dist, n, first, p2, &p1), EG2D_ERR_ARGUMENT);
+    assert_true(p1 == -123.5);
+    if (!strstr(eg2d_last_error(NULL), says)) fail_msg("\"%s\" lacks \"%s\"", eg2d_last_error(NULL), says);
+}
+
+static void test_distribution_parameter_errors(void **state) {
+    (void)state;
+    check_unreachable(EG2D_DIST_TANH_ONE, 11, 0.1, 0, "first_spacing = 0.1 is the uniform spacing");
+    check_unreachable(EG2D_DIST_EXPONENTIAL, 11, 0.1, 0, "that is EG2D_DIST_UNIFORM");
+    check_unreachable(EG2D_DIST_TANH_TWO, 11, 0.1, 0.5, "first_spacing = 0.1 is the uniform spacing");
+    check_unreachable(EG2D_DIST_TANH_ONE, 11, 0.2, 0, "first_spacing = 0.2: not reachable with n = 11");
+    check_unreachable(EG2D_DIST_TANH_TWO, 11, 0.2, 0.5, "over tanh strength b in (0, 350]");
+    check_unreachable(EG2D_DIST_TANH_TWO, 11, 0.01, 0.0, "and c = 0: over tanh strength b");
+    check_unreachable(EG2D_DIST_TANH_TWO, 11, 0.3, 0.2, "stays within"); /* above the rise's peak */
+    check_unreachable(EG2D_DIST_EXPONENTIAL, 11, 1e-300, 0, "over exponential beta in [-700, 700]");
+    check_unreachable(EG2D_DIST_EXPONENTIAL, 1001, 0.9, 0, "0.503415]"); /* beta = -700 */
+    check_unreachable(EG2D_DIST_TANH_ONE, 101, 1e-310, 0, "not reachable");
+    check_unreachable(EG2D_DIST_VINOKUR, 11, 0.6, 0.5, "leave no room");
+    check_unreachable(EG2D_DIST_UNIFORM, 11, 0.1, 0, "has no parameter");
+    check_unreachable(99, 11, 0.01, 0, "distribution = 99");
+    check_unreachable(EG2D_DIST_TANH_TWO, 11, 0.01, 1.5, "c = 1.5");
+    check_unreachable(EG2D_DIST_TANH_ONE, 1, 0.01, 0, "n = 1");
+    check_unreachable(EG2D_DIST_TANH_ONE, 11, 0, 0, "first_spacing = 0: must be in (0, 1)");
+    check_unreachable(EG2D_DIST_TANH_ONE, 11, NAN, 0, "first_spacing = nan");
+    check_unreachable(EG2D_DIST_TANH_ONE, 11, 0.01, INFINITY, "p2 = inf");
+    assert_int_equal(eg2d_distribution_parameter(EG2D_DIST_TANH_ONE, 11, 0.01, 0, NULL), EG2D_ERR_ARGUMENT);
+    assert_non_null(strstr(eg2d_last_error(NULL), "p1 is NULL"));
+}
+
 static void test_airfoil_files(void **state) {
     eg2d_curve *selig, *led, *naca, *c = (eg2d_curve *)1;
     double xs[61], ys[61], xl[61], yl[61], xn[61], yn[61], dev = 0;
@@ -395,6 +474,8 @@ int main(void) {
         cmocka_unit_test(test_distributions_end_spacings),
         cmocka_unit_test(test_vinokur_hits_both_spacings),
         cmocka_unit_test(test_distribution_errors),
+        cmocka_unit_test(test_distribution_parameter),
+        cmocka_unit_test(test_distribution_parameter_errors),
         cmocka_unit_test(test_airfoil_files),
         cmocka_unit_test(test_first_cell_height),
         cmocka_unit_test(test_opposite_sides_direction),

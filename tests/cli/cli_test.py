@@ -170,7 +170,17 @@ class ErrorMessages(unittest.TestCase):
                    "CASE:14:16: key 'sides.left.distribution': eg2d_curve_points: Vinokur spacings 0.9 + 0.5 leave "
                    "no room on length 1 with 5 points")
         self.check(base + left + '{ kind = "tanh", beta = 2 }\n', 3,
-                   "CASE:14:33: key 'sides.left.distribution.beta': unknown key (expected one of: kind, delta)")
+                   "CASE:14:33: key 'sides.left.distribution.beta': unknown key (expected one of: kind, delta, "
+                   "first_spacing)")
+        self.check(base + left + '{ kind = "tanh", delta = 2, first_spacing = 0.1 }\n', 3,
+                   "CASE:14:60: key 'sides.left.distribution.first_spacing': give delta or first_spacing, not both")
+        self.check(base + left + '{ kind = "exponential" }\n', 3,
+                   "CASE:14:16: key 'sides.left.distribution.beta': missing: give beta or first_spacing")
+        self.check(base + left + '{ kind = "tanh", first_spacing = 0.5 }\n', 4,
+                   "CASE:14:49: key 'sides.left.distribution.first_spacing': eg2d_distribution_parameter: "
+                   "first_spacing = 0.5: not reachable with n = 5: over tanh delta in (0, 700] the first spacing "
+                   "stays within [1.97891e-228, 0.25] (it clusters at s = 0: its first spacing is below the uniform "
+                   "1/(n-1))")
 
     def test_multigrid_parameters(self):
         if not features()["solvers"]["multigrid"]:
@@ -346,6 +356,115 @@ class Sides(unittest.TestCase):
             self.assertGreater(fmean, 20)   # 26.75 deg with fixed nodes
             self.assertLess(smean, 1)       # 0.23 deg sliding
             self.assertLess(smax, 5)        # 4.43 deg (next to the corners, which stay fixed)
+
+
+class RunFiles(unittest.TestCase):
+    """first_spacing in place of a stretching parameter; the run's history and control functions as files."""
+
+    CASE = 'size = [13, 9]\n' + ErrorMessages.GOOD_SIDES.replace(
+        'y = "1"', 'y = "1 + 0.3 * s * (1 - s)"') + textwrap.dedent("""
+        [solver]
+        method = "lsor"
+        tolerance = 1e-10
+        [controls.source_arrays]
+        P = "0.5"
+        Q = "-0.25"
+        [output]
+        formats = ["plot3d", "history", "history-svg", "controls"]
+        """)
+
+    def run_case(self, d, text=None, out="out"):
+        path = os.path.join(d, "case.toml")
+        with open(path, "w") as f:
+            f.write(text or self.CASE)
+        return run("run", path, "-o", os.path.join(d, out), "--quiet")
+
+    def read_csv(self, path):
+        with open(path) as f:
+            lines = f.read().splitlines()
+        return lines[0], [line.split(",") for line in lines[1:]]
+
+    def test_history_and_controls(self):
+        with tempfile.TemporaryDirectory() as d:
+            code, out, err = self.run_case(d)
+            self.assertEqual(code, 0, out + err)
+            iterations, residual = re.search(r"converged in (\d+) iterations, residual (\S+),", out).groups()
+            header, rows = self.read_csv(os.path.join(d, "out", "case.history.csv"))
+            self.assertEqual(header, "iteration,residual")
+            self.assertEqual([int(r[0]) for r in rows], list(range(1, int(iterations) + 1)))  # one row per iteration
+            self.assertEqual("%.3e" % float(rows[-1][1]), residual)                           # the reported residual
+            self.assertLessEqual(float(rows[-1][1]), 1e-10)
+            check_svg(self, os.path.join(d, "out", "case.history.svg"))
+            with open(os.path.join(d, "out", "case.history.svg")) as f:
+                self.assertIn("case: %s iterations, residual %s" % (iterations, residual), f.read())
+            header, rows = self.read_csv(os.path.join(d, "out", "case.controls.csv"))
+            self.assertEqual(header, "i,j,x,y,P,Q")
+            self.assertEqual(len(rows), 13 * 9)                                               # ni*nj nodes
+            self.assertEqual([(int(r[0]), int(r[1])) for r in rows], [(i, j) for j in range(9) for i in range(13)])
+            for r in rows:
+                i, j, P, Q = int(r[0]), int(r[1]), float(r[4]), float(r[5])
+                inner = 0 < i < 12 and 0 < j < 8
+                self.assertAlmostEqual(P, 0.5 if inner else 0, places=12)
+                self.assertAlmostEqual(Q, -0.25 if inner else 0, places=12)
+            # x, y are the grid's nodes (the Plot3D file's)
+            with open(os.path.join(d, "out", "case.xyz"), "rb") as f:
+                xy = struct.unpack("<%dd" % (2 * 13 * 9), f.read()[20:20 + 16 * 13 * 9])
+            self.assertEqual([float(r[2]) for r in rows], list(xy[:13 * 9]))
+            self.assertEqual([float(r[3]) for r in rows], list(xy[13 * 9:]))
+            self.assertEqual(sorted(os.listdir(os.path.join(d, "out"))),
+                             ["case.controls.csv", "case.history.csv", "case.history.svg", "case.xyz"])
+
+    def test_failed_run_writes_no_history(self):
+        with tempfile.TemporaryDirectory() as d:
+            code, out, err = self.run_case(d, self.CASE.replace("tolerance = 1e-10", "tolerance = 1e-10\nmax_iterations = 2"))
+            self.assertEqual(code, 5, out + err)
+            self.assertFalse(os.path.exists(os.path.join(d, "out")))
+
+    def test_the_set_rules_hold_for_the_run_files(self):
+        # a link's target is replaced (the link kept); a FIFO without a reader
+        # fails the set, which leaves every older file as it was
+        with tempfile.TemporaryDirectory() as d:
+            os.mkdir(os.path.join(d, "out"))
+            target = os.path.join(d, "kept.csv")
+            with open(target, "w") as f:
+                f.write("old")
+            os.symlink(target, os.path.join(d, "out", "case.history.csv"))
+            code, out, err = self.run_case(d)
+            self.assertEqual(code, 0, out + err)
+            self.assertTrue(os.path.islink(os.path.join(d, "out", "case.history.csv")))
+            with open(target) as f:
+                self.assertTrue(f.read().startswith("iteration,residual\n"))
+            for name in ("case.xyz", "case.history.svg"):
+                with open(os.path.join(d, "out", name), "w") as f:
+                    f.write("old")
+            os.remove(os.path.join(d, "out", "case.controls.csv"))
+            os.mkfifo(os.path.join(d, "out", "case.controls.csv"))
+            code, out, err = self.run_case(d)
+            self.assertEqual(code, 8, out + err)
+            self.assertIn("case.controls.csv: a FIFO with no reader: not written", err)
+            for name in ("case.xyz", "case.history.svg"):
+                with open(os.path.join(d, "out", name)) as f:
+                    self.assertEqual(f.read(), "old")
+            self.assertEqual(sorted(os.listdir(os.path.join(d, "out"))),
+                             ["case.controls.csv", "case.history.csv", "case.history.svg", "case.xyz"])
+
+    def test_first_spacing(self):
+        """first_spacing gives the parameter: the first interval of the side is that long (Plot3D read back)."""
+        if not features()["geometry"]["curves"]:
+            self.skipTest("this build has no curves")
+        for kind in ('kind = "exponential"', 'kind = "tanh"', 'kind = "tanh2", c = 1'):
+            text = self.CASE.replace('[sides.left]\nx = "0"\ny = "s"',
+                                     '[sides.left]\nx = "0"\ny = "2*s"\ndistribution = { %s, first_spacing = 0.01 }'
+                                     % kind).replace('x = "1"\ny = "s"', 'x = "1"\ny = "2*s"').replace(
+                                     'y = "1 + 0.3 * s * (1 - s)"', 'y = "2 + 0.3 * s * (1 - s)"')
+            with tempfile.TemporaryDirectory() as d:
+                code, out, err = self.run_case(d, text)
+                self.assertEqual(code, 0, out + err)
+                with open(os.path.join(d, "out", "case.xyz"), "rb") as f:
+                    xy = struct.unpack("<%dd" % (2 * 13 * 9), f.read()[20:20 + 16 * 13 * 9])
+                left_y = [xy[13 * 9 + 13 * j] for j in range(9)]
+                self.assertAlmostEqual(left_y[1] - left_y[0], 0.01, delta=1e-12, msg=kind)
+                self.assertGreater(left_y[8] - left_y[7], 0.01)
 
 
 class Controls(unittest.TestCase):

@@ -373,6 +373,7 @@ def test_distribution_and_first_cell_height():
     assert eg2d.first_cell_height(1, 1e6) == pytest.approx(1 / (1e6 * np.sqrt(cf / 2)), rel=1e-12)
     with pytest.raises(eg2d.ArgumentError):
         eg2d.first_cell_height(-1, 1e6)
+    assert eg2d.distribution(eg2d.DIST_TANH_ONE, 33, eg2d.distribution_parameter(eg2d.DIST_TANH_ONE, 33, 1e-4))[1] == pytest.approx(1e-4, rel=1e-12)  # noqa: E501
 
 
 def test_set_side_curve():
@@ -417,6 +418,7 @@ def test_sources_and_source_arrays():
             g.set_source_arrays(Q=np.zeros((9, 8)))
         g.set_source_arrays(Q=np.full((9, 9), 0.5))
         g.solve()
+        np.testing.assert_allclose(g.get_controls()[1][1:-1, 1:-1], 0.5, rtol=1e-13)
         assert g.get_coordinates()[1][4, 4] > y0[4, 4] + 1e-3
         with pytest.raises(eg2d.ArgumentError):
             g.set_source_arrays(P=np.full((9, 9), np.inf))

@@ -277,7 +277,7 @@ void read_output(const Fields &top, Case &c, const std::string &stem) {
     if (wanted.empty()) wanted.emplace_back("svg", top.where());
     for (const auto &w : wanted) {
         const Feature &fmt = pick(formats(), w.first, w.second);
-        c.outputs.push_back({fmt.id, name + fmt.extension, w.second, fmt.directory});
+        c.outputs.push_back({fmt.id, name + fmt.extension, w.second, fmt.directory, fmt.tool});
     }
 }
 

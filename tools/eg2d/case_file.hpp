@@ -47,10 +47,11 @@ struct Clustering {  // Khattri's (2006) clustering map in one direction (eg2d_c
 };
 
 struct OutputFile {
-    int format;         // EG2D_FORMAT_* (or the tool's own SVG until the library has one)
+    int format;         // EG2D_FORMAT_* (-1 for the command's own files: tool)
     std::string name;   // file name, e.g. "swan.svg"
     Location where;
     bool directory = false;  // a directory format (Feature::directory): NAME_foam
+    int tool = 0;            // a ToolFile (features.hpp) the command writes itself; 0: eg2d_write
 };
 
 struct Case {

@@ -131,6 +131,10 @@ const std::vector<Feature> &formats() {
         {"openfoam", EG2D_FORMAT_OPENFOAM, true, "_foam", "", false, true},
         {"report", EG2D_FORMAT_REPORT, true, ".report.txt"},
         {"report-json", EG2D_FORMAT_REPORT_JSON, true, ".report.json"},
+        // written by the command (run_files.hpp): the run's history and the control functions
+        {"history", -1, true, ".history.csv", "", false, false, kHistoryCsv},
+        {"history-svg", -1, true, ".history.svg", "", false, false, kHistorySvg},
+        {"controls", -1, true, ".controls.csv", "", false, false, kControlsCsv},
     };
     return t;
 }

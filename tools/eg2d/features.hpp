@@ -16,7 +16,12 @@ struct Feature {
     const char *section = "solver";  // parameters: the table of the case file that holds them
     bool flag = false;               // parameters: on/off, written true/false (1/0 accepted)
     bool directory = false;          // output formats: a directory (an OpenFOAM case), not a file
+    int tool = 0;                    // output formats: a ToolFile the command writes itself (0: eg2d_write)
 };
+
+// Output files the command writes itself, from the run rather than the grid
+// (run_files.hpp): Feature::tool, OutputFile::tool.
+enum ToolFile { kLibraryFile = 0, kHistoryCsv = 1, kHistorySvg = 2, kControlsCsv = 3 };
 
 const std::vector<Feature> &solvers();        // [solver] method
 const std::vector<Feature> &parameters();     // keys that are EG2D_PARAM_* settings, by section

@@ -49,6 +49,26 @@ void check(int status, const Location &at) {
 
 bool curves_available() { return true; }
 
+namespace {
+
+// The stretching parameter `key`, or first_spacing = ... in its place (> 0,
+// in the curve's length units; the parameter is solved for in curve_nodes).
+void read_stretching(const Fields &f, const char *key, const Constants &constants, Distribution &d) {
+    if (f.has(key) && f.has("first_spacing"))
+        throw Failure(EXIT_CASE, f.at("first_spacing").str() + ": give " + key + " or first_spacing, not both");
+    if (!f.has("first_spacing")) {
+        if (!f.has(key)) throw Failure(EXIT_CASE, f.at(key).str() + ": missing: give " + key + " or first_spacing");
+        d.p1 = f.number(key, constants);
+        return;
+    }
+    d.first_spacing = f.number("first_spacing", constants);
+    d.first_spacing_at = f.at("first_spacing");
+    if (!(d.first_spacing > 0))
+        throw Failure(EXIT_CASE, d.first_spacing_at.str() + ": must be > 0 (a length, in the curve's units)");
+}
+
+}  // namespace
+
 Distribution parse_distribution(const toml::node &node, const Location &where, const Constants &constants) {
     Distribution d;
     d.given = true;
@@ -67,20 +87,20 @@ Distribution parse_distribution(const toml::node &node, const Location &where, c
         Fields(t, where, {"kind"}).finish();
         d.kind = EG2D_DIST_UNIFORM;
     } else if (kind == "exponential") {  // beta > 0 clusters at the start
-        Fields f(t, where, {"kind", "beta"});
+        Fields f(t, where, {"kind", "beta", "first_spacing"});
         f.finish();
         d.kind = EG2D_DIST_EXPONENTIAL;
-        d.p1 = f.number("beta", constants);
+        read_stretching(f, "beta", constants, d);
     } else if (kind == "tanh") {  // one-sided, clusters at the start
-        Fields f(t, where, {"kind", "delta"});
+        Fields f(t, where, {"kind", "delta", "first_spacing"});
         f.finish();
         d.kind = EG2D_DIST_TANH_ONE;
-        d.p1 = f.number("delta", constants);
+        read_stretching(f, "delta", constants, d);
     } else if (kind == "tanh2") {
-        Fields f(t, where, {"kind", "b", "c"});
+        Fields f(t, where, {"kind", "b", "c", "first_spacing"});
         f.finish();
         d.kind = EG2D_DIST_TANH_TWO;
-        d.p1 = f.number("b", constants);
+        read_stretching(f, "b", constants, d);
         d.p2 = f.number("c", constants);
     } else {  // Vinokur: the first and last spacings, in length units
         Fields f(t, where, {"kind", "first", "last"});
@@ -131,9 +151,18 @@ std::unique_ptr<PieceCurve> make_curve(const SidePiece &p, const Constants &cons
     return c;
 }
 
-const Distribution &distribution_of(const SidePiece &p) {
-    static const Distribution uniform;  // kind 0: EG2D_DIST_UNIFORM
-    return p.distribution.given ? p.distribution : uniform;
+// The piece's distribution for n nodes on curve c: first_spacing = ... becomes
+// the parameter that gives it (eg2d_distribution_parameter, in fractions of
+// the curve's length).
+Distribution distribution_of(const SidePiece &p, const PieceCurve &c, int n) {
+    if (!p.distribution.given) return Distribution{};  // kind 0: EG2D_DIST_UNIFORM
+    Distribution d = p.distribution;
+    if (d.first_spacing > 0) {
+        double length = 0;
+        check(eg2d_curve_length(c.curve.get(), &length), c.at);
+        check(eg2d_distribution_parameter(d.kind, n, d.first_spacing / length, d.p2, &d.p1), d.first_spacing_at);
+    }
+    return d;
 }
 
 }  // namespace
@@ -141,7 +170,7 @@ const Distribution &distribution_of(const SidePiece &p) {
 void curve_nodes(const SidePiece &p, int n, const Constants &constants, std::vector<double> &x,
                  std::vector<double> &y) {
     const auto c = make_curve(p, constants);
-    const Distribution &d = distribution_of(p);
+    const Distribution d = distribution_of(p, *c, n);
     x.assign(static_cast<std::size_t>(n), 0);
     y.assign(x.size(), 0);
     const int status = eg2d_curve_points(c->curve.get(), n, d.kind, d.p1, d.p2, x.data(), y.data());
@@ -152,7 +181,9 @@ void curve_nodes(const SidePiece &p, int n, const Constants &constants, std::vec
 SlidingSide::SlidingSide(eg2d_grid *grid, const SideSpec &spec, const Constants &constants) {
     const SidePiece &p = spec.pieces.front();
     auto c = make_curve(p, constants);
-    const Distribution &d = distribution_of(p);
+    int ni = 0, nj = 0;
+    eg2d_get_size(grid, &ni, &nj);
+    const Distribution d = distribution_of(p, *c, spec.side == EG2D_SIDE_JMIN || spec.side == EG2D_SIDE_JMAX ? ni : nj);
     const int flags = EG2D_CURVE_SLIDING | (p.reverse ? EG2D_CURVE_REVERSE : 0);
     const int status = eg2d_set_side_curve(grid, spec.side, c->curve.get(), d.kind, d.p1, d.p2, flags);
     if (c->user.failure) throw *c->user.failure;

@@ -17,6 +17,8 @@
 #include "features.hpp"
 #include "piece_curve.hpp"
 #include "progress.hpp"
+#include "run_files.hpp"
+#include "text_output.hpp"
 
 namespace eg2dtool {
 
@@ -112,7 +114,7 @@ void preflight(const Case &c, const RunOptions &o) {
         const double x[9] = {0, 0.5, 1, 0, 0.5, 1, 0, 0.5, 1}, y[9] = {0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1};
         eg2d_set_coordinates(probe, x, y);
         for (const auto &out : c.outputs)
-            if (eg2d_write(probe, "/dev/null", out.format) == EG2D_ERR_UNSUPPORTED) {
+            if (!out.tool && eg2d_write(probe, "/dev/null", out.format) == EG2D_ERR_UNSUPPORTED) {
                 const std::string why = eg2d_last_error(probe);
                 eg2d_destroy(probe);
                 throw Failure(EXIT_UNSUPPORTED, out.where.str() + ": " + why + " (checked before solving; no files written)");
@@ -206,6 +208,41 @@ void print_quality(eg2d_grid *g, int topology) {
     std::printf("\n");
 }
 
+// The monitor of a run: the progress line (and Ctrl-C), and the history of
+// (iteration, residual) when a history file is asked for.
+struct RunMonitor {
+    Progress *progress;
+    bool keep;
+    std::vector<HistoryRow> rows;
+
+    static int call(void *user, int iteration, double residual) {
+        RunMonitor &m = *static_cast<RunMonitor *>(user);
+        if (m.keep) m.rows.push_back({iteration, residual});
+        return Progress::monitor(m.progress, iteration, residual);
+    }
+};
+
+// The text of each file the command writes itself (out.tool), in the order of
+// c.outputs ("" for the library's formats): made before any file is written.
+std::vector<std::string> tool_texts(const eg2d_grid *g, const Case &c, const std::vector<HistoryRow> &history,
+                                    double tolerance) {
+    std::vector<std::string> texts;
+    for (const auto &out : c.outputs) {
+        std::string text;
+        if (out.tool == kHistoryCsv) text = history_csv(history);
+        else if (out.tool == kHistorySvg) text = history_svg(history, tolerance, c.title);
+        else if (out.tool == kControlsCsv) {
+            try {
+                text = controls_csv(g);
+            } catch (const Failure &f) {
+                throw Failure(f.exit_code(), out.where.str() + ": " + f.what());
+            }
+        }
+        texts.push_back(std::move(text));
+    }
+    return texts;
+}
+
 // The output set is written as one unit: every file first into a staging
 // directory beside them, and only when all are written are they renamed
 // into place (a full disk or Ctrl-C part-way leaves the old set as it was,
@@ -214,7 +251,10 @@ void print_quality(eg2d_grid *g, int topology) {
 // Paths that are links, hard-linked files or devices, and existing case
 // directories, are written by the library first, each atomically where the
 // path allows (written_in_place; streams before files), then the renames.
-void write_outputs(eg2d_grid *g, const Case &c, const RunOptions &o) {
+// The command's own files (out.tool: the history, the control functions)
+// are made as text before anything is written and follow the same rules
+// (text_output.hpp).
+void write_outputs(eg2d_grid *g, const Case &c, const RunOptions &o, const std::vector<std::string> &texts) {
     make_directory(o.out_dir);
     if (c.svg_quality >= 0) check(g, eg2d_set_parameter(g, EG2D_PARAM_SVG_QUALITY, c.svg_quality), c.svg_quality_at);
     std::string stage = o.out_dir + "/.eg2d-set-XXXXXX";
@@ -228,21 +268,25 @@ void write_outputs(eg2d_grid *g, const Case &c, const RunOptions &o) {
             rmdir(dir.c_str());
         }
     } cleanup{stage, c};
-    for (const auto &out : c.outputs) {
+    for (std::size_t k = 0; k < c.outputs.size(); ++k) {
+        const auto &out = c.outputs[k];
         if (Progress::interrupted()) throw Failure(EXIT_INTERRUPTED, "interrupted: no files written");
-        check(g, eg2d_write(g, (stage + "/" + out.name).c_str(), out.format), out.where);
+        if (out.tool) write_text_file(stage + "/" + out.name, texts[k]);
+        else check(g, eg2d_write(g, (stage + "/" + out.name).c_str(), out.format), out.where);
     }
     if (Progress::interrupted()) throw Failure(EXIT_INTERRUPTED, "interrupted: no files written");
     // Streams (a FIFO, a character device, or a link to one) first: a FIFO
     // with no reader, the likeliest failure here, then leaves every file as it was.
     for (const bool streams : {true, false})
-        for (const auto &out : c.outputs) {
+        for (std::size_t k = 0; k < c.outputs.size(); ++k) {
+            const auto &out = c.outputs[k];
             const std::string path = o.out_dir + "/" + out.name;
             struct stat st, end;
             if (lstat(path.c_str(), &st) != 0 || !written_in_place(out, st)) continue;
             const bool stream = stat(path.c_str(), &end) == 0 && (S_ISFIFO(end.st_mode) || S_ISCHR(end.st_mode));
             if (stream != streams) continue;
-            check(g, eg2d_write(g, path.c_str(), out.format), out.where);
+            if (out.tool) write_text_in_place(path, texts[k]);
+            else check(g, eg2d_write(g, path.c_str(), out.format), out.where);
             std::printf("wrote %s\n", path.c_str());
         }
     for (const auto &out : c.outputs) {
@@ -321,8 +365,10 @@ int run_case(const Case &c, const RunOptions &o) {
     // Ctrl-C is caught from here to the last file written: during the run the
     // monitor stops it; while writing, the next file is not begun.
     Progress progress(o.live, o.quiet);
+    RunMonitor monitor{&progress, false, {}};
+    for (const auto &out : c.outputs) monitor.keep = monitor.keep || out.tool == kHistoryCsv || out.tool == kHistorySvg;
     const auto start = std::chrono::steady_clock::now();
-    eg2d_set_monitor(g, &Progress::monitor, &progress);
+    eg2d_set_monitor(g, &RunMonitor::call, &monitor);
     const int status = eg2d_solve(g);
     eg2d_set_monitor(g, nullptr, nullptr);
     progress.finish();
@@ -341,7 +387,7 @@ int run_case(const Case &c, const RunOptions &o) {
     print_quality(g, c.topology);
     if (status != EG2D_OK)
         throw Failure(exit_code_for_status(status), c.file + ": " + eg2d_last_error(g) + " (no files written)");
-    write_outputs(g, c, o);
+    write_outputs(g, c, o, tool_texts(g, c, monitor.rows, tolerance));
     return EXIT_OK;
 }
 

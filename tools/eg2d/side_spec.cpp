@@ -195,7 +195,11 @@ void side_nodes(const SideSpec &spec, int n, bool closed, const Constants &const
             weight[k] = polyline_length(p.px, p.py);
         } else {  // the length of the piece's curve, sampled evenly (whatever its own distribution)
             SidePiece even = p;
-            if (needs_curve(even)) even.distribution = Distribution{true, 0, 0, 0, p.where};  // kind 0: EG2D_DIST_UNIFORM
+            if (needs_curve(even)) {
+                even.distribution = Distribution{};  // kind 0: EG2D_DIST_UNIFORM
+                even.distribution.given = true;
+                even.distribution.where = p.where;
+            }
             std::vector<double> sx, sy;
             piece_nodes(even, 257, n, false, constants, sx, sy);
             weight[k] = polyline_length(sx, sy);

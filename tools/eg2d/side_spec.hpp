@@ -22,6 +22,11 @@ struct Distribution {
     int kind = 0;
     double p1 = 0, p2 = 0;
     Location where;
+    // first_spacing = ... in place of p1 (exponential, tanh, tanh2): the first
+    // spacing in the curve's length units; p1 is solved for when the number of
+    // nodes is known (eg2d_distribution_parameter). 0: p1 is given.
+    double first_spacing = 0;
+    Location first_spacing_at;
 };
 
 struct SidePiece {

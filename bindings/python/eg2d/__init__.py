@@ -14,7 +14,7 @@ from .errors import (ArgumentError, BoundaryError, DivergedError, Error, FileErr
 from .functions import (last_error, parameter_bounds, read_plot3d, read_points, solver_name,  # noqa: F401
                         status_string, version)
 from .curve import Curve  # noqa: F401
-from .functions import clustering_map, distribution, first_cell_height, tensor_parameter_grid  # noqa: F401
+from .functions import clustering_map, distribution, distribution_parameter, first_cell_height, tensor_parameter_grid  # noqa: F401,E501
 from .grid import Grid  # noqa: F401
 
 __version__ = "%d.%d.%d" % (VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH)  # noqa: F405

@@ -58,6 +58,7 @@ PROTOTYPES = {
     "eg2d_curve_length": (c_int, [curve_p, double_p]),
     "eg2d_curve_evaluate": (c_int, [curve_p, c_double, double_p, double_p]),
     "eg2d_distribution": (c_int, [c_int, c_int, c_double, c_double, double_p]),
+    "eg2d_distribution_parameter": (c_int, [c_int, c_int, c_double, c_double, double_p]),
     "eg2d_curve_points": (c_int, [curve_p, c_int, c_int, c_double, c_double, double_p, double_p]),
     "eg2d_set_side_curve": (c_int, [grid_p, c_int, curve_p, c_int, c_double, c_double, c_int]),
     "eg2d_first_cell_height": (c_int, [c_double, c_double, c_double, double_p]),
@@ -88,6 +89,7 @@ PROTOTYPES = {
     "eg2d_clustering_map": (c_int, [c_int, c_double, c_double, c_double, c_int, double_p]),
     "eg2d_tensor_parameter_grid": (c_int, [c_int, c_int, double_p, double_p, double_p, double_p]),
     "eg2d_set_weight": (c_int, [grid_p, double_p]),
+    "eg2d_get_controls": (c_int, [grid_p, double_p, double_p]),
     # Boundary patches
     "eg2d_set_patch": (c_int, [grid_p, c_int, c_int, c_int, c_int, c_char_p]),
     "eg2d_clear_patches": (c_int, [grid_p]),

@@ -82,6 +82,13 @@ def distribution(distribution, n, p1=0.0, p2=0.0):
     return s
 
 
+def distribution_parameter(distribution, n, first_spacing, p2=0.0):
+    """The p1 of a DIST_* distribution whose first spacing (a fraction of 1) is first_spacing with n points."""
+    p1 = c_double()
+    _check(lib.eg2d_distribution_parameter(int(distribution), int(n), float(first_spacing), float(p2), byref(p1)))
+    return p1.value
+
+
 def first_cell_height(yplus, reynolds, chord=1.0):
     """The wall spacing for a target y+ at a chord Reynolds number (flat-plate estimate)."""
     h = c_double()

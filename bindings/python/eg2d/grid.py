@@ -288,6 +288,14 @@ class Grid(Handle):
         self._check(lib.eg2d_get_cell_quality(self._handle(), int(metric), _ptr(v)))
         return v
 
+    def get_controls(self):
+        """The control terms as Thompson's (P, Q) per node: numpy (ni, nj), Fortran order."""
+        ni, nj = self.get_size()
+        P = np.empty((ni, nj), dtype=np.float64, order="F")
+        Q = np.empty_like(P, order="F")
+        self._check(lib.eg2d_get_controls(self._handle(), _ptr(P), _ptr(Q)))
+        return P, Q
+
     def set_side_curve(self, side, curve, distribution=C.DIST_UNIFORM, p1=0.0, p2=0.0, flags=0):
         """The side's points on an eg2d.Curve with a distribution and CURVE_* flags."""
         self._check(lib.eg2d_set_side_curve(self._handle(), int(side), curve._handle(), int(distribution),
