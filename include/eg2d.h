@@ -829,11 +829,11 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   ratio, about the schedule's. A march that folds is made again with
  *   EG2D_PARAM_MARCH_SMOOTHING 1, 2, 4 and 8; one that still cannot be
  *   made (EG2D_ERR_FOLDED or EG2D_ERR_ARGUMENT of EG2D_INIT_HYPERBOLIC)
- *   leaves the control below. On a C-grid the cut is held with the layer
- *   and its first cells grow downstream as h sqrt(ds / ds_te) (ds the cut's
- *   spacing, ds_te that at the trailing edge); IMIN, IMAX and JMAX keep
- *   their lines, but their nodes move along them to where the march's
- *   lines reach them. The run says which layer it made, the retries, the
+ *   leaves the control below. JMAX keeps its line, but its nodes move
+ *   along it to where the march's lines reach it (the ends stay). On a
+ *   C-grid the cut is held with the layer and its first cells grow
+ *   downstream as h sqrt(ds / ds_te) (ds the cut's spacing, ds_te that at
+ *   the trailing edge), and IMIN and IMAX move their nodes like JMAX. The run says which layer it made, the retries, the
  *   moves and any clipping (eg2d_get_run_event).
  * WALL with EG2D_PARAM_WALL_LAYER = 3 (the default): the hybrid layer of 2
  *   is made and kept on an O- or C-grid when the march's rows grow by at
@@ -992,6 +992,56 @@ EG2D_API int eg2d_get_controls(const eg2d_grid *grid, double *P, double *Q);
 #define EG2D_MARCH_END_CONSTANT_Y 2 /* the same with y = const */
 #define EG2D_MARCH_END_SPLAY     3  /* the end cell widens in proportion to the layer height,
                                        so the end line splays outward */
+
+/* Airfoil grids (eg2d_set_airfoil), as Construct2D's front end makes them. */
+#define EG2D_PARAM_AIRFOIL_FARFIELD      420  /* [2, 1e6] chords, default 100: the far field's
+                                                 least distance from the section (a C-grid's
+                                                 outflow this far behind the trailing edge) */
+#define EG2D_PARAM_AIRFOIL_LE_SPACING    421  /* (0, 0.1] chords, 0 (default): a tenth of the
+                                                 section's mean spacing: the spacing along the
+                                                 section at its leading edge */
+#define EG2D_PARAM_AIRFOIL_TE_SPACING    422  /* (0, 0.1] chords, 0 (default): a quarter of the
+                                                 mean spacing: at the trailing edge, the spacing
+                                                 along a blunt base and the C-grid cut's first */
+#define EG2D_PARAM_AIRFOIL_WAKE_NODES    423  /* C-grid: cut nodes a side, the trailing edge's
+                                                 index i; 0 (default): about 0.21 (ni-1), a
+                                                 multiple of the largest power of two up to 64
+                                                 that divides ni-1 */
+#define EG2D_PARAM_AIRFOIL_TRAILING_EDGE 424  /* an open trailing edge: EG2D_AIRFOIL_TE_BLUNT
+                                                 (default) or EG2D_AIRFOIL_TE_SHARPEN */
+#define EG2D_AIRFOIL_TE_BLUNT   0  /* kept as a blunt base: straight, part of the wall */
+#define EG2D_AIRFOIL_TE_SHARPEN 1  /* each surface moved towards the base's midpoint in
+                                      proportion to its distance along the chord */
+/* Sets the topology (EG2D_TOPO_O or EG2D_TOPO_C) and the whole boundary of
+ * an airfoil grid round `section`, a curve from its trailing edge along one
+ * surface to the leading edge and back along the other (eg2d_curve_naca4,
+ * eg2d_curve_read_airfoil). The leading edge is the point farthest from the
+ * trailing edge's midpoint; the chord runs from it to that midpoint, and
+ * lengths are in chords. A trailing-edge gap above 1e-7 chords is open.
+ *   The section: re-panelled by Vinokur's distribution on each surface from
+ *   EG2D_PARAM_AIRFOIL_TE_SPACING to EG2D_PARAM_AIRFOIL_LE_SPACING; an open
+ *   trailing edge kept as a straight base with nodes about that spacing
+ *   apart (EG2D_AIRFOIL_TE_BLUNT) or closed (EG2D_AIRFOIL_TE_SHARPEN).
+ *   O-grid: JMIN the section (and base), JMAX the circle of radius R + 1/2
+ *   about the mid-chord (R = EG2D_PARAM_AIRFOIL_FARFIELD), uniform in angle from
+ *   the trailing edge's direction.
+ *   C-grid: JMIN the lower cut (EG2D_PARAM_AIRFOIL_WAKE_NODES nodes from the
+ *   outflow), the section (a blunt base's lower half first, from its
+ *   midpoint), the upper cut; the cut runs along the chord line from the
+ *   trailing edge (a base's midpoint), its cells growing geometrically from
+ *   the trailing-edge spacing to the outflow, R = EG2D_PARAM_AIRFOIL_FARFIELD
+ *   chords downstream. JMAX: the lines R + 1 chords above and below the cut
+ *   (at the cut nodes' stations) and the half circle of that radius about
+ *   the trailing edge between, its nodes by Vinokur's distribution from the
+ *   trailing-edge spacing at both ends; IMIN and IMAX: the outflow lines,
+ *   uniform.
+ * The default patches (eg2d_set_patch) then name the wall (the section and
+ * base), the far field and the outflow. EG2D_ERR_ARGUMENT when ni leaves
+ * fewer than 9 nodes on the section or the spacings do not fit it; the
+ * handle is then unchanged. For a wall-resolved grid set the first cell with
+ * eg2d_set_wall_spacing(grid, EG2D_SIDE_JMIN, h) (eg2d_first_cell_height)
+ * and solve: the default wall layer is the hybrid one (EG2D_ORTHO_WALL). */
+EG2D_API int eg2d_set_airfoil(eg2d_grid *grid, const eg2d_curve *section, int topology);
 
 /*=====================================================================
  * Boundary patches

@@ -430,6 +430,10 @@ public:
         check(::eg2d_set_side_curve(g_, side, c.get(), dist, p1, p2, flags));
     }
 
+    void set_airfoil(const curve &section, int topology = EG2D_TOPO_C) {
+        check(::eg2d_set_airfoil(g_, section.get(), topology));
+    }
+
     void write(const std::string &path, int format) const { check(::eg2d_write(g_, path.c_str(), format)); }
     void set_side_from_file(int side, const std::string &path) {
         check(::eg2d_set_side_from_file(g_, side, path.c_str()));

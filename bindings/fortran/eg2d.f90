@@ -80,6 +80,7 @@ module eg2d
     procedure :: write => grid_write
     procedure :: set_side_from_file => grid_set_side_from_file
     procedure :: set_side_curve => grid_set_side_curve
+    procedure :: set_airfoil => grid_set_airfoil
     procedure :: add_line_source => grid_add_line_source
     procedure :: add_point_source => grid_add_point_source
     procedure :: clear_sources => grid_clear_sources
@@ -663,6 +664,15 @@ contains
     call finish(self, eg2d_set_side_curve(self%handle, int(side, c_int), curve%handle, &
          int(distribution, c_int), p1, p2, f), status)
   end subroutine grid_set_side_curve
+
+  ! Topology (EG2D_TOPO_O or EG2D_TOPO_C) and boundary of an airfoil grid round `section`.
+  subroutine grid_set_airfoil(self, section, topology, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    class(eg2d_curve_t), intent(in) :: section
+    integer, intent(in) :: topology
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_set_airfoil(self%handle, section%handle, int(topology, c_int)), status)
+  end subroutine grid_set_airfoil
 
   ! ---------------------------------------------------------------- control
   ! Thompson's attraction of the lines direction = EG2D_XI / EG2D_ETA to `line`.

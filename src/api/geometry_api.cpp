@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "api/handle.hpp"
+#include "geometry/airfoil_boundary.hpp"
 #include "geometry/curve.hpp"
 #include "geometry/distribution.hpp"
 #include "geometry/side_curve.hpp"
@@ -154,6 +155,30 @@ EG2D_API int eg2d_set_side_curve(eg2d_grid *grid, int side, const eg2d_curve *cu
                 format("flags = %d: only EG2D_CURVE_REVERSE (1), EG2D_CURVE_ORIENT (2), EG2D_CURVE_SLIDING (4)",
                        flags));
         set_side_curve(grid->gen, static_cast<Side>(side), curve->arc, distribution, p1, p2, flags);
+    });
+}
+
+EG2D_API int eg2d_set_airfoil(eg2d_grid *grid, const eg2d_curve *section, int topology) {
+    return guard(grid, "eg2d_set_airfoil", [&] {
+        require_curve(section);
+        require(topology == EG2D_TOPO_O || topology == EG2D_TOPO_C,
+                format("topology = %d: an airfoil grid is EG2D_TOPO_O (1) or EG2D_TOPO_C (2)", topology));
+        const Settings &s = grid->gen.settings;
+        AirfoilSpec spec;
+        spec.topology = static_cast<Topology>(topology);
+        spec.farfield = s.airfoil_farfield;
+        spec.le_spacing = s.airfoil_le_spacing;
+        spec.te_spacing = s.airfoil_te_spacing;
+        spec.wake = static_cast<int>(s.airfoil_wake_nodes);
+        spec.trailing_edge = static_cast<TrailingEdge>(static_cast<int>(s.airfoil_trailing_edge));
+        const Grid &g = grid->gen.grid();
+        std::vector<double> x, y;
+        airfoil_boundary(section->arc, spec, g.ni(), g.nj(), x, y);
+        Grid probe(g.ni(), g.nj());  // the ring's checks (crossings, the cut) before the handle changes
+        probe.set_topology(spec.topology);
+        probe.set_boundary(x.data(), y.data());
+        grid->gen.set_topology(spec.topology);
+        grid->gen.set_boundary(x.data(), y.data());
     });
 }
 

@@ -43,6 +43,17 @@ const ParameterInfo kParameters[] = {
      &Settings::march_area_smoothing},
     {EG2D_PARAM_MARCH_END_IMIN, "march_end_imin", 0.0, 3.0, false, false, true, false, &Settings::march_end_imin},
     {EG2D_PARAM_MARCH_END_IMAX, "march_end_imax", 0.0, 3.0, false, false, true, false, &Settings::march_end_imax},
+    // Airfoil grids (src/geometry/airfoil_boundary.cpp).
+    {EG2D_PARAM_AIRFOIL_FARFIELD, "airfoil_farfield", 2.0, 1e6, false, false, false, false,
+     &Settings::airfoil_farfield},
+    {EG2D_PARAM_AIRFOIL_LE_SPACING, "airfoil_le_spacing", 0.0, 0.1, true, false, false, true,
+     &Settings::airfoil_le_spacing},
+    {EG2D_PARAM_AIRFOIL_TE_SPACING, "airfoil_te_spacing", 0.0, 0.1, true, false, false, true,
+     &Settings::airfoil_te_spacing},
+    {EG2D_PARAM_AIRFOIL_WAKE_NODES, "airfoil_wake_nodes", 2.0, 1e8, false, false, true, true,
+     &Settings::airfoil_wake_nodes},
+    {EG2D_PARAM_AIRFOIL_TRAILING_EDGE, "airfoil_trailing_edge", 0.0, 1.0, false, false, true, false,
+     &Settings::airfoil_trailing_edge},
     // Approximate factorisation (src/solvers/af.cpp).
     {EG2D_PARAM_AF_DTAU_MIN, "af_dtau_min", 0.0, 1e12, true, false, false, false, &Settings::af_dtau_min},
     {EG2D_PARAM_AF_DTAU_MAX, "af_dtau_max", 0.0, 1e12, true, false, false, true, &Settings::af_dtau_max},

@@ -31,6 +31,12 @@ struct Settings {
     double march_area_smoothing = 20; // area-smoothing passes per layer
     double march_end_imin = 0;        // MarchEnd of the i = 0 end (open sides)
     double march_end_imax = 0;        // and of the i = ni-1 end
+    // Airfoil grids (src/geometry/airfoil_boundary.cpp, eg2d_set_airfoil).
+    double airfoil_farfield = 100;    // chords
+    double airfoil_le_spacing = 0;    // chords; 0: automatic
+    double airfoil_te_spacing = 0;    // chords; 0: automatic
+    double airfoil_wake_nodes = 0;    // C-grid cut nodes a side; 0: automatic
+    double airfoil_trailing_edge = 0; // EG2D_AIRFOIL_TE_BLUNT (0) or _SHARPEN (1)
     double svg_quality = -1;          // EG2D_QUALITY_* colouring SVG cells, -1 none
     double span = 1.0;                // thickness of the one cell layer of the 3-D files
 

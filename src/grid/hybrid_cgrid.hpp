@@ -23,9 +23,9 @@ std::vector<double> cut_first_heights(const Grid &g, double h);
 // that column's arc-length fractions over the rest of the line.
 void place_outflow_side(Grid &g, const Grid &m, int i, int rows);
 
-// JMAX keeps its line; its nodes between the corners move to the points of
-// the line nearest to the march m's last row, kept in order. Returns the
-// largest move over the line's length.
+// JMAX keeps its line; its nodes between the ends move to the points of the
+// line nearest to the march m's last row, kept in order (O-grids too: the
+// ends are the cut's node). Returns the largest move over the line's length.
 double respace_far_field(Grid &g, const Grid &m);
 
 }  // namespace eg2d

@@ -937,6 +937,143 @@ class Patches(unittest.TestCase):
             self.assertEqual(os.listdir(os.path.join(d, "out")), ["case.su2"])
 
 
+
+def naca0012_selig(path, n=81):
+    """The standard NACA 0012 (open trailing edge, 0.00252 chords) as a Selig file."""
+    import math
+    xs = [0.5 * (1 - math.cos(math.pi * k / (n - 1))) for k in range(n)]
+    t = lambda x: 0.6 * (0.2969 * math.sqrt(x) - 0.1260 * x - 0.3516 * x**2 + 0.2843 * x**3 - 0.1015 * x**4)
+    with open(path, "w") as f:
+        f.write("NACA 0012 open\n")
+        for x in reversed(xs):
+            f.write(f"{x:.8f} {t(x):.8f}\n")
+        for x in xs[1:]:
+            f.write(f"{x:.8f} {-t(x):.8f}\n")
+
+
+def vts_points(path):
+    root = ET.parse(path).getroot()
+    text = root.find(".//{*}Points/{*}DataArray").text.split()
+    return [(float(text[k]), float(text[k + 1])) for k in range(0, len(text), 3)]
+
+
+class Airfoil(unittest.TestCase):
+    """eg2d airfoil: the issue's command at the sizes it names (the hybrid
+    layer; a C-grid 385x97 takes about 0.5 s), the family property, the
+    solver formats read back by checkMesh, meshio and cgnscheck where
+    installed, open trailing edges, and the command line's errors."""
+
+    def airfoil(self, d, *args):
+        code, out, err = run("airfoil", *args, "-o", d, "--quiet")
+        self.assertEqual(code, 0, out + err)
+        return out
+
+    def report(self, d, name):
+        import json
+        with open(os.path.join(d, name + ".report.json")) as f:
+            return json.load(f)
+
+    def test_c_grid_family(self):
+        import math
+        with tempfile.TemporaryDirectory() as d:
+            self.airfoil(d, "0012", "--topology", "c", "--size", "385x97", "--yplus", "1", "--reynolds", "6e6",
+                         "--levels", "3", "--format", "plot3d3d,cgns,su2,openfoam,vts")
+            for size in ("385x97", "193x49", "97x25"):
+                for ext in (".p3d", ".cgns", ".su2", ".vts", ".report.txt", ".report.json"):
+                    self.assertTrue(os.path.isfile(os.path.join(d, f"naca0012-{size}{ext}")), size + ext)
+                self.assertTrue(os.path.isdir(os.path.join(d, f"naca0012-{size}-openfoam", "constant", "polyMesh")))
+            # y+ 1 at Re 6e6 by the flat-plate estimate eg2d.h states
+            cf = (2 * math.log10(6e6) - 0.65) ** -2.3
+            h = 1 / (6e6 * math.sqrt(cf / 2))
+            r = self.report(d, "naca0012-385x97")
+            self.assertEqual(r["folded_cells"], 0)
+            self.assertLess(abs(r["wall"]["first_cell_height"]["min"] / h - 1), 0.05)
+            self.assertLess(abs(r["wall"]["first_cell_height"]["max"] / h - 1), 0.05)
+            self.assertLessEqual(r["wall"]["angle_deviation_deg"]["max"], 1.0)
+            # the family: each coarser grid is every other node of the next
+            fine = vts_points(os.path.join(d, "naca0012-385x97.vts"))
+            mid = vts_points(os.path.join(d, "naca0012-193x49.vts"))
+            self.assertEqual(mid, [fine[i + 385 * j] for j in range(0, 97, 2) for i in range(0, 385, 2)])
+            # the far field at least 100 chords from the section
+            body = [fine[i] for i in range(80, 305)]
+            outer = [fine[i + 385 * 96] for i in range(385)]
+            self.assertGreaterEqual(min(math.dist(p, q) for p in outer for q in body[::8]), 100 - 1e-6)
+            for size, (ni, nj, w) in {"385x97": (385, 97, 80), "193x49": (193, 49, 40), "97x25": (97, 25, 20)}.items():
+                name = os.path.join(d, f"naca0012-{size}")
+                try:
+                    import meshio
+                except ImportError:
+                    meshio = None
+                if meshio:  # every level's SU2 file with its markers, every boundary edge in one
+                    mesh = meshio.read(name + ".su2")
+                    self.assertEqual(mesh.points.shape[0], ni * nj - (w + 1))  # the cut's nodes merged, trailing edge included
+                    with open(name + ".su2") as f:
+                        tags = sorted(re.findall(r"^MARKER_TAG=\s*(\S+)", f.read(), re.M))
+                    self.assertEqual(tags, ["farfield", "outflow", "wall"])
+                    lines = sum(len(c.data) for c in mesh.cells if c.type == "line")
+                    self.assertEqual(lines, (ni - 1 - 2 * w) + (ni - 1) + 2 * (nj - 1))
+                cgnscheck = shutil_which("cgnscheck")
+                if cgnscheck:  # no errors; the boundary conditions and the wake's 1-to-1 connection
+                    p = subprocess.run([cgnscheck, "-v", name + ".cgns"], capture_output=True, text=True)
+                    out = p.stdout + p.stderr
+                    self.assertEqual([l for l in out.splitlines() if "ERROR" in l.upper()], [])
+                    self.assertIn("checking complete", out)
+                    for bc in ("wall", "farfield", "outflow"):
+                        self.assertIn(f'checking BC "{bc}"', out)
+                    self.assertIn('checking 1to1 connectivity "wake_lower"', out)
+                    self.assertIn('checking 1to1 connectivity "wake_upper"', out)
+            checkmesh = shutil_which("checkMesh")
+            if checkmesh:
+                env = dict(os.environ)
+                env.setdefault("WM_PROJECT_DIR", "/usr/share/openfoam")
+                p = subprocess.run([checkmesh, "-case", os.path.join(d, "naca0012-385x97-openfoam")],
+                                   capture_output=True, text=True, env=env)
+                out = p.stdout
+                self.assertIn("Failed 1 mesh checks.", out)  # the aspect ratio a y+ 1 layer must have
+                self.assertIn("High aspect ratio cells found", out)
+                nonorth = float(re.search(r"Mesh non-orthogonality Max: ([0-9.eE+-]+)", out).group(1))
+                skew = float(re.search(r"Max skewness = ([0-9.eE+-]+)", out).group(1))
+                self.assertLessEqual(nonorth, 70.0)
+                self.assertLessEqual(skew, 4.0)
+                self.assertNotIn("negative", out.lower().replace("negative volumes: 0", ""))
+
+    def test_o_grid_and_open_trailing_edges(self):
+        with tempfile.TemporaryDirectory() as d:
+            self.airfoil(d, "0012", "--topology", "o", "--size", "257x129", "--yplus", "1", "--reynolds", "6e6",
+                         "--levels", "2", "--format", "su2,vts")
+            r = self.report(d, "naca0012-257x129")
+            self.assertEqual(r["folded_cells"], 0)
+            self.assertTrue(os.path.isfile(os.path.join(d, "naca0012-129x65.su2")))
+            selig = os.path.join(d, "open.dat")
+            naca0012_selig(selig)
+            out = self.airfoil(d, selig, "--topology", "o", "--size", "257x129", "--first-cell", "1e-5",
+                               "--format", "vts")
+            r = self.report(d, "open-257x129")
+            self.assertEqual(r["folded_cells"], 0)  # the blunt base kept: two convex corners
+            self.airfoil(d, selig, "--topology", "c", "--size", "385x97", "--first-cell", "1e-5", "--format", "vts")
+            self.assertEqual(self.report(d, "open-385x97")["folded_cells"], 0)  # sharpened by default
+
+    def test_command_line(self):
+        with tempfile.TemporaryDirectory() as d:
+            code, _, err = run("airfoil", "0012", "--size", "250x100", "--first-cell", "1e-5", "--levels", "2", "-o", d)
+            self.assertEqual(code, 2)
+            self.assertIn("--levels 2 needs NI-1 and NJ-1 divisible by 2", err)
+            self.assertIn("250x100 allows at most 1", err)
+            code, _, err = run("airfoil", "0012", "--size", "97x25", "--yplus", "1", "-o", d)
+            self.assertEqual(code, 2)
+            self.assertIn("--yplus needs --reynolds, and --reynolds --yplus", err)
+            code, _, err = run("airfoil", "0012", "--size", "97x25", "--first-cell", "1e-5", "--format", "png", "-o", d)
+            self.assertEqual(code, 9)
+            self.assertIn("png is not written by this build", err)
+            code, out, _ = run("airfoil", "--help")
+            self.assertEqual(code, 0)
+            self.assertIn("--levels", out)
+
+
+def shutil_which(name):
+    import shutil
+    return shutil.which(name)
+
 def main():
     global TOOL, EXAMPLES
     TOOL, EXAMPLES = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])

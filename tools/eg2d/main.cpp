@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "airfoil_command.hpp"
 #include "case_file.hpp"
 #include "demos.hpp"
 #include "failure.hpp"
@@ -23,6 +24,7 @@ namespace {
 
 const char *help_text =
     "usage: eg2d run CASE.toml [-o DIR] [--size NIxNJ] [--quiet]\n"
+    "       eg2d airfoil SOURCE --size NIxNJ (--yplus Y --reynolds RE | --first-cell H) [...]\n"
     "       eg2d demo [NAME] [-o DIR] [--size NIxNJ] [--quiet]\n"
     "       eg2d demo --list\n"
     "       eg2d --help | --version      (--version lists what this build offers)\n"
@@ -34,6 +36,8 @@ const char *help_text =
     "           iteration,residual per iteration), \"history-svg\" (NAME.history.svg: the\n"
     "           residual's log against the iteration), \"controls\" (NAME.controls.csv:\n"
     "           i,j,x,y,P,Q per node, the control terms as Thompson's P, Q)\n"
+    "  airfoil  an O- or C-grid round a NACA section or a coordinate file, wall-resolved,\n"
+    "           as nested levels in solver formats (eg2d airfoil --help)\n"
     "  demo     runs a built-in case of the gallery (the case files of examples/;\n"
     "           default: swan, the elliptic-grid course notes' swan domain) with no file at all\n"
     "\n"
@@ -175,7 +179,27 @@ int run(const Args &a) {
 
 }  // namespace
 
+// The command's body with every failure turned into its message and exit code.
+template <class Body>
+int guarded(Body body) {
+    try {
+        return body();
+    } catch (const Failure &f) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "eg2d: %s\n", f.what());
+        return f.exit_code();
+    } catch (const std::bad_alloc &) {  // the library reports its own; this is the command's (the case file)
+        std::fflush(stdout);
+        std::fprintf(stderr, "eg2d: out of memory\n");
+        return EXIT_MEMORY;
+    } catch (const std::exception &e) {
+        std::fprintf(stderr, "eg2d: internal error: %s\n", e.what());
+        return EXIT_INTERNAL;
+    }
+}
+
 int main(int argc, char **argv) {
+    if (argc > 1 && !std::strcmp(argv[1], "airfoil")) return guarded([&] { return run_airfoil(argc - 1, argv + 1); });
     for (int k = 1; k < argc; ++k) {
         if (!std::strcmp(argv[k], "--help") || !std::strcmp(argv[k], "-h")) {
             std::fputs(help_text, stdout);
@@ -189,18 +213,5 @@ int main(int argc, char **argv) {
             return EXIT_OK;
         }
     }
-    try {
-        return run(parse_args(argc, argv));
-    } catch (const Failure &f) {
-        std::fflush(stdout);
-        std::fprintf(stderr, "eg2d: %s\n", f.what());
-        return f.exit_code();
-    } catch (const std::bad_alloc &) {  // the library reports its own; this is the command's (the case file)
-        std::fflush(stdout);
-        std::fprintf(stderr, "eg2d: out of memory\n");
-        return EXIT_MEMORY;
-    } catch (const std::exception &e) {
-        std::fprintf(stderr, "eg2d: internal error: %s\n", e.what());
-        return EXIT_INTERNAL;
-    }
+    return guarded([&] { return run(parse_args(argc, argv)); });
 }

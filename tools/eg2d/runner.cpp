@@ -39,6 +39,17 @@ int exit_code_for_status(int status) {
     }
 }
 
+void make_directory(const std::string &dir) {
+    std::string partial;
+    for (std::size_t k = 0; k <= dir.size(); ++k) {
+        if (k == dir.size() || dir[k] == '/') {
+            if (!partial.empty() && mkdir(partial.c_str(), 0777) != 0 && errno != EEXIST)
+                throw Failure(EXIT_IO, partial + ": cannot create the output directory: " + std::strerror(errno));
+        }
+        if (k < dir.size()) partial += dir[k];
+    }
+}
+
 namespace {
 
 struct GridDeleter {
@@ -59,17 +70,6 @@ const char *name_of(const std::vector<Feature> &table, int id) {
     for (const auto &f : table)
         if (f.id == id) return f.name;
     return "?";
-}
-
-void make_directory(const std::string &dir) {
-    std::string partial;
-    for (std::size_t k = 0; k <= dir.size(); ++k) {
-        if (k == dir.size() || dir[k] == '/') {
-            if (!partial.empty() && mkdir(partial.c_str(), 0777) != 0 && errno != EEXIST)
-                throw Failure(EXIT_IO, partial + ": cannot create the output directory: " + std::strerror(errno));
-        }
-        if (k < dir.size()) partial += dir[k];
-    }
 }
 
 // Where an output path already is something other than a plain file, the

@@ -90,6 +90,8 @@ PROTOTYPES = {
     "eg2d_tensor_parameter_grid": (c_int, [c_int, c_int, double_p, double_p, double_p, double_p]),
     "eg2d_set_weight": (c_int, [grid_p, double_p]),
     "eg2d_get_controls": (c_int, [grid_p, double_p, double_p]),
+    # Hyperbolic marching
+    "eg2d_set_airfoil": (c_int, [grid_p, curve_p, c_int]),
     # Boundary patches
     "eg2d_set_patch": (c_int, [grid_p, c_int, c_int, c_int, c_int, c_char_p]),
     "eg2d_clear_patches": (c_int, [grid_p]),

@@ -301,6 +301,12 @@ class Grid(Handle):
         self._check(lib.eg2d_set_side_curve(self._handle(), int(side), curve._handle(), int(distribution),
                                             float(p1), float(p2), int(flags)))
 
+    def set_airfoil(self, section, topology=C.TOPO_C):
+        """Topology (TOPO_O or TOPO_C) and the whole boundary of an airfoil grid
+        round the eg2d.Curve `section` (PARAM_AIRFOIL_* set the far field,
+        spacings, cut nodes and trailing edge)."""
+        self._check(lib.eg2d_set_airfoil(self._handle(), section._handle(), int(topology)))
+
     # ---- files
     def write(self, path, format):
         """Writes the grid to path as FORMAT_* (| PLOT3D_* flags)."""

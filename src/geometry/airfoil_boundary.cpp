@@ -1,0 +1,217 @@
+#include "geometry/airfoil_boundary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "base/error.hpp"
+#include "geometry/distribution.hpp"
+
+namespace eg2d {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// A trailing-edge gap below this many chords is a sharp trailing edge.
+constexpr double kClosedGap = 1e-7;
+// Automatic spacings as fractions of the section's mean spacing: the
+// trailing edge a quarter of it, the leading edge a tenth (NACA 0012 with
+// 225 section nodes: 0.0023 and 0.0009 chords; Construct2D's defaults for
+// 250: 0.003 and 0.00075).
+constexpr double kTeShare = 0.25, kLeShare = 0.1;
+
+struct P {
+    double x = 0, y = 0;
+};
+
+P point(const ArcLength &c, double s) {
+    P p;
+    c.point(s, p.x, p.y);
+    return p;
+}
+
+double dist(P a, P b) { return std::hypot(b.x - a.x, b.y - a.y); }
+
+// The leading edge: the point farthest from the trailing edge's midpoint,
+// sampled then refined by golden-section search.
+double leading_edge(const ArcLength &c, P te) {
+    const int samples = 400;
+    int best = 1;
+    for (int k = 1; k < samples; ++k)
+        if (dist(point(c, double(k) / samples), te) > dist(point(c, double(best) / samples), te)) best = k;
+    double a = double(best - 1) / samples, b = double(best + 1) / samples;
+    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+    for (int it = 0; it < 100; ++it) {
+        const double m1 = b - g * (b - a), m2 = a + g * (b - a);
+        if (dist(point(c, m1), te) > dist(point(c, m2), te)) b = m2;
+        else a = m1;
+    }
+    return 0.5 * (a + b);
+}
+
+// The ratio r of n geometric cells from `first` that add up to `length`.
+double geometric_ratio(double first, double length, int n) {
+    if (first * n >= length) return 1.0;
+    double lo = 1.0, hi = 2.0;
+    auto span = [&](double r) { return first * (std::pow(r, n) - 1.0) / (r - 1.0); };
+    while (span(hi) < length) hi *= 2.0;
+    for (int it = 0; it < 200; ++it) {
+        const double r = 0.5 * (lo + hi);
+        (span(r) < length ? lo : hi) = r;
+    }
+    return 0.5 * (lo + hi);
+}
+
+// n points of the section between normalized arc lengths s0 and s1 by
+// Vinokur's distribution with end spacings d0, d1 (chords, scaled to the
+// piece's length).
+std::vector<P> surface(const ArcLength &c, double s0, double s1, int n, double d0, double d1) {
+    const double length = (s1 - s0) * c.length();
+    std::vector<double> s(static_cast<std::size_t>(n));
+    if (d0 + d1 >= length)
+        fail(Failure::Argument,
+             format("eg2d_set_airfoil: end spacings %g and %g do not fit a surface %g long: lower "
+                    "EG2D_PARAM_AIRFOIL_LE_SPACING or EG2D_PARAM_AIRFOIL_TE_SPACING", d0, d1, length));
+    distribute(4 /* EG2D_DIST_VINOKUR */, n, d0, d1, length, s.data());
+    std::vector<P> out;
+    for (double v : s) out.push_back(point(c, s0 + (s1 - s0) * v));
+    return out;
+}
+
+// The n points after a on the straight line to b, uniform (b the last).
+void segment(std::vector<P> &out, P a, P b, int n) {
+    for (int k = 1; k <= n; ++k) out.push_back({a.x + (b.x - a.x) * k / n, a.y + (b.y - a.y) * k / n});
+}
+
+}  // namespace
+
+int automatic_wake(int ni) {
+    int step = 1;
+    while (step < 64 && (ni - 1) % (2 * step) == 0) step *= 2;
+    return std::max(2, step * static_cast<int>(std::lround(0.21 * (ni - 1) / step)));
+}
+
+void airfoil_boundary(const ArcLength &c, const AirfoilSpec &spec, int ni, int nj, std::vector<double> &x,
+                      std::vector<double> &y) {
+    const bool cgrid = spec.topology == Topology::C;
+    if (!cgrid && spec.topology != Topology::O)
+        fail(Failure::Argument, "eg2d_set_airfoil: topology must be EG2D_TOPO_O or EG2D_TOPO_C");
+    P lower = point(c, 0.0), upper = point(c, 1.0);
+    const P te{0.5 * (lower.x + upper.x), 0.5 * (lower.y + upper.y)};
+    const double s_le = leading_edge(c, te);
+    const P le = point(c, s_le);
+    const double chord = dist(le, te);
+    if (!(chord > 0.0)) fail(Failure::Argument, "eg2d_set_airfoil: the section has no chord (its leading edge is its trailing edge)");
+    const P e{(te.x - le.x) / chord, (te.y - le.y) / chord}, n{-e.y, e.x};
+    auto frame = [&](double u, double v) { return P{le.x + chord * (u * e.x + v * n.x), le.y + chord * (u * e.y + v * n.y)}; };
+    const double gap = dist(lower, upper) / chord;
+    const bool blunt = gap > kClosedGap && spec.trailing_edge == TrailingEdge::Blunt;
+
+    // Cut nodes a side; base cells (the whole base on an O-grid, each half on a C-grid).
+    const int wake = cgrid ? (spec.wake > 0 ? spec.wake : automatic_wake(ni)) : 0;
+    const double perimeter = c.length() / chord;
+    const double mean = perimeter / std::max(1, ni - 2 * wake);
+    const double te_ds = spec.te_spacing > 0 ? spec.te_spacing : kTeShare * mean;
+    const double le_ds = spec.le_spacing > 0 ? spec.le_spacing : kLeShare * mean;
+    int base = 0;
+    if (blunt) base = std::max(cgrid ? 1 : 2, static_cast<int>(std::lround((cgrid ? 0.5 : 1.0) * gap / te_ds)));
+    // Section nodes, corner to corner.
+    const int nb = cgrid ? ni - 2 * wake - (blunt ? 2 * base : 0) : ni - base;
+    if (nb < 9 || (cgrid && (wake < 2 || nj < 3)))
+        fail(Failure::Argument,
+             format("eg2d_set_airfoil: %dx%d leaves %d nodes on the section%s: at least 9 are needed (raise ni%s)",
+                    ni, nj, nb, cgrid ? format(" with %d cut nodes a side", wake).c_str() : "",
+                    cgrid ? " or lower EG2D_PARAM_AIRFOIL_WAKE_NODES" : ""));
+    const int nl = (nb + 1) / 2, nu = nb + 1 - nl;  // the leading edge in both
+    std::vector<P> lo = surface(c, 0.0, s_le, nl, te_ds * chord, le_ds * chord);
+    std::vector<P> up = surface(c, s_le, 1.0, nu, le_ds * chord, te_ds * chord);
+    if (!blunt) {  // a sharp trailing edge, or one sharpened: the surfaces end at its midpoint
+        for (std::vector<P> *side : {&lo, &up}) {
+            const P corner = side == &lo ? lower : upper;
+            for (P &p : *side) {
+                const double u = ((p.x - le.x) * e.x + (p.y - le.y) * e.y) / chord;
+                const double t = std::clamp(u, 0.0, 1.0);
+                p = {p.x + t * (te.x - corner.x), p.y + t * (te.y - corner.y)};
+            }
+        }
+        lo.front() = up.back() = te;
+        lower = upper = te;
+    }
+    std::vector<P> body(lo);
+    body.insert(body.end(), up.begin() + 1, up.end());
+
+    std::vector<P> jmin, jmax;
+    const P start = frame(1.0, 0.0);  // where the cut starts: the trailing edge (a base's midpoint)
+    if (cgrid) {
+        // The cut along the chord line, its first cell the trailing edge's spacing.
+        const double r = geometric_ratio(te_ds, spec.farfield, wake);
+        std::vector<double> u(static_cast<std::size_t>(wake));  // cut node k (0 = outflow) at 1 + u[k]
+        double cell = te_ds, at = 0.0;
+        for (int k = wake - 1; k >= 0; --k, cell *= r) u[static_cast<std::size_t>(k)] = (at += cell);
+        u[0] = spec.farfield;
+        for (int k = 0; k < wake; ++k) jmin.push_back(frame(1.0 + u[static_cast<std::size_t>(k)], 0.0));
+        if (blunt) {  // the base's lower half, from its midpoint, is wall
+            jmin.push_back(start);
+            segment(jmin, start, lower, base);
+            jmin.insert(jmin.end(), body.begin() + 1, body.end());
+            segment(jmin, upper, start, base);
+        } else {
+            jmin.insert(jmin.end(), body.begin(), body.end());
+        }
+        for (int k = wake - 1; k >= 0; --k) jmin.push_back(frame(1.0 + u[static_cast<std::size_t>(k)], 0.0));
+        // The far field: lines v = -R, R above the cut, a half circle about
+        // the trailing edge between, its nodes by Vinokur's distribution
+        // from the trailing edge's spacing at both ends.
+        // Its radius R + 1 about the trailing edge keeps the leading edge R
+        // away; the outflow is R downstream of the trailing edge.
+        // The polygon through its nodes cuts inside the circle by at most
+        // the sagitta of its widest angle: the radius grows by that.
+        const int na = ni - 2 * wake;
+        std::vector<double> s(static_cast<std::size_t>(na));
+        distribute(4, na, te_ds, te_ds, kPi * (spec.farfield + 1.0), s.data());
+        double widest = 0.0;
+        for (int k = 1; k < na; ++k) widest = std::max(widest, kPi * (s[static_cast<std::size_t>(k)] - s[static_cast<std::size_t>(k - 1)]));
+        const double far = (spec.farfield + 1.0) / std::cos(0.5 * widest);
+        for (int k = 0; k < wake; ++k) jmax.push_back(frame(1.0 + u[static_cast<std::size_t>(k)], -far));
+        for (int k = 0; k < na; ++k) {
+            const double a = -0.5 * kPi - kPi * s[static_cast<std::size_t>(k)];
+            jmax.push_back(frame(1.0 + far * std::cos(a), far * std::sin(a)));
+        }
+        for (int k = wake - 1; k >= 0; --k) jmax.push_back(frame(1.0 + u[static_cast<std::size_t>(k)], far));
+        jmax[static_cast<std::size_t>(wake)] = frame(1.0, -far);
+        jmax[static_cast<std::size_t>(ni - 1 - wake)] = frame(1.0, far);
+    } else {
+        jmin = body;
+        if (blunt) segment(jmin, upper, lower, base);  // closes the loop at the lower corner
+        // The far field: a circle about the mid-chord, from the trailing
+        // edge's direction, turning the way the section does.
+        double area = 0.0;
+        for (std::size_t k = 0; k + 1 < jmin.size(); ++k) area += jmin[k].x * jmin[k + 1].y - jmin[k + 1].x * jmin[k].y;
+        const double turn = area < 0.0 ? -1.0 : 1.0;
+        const double far = (spec.farfield + 0.5) / std::cos(kPi / (ni - 1));  // R from the section, between nodes too
+        for (int k = 0; k < ni; ++k) {
+            const double a = turn * 2.0 * kPi * k / (ni - 1);
+            jmax.push_back(frame(0.5 + far * std::cos(a), far * std::sin(a)));
+        }
+        jmax.back() = jmax.front();
+    }
+    // The ring: JMIN, JMAX; a C-grid's outflow sides IMIN (lower) and IMAX.
+    x.assign(static_cast<std::size_t>(ni) * static_cast<std::size_t>(nj), 0.0);
+    y.assign(x.size(), 0.0);
+    auto put = [&](int i, int j, P p) {
+        x[static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * j] = p.x;
+        y[static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * j] = p.y;
+    };
+    for (int i = 0; i < ni; ++i) {
+        put(i, 0, jmin[static_cast<std::size_t>(i)]);
+        put(i, nj - 1, jmax[static_cast<std::size_t>(i)]);
+    }
+    if (cgrid)
+        for (int j = 1; j < nj - 1; ++j) {
+            const double v = (spec.farfield + 1.0) * j / (nj - 1);
+            put(0, j, frame(1.0 + spec.farfield, -v));
+            put(ni - 1, j, frame(1.0 + spec.farfield, v));
+        }
+}
+
+}  // namespace eg2d

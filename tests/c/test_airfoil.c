@@ -1,0 +1,190 @@
+/* eg2d_set_airfoil: the boundary of an airfoil grid (eg2d.h). C- and O-grids
+ * round NACA 0012 with a sharp trailing edge, the standard open one kept as a
+ * blunt base or sharpened; the spacings, the cut, the far field as set; bad
+ * settings refused with the handle unchanged; and the grids the default wall
+ * layer then makes. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "eg2d.h"
+
+static double *alloc(int n) {
+    double *p = malloc(sizeof(double) * (size_t)n);
+    assert_non_null(p);
+    return p;
+}
+
+static double dist(const double *x, const double *y, int a, int b) { return hypot(x[b] - x[a], y[b] - y[a]); }
+
+/* A C-grid's trailing-edge index: the last i whose node is node ni-1-i. */
+static int te_index(const double *x, const double *y, int ni) {
+    int w = 0;
+    while (w + 1 < ni / 2 && x[w + 1] == x[ni - 2 - w] && y[w + 1] == y[ni - 2 - w]) ++w;
+    return w;
+}
+
+static eg2d_curve *naca0012(int flags) {
+    eg2d_curve *c = NULL;
+    assert_int_equal(eg2d_curve_naca4("0012", flags, &c), EG2D_OK);
+    return c;
+}
+
+/* The C-grid's boundary: the cut along y = 0 from x = 1 + R to the trailing
+ * edge at the wake index asked, its first cell the trailing-edge spacing;
+ * the section's spacings at its edges as set; the far field R out. */
+static void test_c_grid_boundary(void **state) {
+    const int ni = 193, nj = 49, wake = 40;
+    double *x = alloc(ni * nj), *y = alloc(ni * nj), least = INFINITY;
+    eg2d_grid *g;
+    eg2d_curve *c = naca0012(EG2D_NACA_CLOSED_TE);
+    int i, j, le = -1;
+    (void)state;
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_FARFIELD, 50), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_WAKE_NODES, wake), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_LE_SPACING, 1e-3), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_TE_SPACING, 4e-3), EG2D_OK);
+    assert_int_equal(eg2d_set_airfoil(g, c, EG2D_TOPO_C), EG2D_OK);
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    assert_true(fabs(x[0] - 51) < 1e-12 && fabs(x[ni - 1] - 51) < 1e-12);
+    assert_int_equal(te_index(x, y, ni), wake);
+    assert_true(fabs(x[wake] - 1) < 1e-12 && fabs(y[wake]) < 1e-9);
+    for (i = 0; i < wake; ++i) { /* along the chord line (found to about 1e-8 radians) */
+        assert_true(fabs(y[i]) < 1e-6);
+        if (i > 0) assert_true(x[i] < x[i - 1]);
+    }
+    assert_true(fabs(dist(x, y, wake - 1, wake) / 4e-3 - 1) < 1e-9);  /* the cut's first cell */
+    assert_true(fabs(dist(x, y, wake, wake + 1) / 4e-3 - 1) < 1e-6);  /* the section's at the trailing edge */
+    for (i = wake; i <= ni - 1 - wake; ++i)
+        if (le < 0 || x[i] < x[le]) le = i;
+    assert_int_equal(le, ni / 2);
+    assert_true(fabs(dist(x, y, le, le + 1) / 1e-3 - 1) < 1e-3 && fabs(dist(x, y, le - 1, le) / 1e-3 - 1) < 1e-3);
+    for (j = 0; j < ni; ++j) /* the far field: no node of JMAX nearer the body than 50 chords */
+        for (i = wake; i <= ni - 1 - wake; ++i) least = fmin(least, dist(x, y, i, j + ni * (nj - 1)));
+    assert_true(least >= 50 - 1e-9);
+    eg2d_destroy(g);
+    eg2d_curve_destroy(c);
+    free(x);
+    free(y);
+}
+
+/* NACA 0012's standard trailing edge is open (0.00252 chords): kept as a
+ * straight base of wall nodes on an O-grid, or sharpened; a C-grid's cut
+ * starts at the base's midpoint. */
+static void test_open_trailing_edge(void **state) {
+    const int ni = 129, nj = 33;
+    double *x = alloc(ni * nj), *y = alloc(ni * nj), value;
+    eg2d_grid *g;
+    eg2d_curve *c = naca0012(0);
+    int i, on_base = 0;
+    (void)state;
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    assert_int_equal(eg2d_get_parameter(g, EG2D_PARAM_AIRFOIL_TRAILING_EDGE, &value), EG2D_OK);
+    assert_true(value == EG2D_AIRFOIL_TE_BLUNT);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_TE_SPACING, 5e-4), EG2D_OK);
+    assert_int_equal(eg2d_set_airfoil(g, c, EG2D_TOPO_O), EG2D_OK);
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    for (i = 0; i < ni - 1; ++i)
+        if (fabs(x[i] - x[0]) < 1e-12) ++on_base; /* the base: straight, at the corners' x */
+    assert_true(on_base >= 4);
+    assert_true(fabs(y[0] - y[ni - 1]) < 1e-15 && y[0] < -1e-3); /* the loop starts at the lower corner */
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_TRAILING_EDGE, EG2D_AIRFOIL_TE_SHARPEN), EG2D_OK);
+    assert_int_equal(eg2d_set_airfoil(g, c, EG2D_TOPO_C), EG2D_OK);
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    i = te_index(x, y, ni); /* sharpened: the section ends at the base's midpoint */
+    assert_true(fabs(x[i] - 1) < 1e-12 && fabs(y[i]) < 1e-9);
+    assert_true(fabs(x[i + 1] - x[i]) > 1e-5); /* no base: the next node is on the lower surface */
+    eg2d_destroy(g);
+    eg2d_curve_destroy(c);
+    free(x);
+    free(y);
+}
+
+/* What cannot be made is refused, and the handle keeps what it had. */
+static void test_refused(void **state) {
+    eg2d_grid *g;
+    eg2d_curve *c = naca0012(EG2D_NACA_CLOSED_TE);
+    int topology = -1;
+    (void)state;
+    assert_int_equal(eg2d_create(25, 9, &g), EG2D_OK);
+    assert_int_equal(eg2d_set_topology(g, EG2D_TOPO_O), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_WAKE_NODES, 10), EG2D_OK);
+    assert_int_equal(eg2d_set_airfoil(g, c, EG2D_TOPO_C), EG2D_ERR_ARGUMENT);
+    assert_non_null(strstr(eg2d_last_error(g), "leaves 5 nodes on the section with 10 cut nodes a side"));
+    assert_int_equal(eg2d_get_topology(g, &topology), EG2D_OK);
+    assert_int_equal(topology, EG2D_TOPO_O);
+    assert_int_equal(eg2d_set_airfoil(g, c, EG2D_TOPO_SINGLE), EG2D_ERR_ARGUMENT);
+    assert_int_equal(eg2d_set_airfoil(g, NULL, EG2D_TOPO_O), EG2D_ERR_ARGUMENT);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_FARFIELD, 1), EG2D_ERR_ARGUMENT);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_TRAILING_EDGE, 2), EG2D_ERR_ARGUMENT);
+    eg2d_destroy(g);
+    eg2d_curve_destroy(c);
+}
+
+/* The boundary and a first cell are all a wall-resolved grid needs: the
+ * default wall layer makes the hybrid one on both topologies, the blunt
+ * base's O-grid included, without folds and with the height on the body. */
+static void solve(eg2d_curve *c, int topology, int ni, int nj, int trailing_edge) {
+    double h, folded, *x = alloc(ni * nj), *y = alloc(ni * nj), least = INFINITY, most = 0;
+    eg2d_grid *g;
+    char note[512];
+    int i, wake = 0, it;
+    assert_int_equal(eg2d_first_cell_height(1.0, 6e6, 1.0, &h), EG2D_OK);
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_TRAILING_EDGE, trailing_edge), EG2D_OK);
+    assert_int_equal(eg2d_set_airfoil(g, c, topology), EG2D_OK);
+    assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h), EG2D_OK);
+    assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
+    if (eg2d_solve(g) != EG2D_OK) fail_msg("%s", eg2d_last_error(g));
+    assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
+    assert_int_equal(eg2d_get_run_event(g, 0, NULL, note, (int)sizeof note), EG2D_OK);
+    assert_non_null(strstr(note, "wall layer (hybrid)"));
+    assert_int_equal(eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &folded), EG2D_OK);
+    assert_true(folded == 0);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    if (topology == EG2D_TOPO_C) wake = te_index(x, y, ni);
+    for (i = wake; i <= (topology == EG2D_TOPO_C ? ni - 1 - wake : ni - 2); ++i) {
+        least = fmin(least, dist(x, y, i, i + ni));
+        most = fmax(most, dist(x, y, i, i + ni));
+    }
+    print_message("%s %dx%d, %s: %d cycles, first cell %.6g..%.6g (asked %.6g)\n",
+                  topology == EG2D_TOPO_C ? "C" : "O", ni, nj, trailing_edge ? "sharpened" : "as given", it, least,
+                  most, h);
+    assert_true(it <= 10);
+    assert_true(fabs(least / h - 1) < 1e-3 && fabs(most / h - 1) < 1e-3);
+    eg2d_destroy(g);
+    free(x);
+    free(y);
+}
+
+static void test_wall_resolved(void **state) {
+    eg2d_curve *sharp = naca0012(EG2D_NACA_CLOSED_TE), *open = naca0012(0);
+    (void)state;
+    solve(sharp, EG2D_TOPO_C, 385, 97, EG2D_AIRFOIL_TE_BLUNT);
+    solve(sharp, EG2D_TOPO_O, 257, 129, EG2D_AIRFOIL_TE_BLUNT);
+    solve(open, EG2D_TOPO_O, 257, 129, EG2D_AIRFOIL_TE_BLUNT);
+    solve(open, EG2D_TOPO_C, 385, 97, EG2D_AIRFOIL_TE_SHARPEN);
+    eg2d_curve_destroy(sharp);
+    eg2d_curve_destroy(open);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_c_grid_boundary),
+        cmocka_unit_test(test_open_trailing_edge),
+        cmocka_unit_test(test_refused),
+        cmocka_unit_test(test_wall_resolved),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

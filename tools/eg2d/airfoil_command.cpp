@@ -1,0 +1,337 @@
+#include "airfoil_command.hpp"
+
+#include <eg2d.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "failure.hpp"
+#include "progress.hpp"
+#include "runner.hpp"
+
+namespace eg2dtool {
+
+const char *const airfoil_help =
+    "usage: eg2d airfoil SOURCE --size NIxNJ (--yplus Y --reynolds RE | --first-cell H)\n"
+    "                   [--topology c|o] [--farfield R] [--le-spacing S] [--te-spacing S]\n"
+    "                   [--te blunt|sharpen] [--growth G] [--levels N]\n"
+    "                   [--method hybrid|elliptic|hyperbolic] [--format LIST] [-o DIR] [--quiet]\n"
+    "\n"
+    "An O- or C-grid round an airfoil (eg2d_set_airfoil), wall-resolved, written as a\n"
+    "family of nested grids in the formats flow solvers read.\n"
+    "  SOURCE         a NACA 4-digit code (0012: the section closed sharply at chord 1)\n"
+    "                 or a Selig or Lednicer coordinate file\n"
+    "  --size         the finest grid, NI x NJ nodes (on a C-grid NI counts both cut sides)\n"
+    "  --yplus, --reynolds\n"
+    "                 the first cell from y+ at the chord Reynolds number, by the turbulent\n"
+    "                 flat-plate skin friction Cf = (2 log10(Re) - 0.65)^-2.3 (Schlichting 1979)\n"
+    "  --first-cell   or the first cell's height in chords\n"
+    "  --topology     c (default) or o\n"
+    "  --farfield     chords to the far field (default 100)\n"
+    "  --le-spacing, --te-spacing\n"
+    "                 spacing along the section at its leading and trailing edge, chords\n"
+    "                 (default: a tenth and a quarter of its mean spacing)\n"
+    "  --te           an open trailing edge: kept as a blunt base (default on O-grids) or\n"
+    "                 sharpened (default on C-grids: the march folds at a blunt base's\n"
+    "                 corners on a C-grid)\n"
+    "  --growth       the largest growth of the wall layer's cells accepted (default 1.2);\n"
+    "                 a grid whose first 30 cells grow faster is reported and exits 4\n"
+    "  --levels       N nested grids, each coarser one every other node of the next: NI-1\n"
+    "                 and NJ-1 must be divisible by 2^(N-1) (default 1)\n"
+    "  --method       hybrid (default: the hyperbolic march's wall layer held, elliptic\n"
+    "                 above), elliptic (the Sorenson-type wall control) or hyperbolic (the\n"
+    "                 march alone; the far field is its own)\n"
+    "  --format       a comma list of plot3d, plot3d3d (one cell thick, for plot3dToFoam),\n"
+    "                 cgns, su2, openfoam (a case directory), vts, svg (default plot3d); a\n"
+    "                 report (text and JSON) is always written\n"
+    "  -o DIR         the output directory (default .)\n"
+    "Files: DIR/NAME-NIxNJ.EXT per level and format, NAME the NACA code or the file's stem.\n"
+    "\n"
+    "example:\n"
+    "  eg2d airfoil 0012 --topology c --size 385x97 --yplus 1 --reynolds 6e6 --levels 3 \\\n"
+    "       --format plot3d3d,cgns,su2,openfoam,vts -o out\n";
+
+namespace {
+
+struct GridDeleter {
+    void operator()(eg2d_grid *g) const { eg2d_destroy(g); }
+};
+using GridPtr = std::unique_ptr<eg2d_grid, GridDeleter>;
+struct CurveDeleter {
+    void operator()(eg2d_curve *c) const { eg2d_curve_destroy(c); }
+};
+
+struct Format {
+    const char *name;
+    int id;
+    const char *extension;  // "" for a directory
+};
+const Format kFormats[] = {
+    {"plot3d", EG2D_FORMAT_PLOT3D, ".x"},
+    {"plot3d3d", EG2D_FORMAT_PLOT3D | EG2D_PLOT3D_EXTRUDED, ".p3d"},
+    {"cgns", EG2D_FORMAT_CGNS, ".cgns"},
+    {"su2", EG2D_FORMAT_SU2, ".su2"},
+    {"openfoam", EG2D_FORMAT_OPENFOAM, "-openfoam"},
+    {"vts", EG2D_FORMAT_VTS, ".vts"},
+    {"svg", EG2D_FORMAT_SVG, ".svg"},
+};
+
+struct Args {
+    std::string source, out_dir = ".", topology = "c", method = "hybrid", te, formats = "plot3d";
+    int ni = 0, nj = 0, levels = 1;
+    double yplus = 0, reynolds = 0, first = 0, growth = 1.2, farfield = 100, le = 0, tes = 0;
+    bool quiet = false;
+};
+
+[[noreturn]] void usage(const std::string &message) {
+    throw Failure(EXIT_USAGE, "airfoil: " + message + " (eg2d airfoil --help shows the usage)");
+}
+
+double number(const std::string &option, const std::string &value) {
+    char *end = nullptr;
+    const double v = std::strtod(value.c_str(), &end);
+    if (value.empty() || !end || *end || !std::isfinite(v) || v <= 0)
+        usage(option + " expects a positive number, found \"" + value + "\"");
+    return v;
+}
+
+Args parse(int argc, char **argv) {
+    Args a;
+    bool has_first = false;
+    for (int k = 1; k < argc; ++k) {
+        const std::string arg = argv[k];
+        if (arg == "--quiet") {
+            a.quiet = true;
+            continue;
+        }
+        if (arg.size() > 1 && arg[0] == '-') {
+            if (k + 1 >= argc) usage(arg + " needs a value");
+            const std::string v = argv[++k];
+            if (arg == "-o") a.out_dir = v;
+            else if (arg == "--topology") a.topology = v;
+            else if (arg == "--method") a.method = v;
+            else if (arg == "--te") a.te = v;
+            else if (arg == "--format") a.formats = v;
+            else if (arg == "--yplus") a.yplus = number(arg, v);
+            else if (arg == "--reynolds") a.reynolds = number(arg, v);
+            else if (arg == "--first-cell") a.first = number(arg, v), has_first = true;
+            else if (arg == "--growth") a.growth = number(arg, v);
+            else if (arg == "--farfield") a.farfield = number(arg, v);
+            else if (arg == "--le-spacing") a.le = number(arg, v);
+            else if (arg == "--te-spacing") a.tes = number(arg, v);
+            else if (arg == "--levels") {
+                const double n = number(arg, v);
+                if (n != std::floor(n) || n > 12) usage("--levels expects a whole number from 1 to 12, found \"" + v + "\"");
+                a.levels = static_cast<int>(n);
+            } else if (arg == "--size") {
+                char *end = nullptr;
+                const long ni = std::strtol(v.c_str(), &end, 10);
+                long nj = -1;
+                if (end && *end == 'x') nj = std::strtol(end + 1, &end, 10);
+                if (!end || *end || ni < 9 || nj < 5 || ni > 100000 || nj > 100000)
+                    usage("--size expects NIxNJ with 9 <= NI <= 100000 and 5 <= NJ <= 100000, found \"" + v + "\"");
+                a.ni = static_cast<int>(ni);
+                a.nj = static_cast<int>(nj);
+            } else {
+                usage("unknown option " + arg);
+            }
+        } else if (a.source.empty()) {
+            a.source = arg;
+        } else {
+            usage("more than one SOURCE (\"" + a.source + "\", \"" + arg + "\")");
+        }
+    }
+    if (a.source.empty()) usage("no SOURCE (a NACA 4-digit code or a coordinate file)");
+    if (a.ni == 0) usage("no --size");
+    if (has_first == (a.yplus > 0 || a.reynolds > 0)) usage("give --first-cell, or --yplus with --reynolds");
+    if (!has_first && (a.yplus <= 0 || a.reynolds <= 0)) usage("--yplus needs --reynolds, and --reynolds --yplus");
+    if (a.topology != "c" && a.topology != "o") usage("--topology expects c or o, found \"" + a.topology + "\"");
+    if (a.method != "hybrid" && a.method != "elliptic" && a.method != "hyperbolic")
+        usage("--method expects hybrid, elliptic or hyperbolic, found \"" + a.method + "\"");
+    if (a.te.empty()) a.te = a.topology == "c" ? "sharpen" : "blunt";
+    if (a.te != "blunt" && a.te != "sharpen") usage("--te expects blunt or sharpen, found \"" + a.te + "\"");
+    const int step = 1 << (a.levels - 1);
+    if ((a.ni - 1) % step || (a.nj - 1) % step || (a.ni - 1) / step + 1 < 9 || (a.nj - 1) / step + 1 < 5) {
+        int most = 1;
+        while ((a.ni - 1) % (1 << most) == 0 && (a.nj - 1) % (1 << most) == 0 && (a.ni - 1) / (1 << most) + 1 >= 9 &&
+               (a.nj - 1) / (1 << most) + 1 >= 5)
+            ++most;
+        usage("--levels " + std::to_string(a.levels) + " needs NI-1 and NJ-1 divisible by " + std::to_string(step) +
+              " and a coarsest grid of at least 9x5; " + std::to_string(a.ni) + "x" + std::to_string(a.nj) +
+              " allows at most " + std::to_string(most) + " (e.g. 385x97 allows 6, 257x129 allows 6, 1793x513 allows 9)");
+    }
+    return a;
+}
+
+bool is_naca4(const std::string &s) {
+    return s.size() == 4 && std::isdigit(static_cast<unsigned char>(s[0])) && std::isdigit(static_cast<unsigned char>(s[1])) &&
+           std::isdigit(static_cast<unsigned char>(s[2])) && std::isdigit(static_cast<unsigned char>(s[3]));
+}
+
+std::string stem(const std::string &path) {
+    std::string s = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+    const std::size_t dot = s.find_last_of('.');
+    return dot == std::string::npos || dot == 0 ? s : s.substr(0, dot);
+}
+
+void check(eg2d_grid *g, int status, const std::string &what) {
+    if (status != EG2D_OK) throw Failure(exit_code_for_status(status), what + ": " + eg2d_last_error(g));
+}
+
+std::vector<const Format *> formats(const std::string &list) {
+    std::vector<const Format *> out;
+    std::stringstream in(list);
+    std::string name;
+    while (std::getline(in, name, ',')) {
+        const Format *f = nullptr;
+        for (const Format &k : kFormats)
+            if (name == k.name) f = &k;
+        if (name == "png")
+            throw Failure(EXIT_UNSUPPORTED, "airfoil: --format png is not written by this build (svg is)");
+        if (!f) usage("--format: unknown format \"" + name + "\" (plot3d, plot3d3d, cgns, su2, openfoam, vts, svg)");
+        out.push_back(f);
+    }
+    if (out.empty()) usage("--format needs at least one format");
+    return out;
+}
+
+// The largest ratio of consecutive cell heights over the first 30 cells of
+// the body's grid lines (JMIN nodes first..last).
+double wall_growth(eg2d_grid *g, int ni, int nj, int first, int last) {
+    std::vector<double> x(static_cast<std::size_t>(ni) * nj), y(x.size());
+    eg2d_get_coordinates(g, x.data(), y.data());
+    auto h = [&](int i, int j) {
+        const std::size_t a = static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * j, b = a + ni;
+        return std::hypot(x[b] - x[a], y[b] - y[a]);
+    };
+    double worst = 0;
+    for (int i = first; i <= last; ++i)
+        for (int j = 1; j < 30 && j < nj - 1; ++j) worst = std::max(worst, h(i, j) / h(i, j - 1));
+    return worst;
+}
+
+}  // namespace
+
+int run_airfoil(int argc, char **argv) {
+    for (int k = 1; k < argc; ++k)
+        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") {
+            std::fputs(airfoil_help, stdout);
+            return EXIT_OK;
+        }
+    const Args a = parse(argc, argv);
+    const std::vector<const Format *> outputs = formats(a.formats);
+    double h = a.first;
+    if (h == 0 && eg2d_first_cell_height(a.yplus, a.reynolds, 1.0, &h) != EG2D_OK)
+        throw Failure(EXIT_GEOMETRY, std::string("airfoil: ") + eg2d_last_error(nullptr));
+    eg2d_curve *raw = nullptr;
+    const bool naca = is_naca4(a.source);
+    const int st = naca ? eg2d_curve_naca4(a.source.c_str(), EG2D_NACA_CLOSED_TE, &raw)
+                        : eg2d_curve_read_airfoil(a.source.c_str(), &raw);
+    if (st != EG2D_OK) throw Failure(st == EG2D_ERR_IO ? EXIT_IO : EXIT_GEOMETRY, std::string("airfoil: ") + eg2d_last_error(nullptr));
+    std::unique_ptr<eg2d_curve, CurveDeleter> section(raw);
+    const std::string name = naca ? "naca" + a.source : stem(a.source);
+    const bool cgrid = a.topology == "c";
+    const int step = 1 << (a.levels - 1);
+
+    eg2d_grid *raw_grid = nullptr;
+    if (eg2d_create(a.ni, a.nj, &raw_grid) != EG2D_OK)
+        throw Failure(EXIT_MEMORY, std::string("airfoil: ") + eg2d_last_error(nullptr));
+    GridPtr grid(raw_grid);
+    eg2d_grid *g = grid.get();
+    check(g, eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_FARFIELD, a.farfield), "--farfield");
+    if (a.le > 0) check(g, eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_LE_SPACING, a.le), "--le-spacing");
+    if (a.tes > 0) check(g, eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_TE_SPACING, a.tes), "--te-spacing");
+    check(g, eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_TRAILING_EDGE,
+                                a.te == "blunt" ? EG2D_AIRFOIL_TE_BLUNT : EG2D_AIRFOIL_TE_SHARPEN), "--te");
+    int wake = 0;
+    if (cgrid) {  // about 0.21 (ni-1) nodes a side, on every level's node
+        wake = step * std::max(1, static_cast<int>(std::lround(0.21 * (a.ni - 1) / step)));
+        check(g, eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_WAKE_NODES, wake), "the cut's nodes");
+    }
+    check(g, eg2d_set_airfoil(g, section.get(), cgrid ? EG2D_TOPO_C : EG2D_TOPO_O), "airfoil " + a.source);
+    if (!a.quiet)
+        std::printf("%s %s-grid %dx%d, first cell %.4g chords, far field %g chords, %s trailing edge, method %s\n",
+                    name.c_str(), cgrid ? "C" : "O", a.ni, a.nj, h, a.farfield, a.te == "blunt" ? "blunt" : "sharp",
+                    a.method.c_str());
+    Progress progress(isatty(STDOUT_FILENO) != 0, a.quiet);
+    check(g, eg2d_set_monitor(g, Progress::monitor, &progress), "monitor");
+    int status;
+    if (a.method == "hyperbolic") {
+        check(g, eg2d_set_parameter(g, EG2D_PARAM_MARCH_DISTANCE, a.farfield), "--farfield");
+        check(g, eg2d_set_parameter(g, EG2D_PARAM_MARCH_FIRST_HEIGHT, h), "the first cell");
+        check(g, eg2d_set_parameter(g, EG2D_PARAM_MARCH_GROWTH, 3.0), "the march");
+        status = eg2d_initialize(g, EG2D_INIT_HYPERBOLIC);
+    } else {
+        check(g, eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h), "the first cell");
+        check(g, eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), "the wall control");
+        check(g, eg2d_set_parameter(g, EG2D_PARAM_WALL_LAYER, a.method == "hybrid" ? 2 : 0), "--method");
+        check(g, eg2d_set_tolerance(g, 1e-10), "tolerance");
+        status = eg2d_solve(g);
+    }
+    progress.finish();
+    int events = 0;
+    eg2d_get_run_info(g, EG2D_RUN_EVENTS, &events);
+    for (int k = 0; k < events && !a.quiet; ++k) {
+        char text[1024];
+        int at = 0;
+        eg2d_get_run_event(g, k, &at, text, sizeof text);
+        std::printf("note (iteration %d): %s\n", at, text);
+    }
+    check(g, status, a.method == "hyperbolic" ? "the march" : "the solve");
+    const int body0 = cgrid ? wake : 0, body1 = cgrid ? a.ni - 1 - wake : a.ni - 1;
+    const double growth = wall_growth(g, a.ni, a.nj, body0, body1);
+
+    make_directory(a.out_dir);
+    double span = 1.0;
+    eg2d_get_parameter(g, EG2D_PARAM_SPAN, &span);
+    for (int level = 0; level < a.levels; ++level) {
+        const int s = 1 << level, ci = (a.ni - 1) / s + 1, cj = (a.nj - 1) / s + 1;
+        GridPtr coarse;
+        eg2d_grid *lg = g;
+        if (level > 0) {  // every s-th node of the finest
+            std::vector<double> x(static_cast<std::size_t>(a.ni) * a.nj), y(x.size()), cx, cy;
+            eg2d_get_coordinates(g, x.data(), y.data());
+            for (int j = 0; j < a.nj; j += s)
+                for (int i = 0; i < a.ni; i += s) {
+                    cx.push_back(x[static_cast<std::size_t>(i) + static_cast<std::size_t>(a.ni) * j]);
+                    cy.push_back(y[static_cast<std::size_t>(i) + static_cast<std::size_t>(a.ni) * j]);
+                }
+            eg2d_grid *raw_coarse = nullptr;
+            if (eg2d_create(ci, cj, &raw_coarse) != EG2D_OK)
+                throw Failure(EXIT_MEMORY, std::string("airfoil: ") + eg2d_last_error(nullptr));
+            coarse.reset(raw_coarse);
+            lg = coarse.get();
+            check(lg, eg2d_set_topology(lg, cgrid ? EG2D_TOPO_C : EG2D_TOPO_O), "level topology");
+            check(lg, eg2d_set_coordinates(lg, cx.data(), cy.data()), "level " + std::to_string(level));
+            check(lg, eg2d_set_parameter(lg, EG2D_PARAM_SPAN, span), "span");
+        }
+        const std::string base = a.out_dir + "/" + name + "-" + std::to_string(ci) + "x" + std::to_string(cj);
+        for (const Format *f : outputs) check(lg, eg2d_write(lg, (base + f->extension).c_str(), f->id), base + f->extension);
+        check(lg, eg2d_write(lg, (base + ".report.txt").c_str(), EG2D_FORMAT_REPORT), base + ".report.txt");
+        check(lg, eg2d_write(lg, (base + ".report.json").c_str(), EG2D_FORMAT_REPORT_JSON), base + ".report.json");
+        if (!a.quiet) {
+            std::printf("level %d: %dx%d -> %s.*\n", level, ci, cj, base.c_str());
+            if (level == 0) {
+                std::ifstream report(base + ".report.txt");
+                std::printf("%s", std::string(std::istreambuf_iterator<char>(report), {}).c_str());
+            }
+        }
+    }
+    if (growth > a.growth) {
+        std::fprintf(stderr,
+                     "eg2d: airfoil: the wall layer grows by up to %.3f over its first 30 cells, more than --growth %g: "
+                     "raise NJ or lower --farfield (the files are written)\n", growth, a.growth);
+        return EXIT_GEOMETRY;
+    }
+    return EXIT_OK;
+}
+
+}  // namespace eg2dtool
