@@ -53,4 +53,8 @@ void bench_march(void);
  * side by side (--wall, wall.c). */
 void bench_walls(void);
 
+/* The variational system against Winslow on the course notes' domains
+ * (--variational, variational.c). */
+void bench_variational(void);
+
 #endif

@@ -14,6 +14,8 @@
  *              1025 against the nearest 2^k+1 size (sweep.c)
  *   eg2d_bench --march       the hyperbolic march: NACA 0012 O-grid 257x129 to 100 chords
  *   eg2d_bench --wall        wall-resolved NACA 0012 O-grids: wall control, hybrid layer, march
+ *   eg2d_bench --variational EG2D_SYSTEM_VARIATIONAL (V = aA + bS + cO) against Winslow on the
+ *                            course notes' domains at 65, 129, 257 (variational.c)
  *   eg2d_bench --quick       swan, annulus, NACA 0012 O and C at 65, 129, 250, every solver
  *                            (cap 10 CPU s): the same table in about a minute
  *
@@ -277,7 +279,8 @@ static int parse_solver(const char *spec, double *omega) {
 static void usage(void) {
     fprintf(stderr, "usage: eg2d_bench [--cases LIST] [--sizes LIST] [--solvers LIST (name or name:omega)]\n"
                     "                  [--system winslow|laplace] [--tolerance T] [--cap CPU-SECONDS]\n"
-                    "                  [--repeats N] [--json FILE] [--compare | --seed004 | --march | --wall]\n"
+                    "                  [--repeats N] [--json FILE]\n"
+                    "                  [--compare | --seed004 | --march | --wall | --variational]\n"
                     "       eg2d_bench --sweep [--repeats N (3)] [--svg FILE]\n"
                     "       eg2d_bench --quick [--repeats N] [--json FILE]   (a subset in about a minute)\n");
 }
@@ -316,6 +319,10 @@ int main(int argc, char **argv) {
         }
         if (!strcmp(opt, "--wall")) {
             bench_walls();
+            return 0;
+        }
+        if (!strcmp(opt, "--variational")) {
+            bench_variational();
             return 0;
         }
         if (!strcmp(opt, "--quick")) {

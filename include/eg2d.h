@@ -28,7 +28,8 @@
  * to the tolerance are defined in docs/NUMERICS.md:
  *   residual = max over unknown nodes of max(|R_x|, |R_y|) / (2(alpha+gamma)) / L
  * where L is the diagonal of the boundary's bounding box: about the largest
- * node move a Jacobi step would make, as a fraction of the domain size.
+ * node move a Jacobi step would make, as a fraction of the domain size
+ * (EG2D_SYSTEM_VARIATIONAL: the gradient of its functional, scaled alike).
  *
  * Errors
  * ------
@@ -202,8 +203,51 @@ EG2D_API int eg2d_set_coordinates(eg2d_grid *grid, const double *x, const double
 /*=====================================================================
  * System, solver and run settings
  *===================================================================*/
-#define EG2D_SYSTEM_LAPLACE 0  /* Amsden-Hirt, x_xixi + x_etaeta = 0: linear */
-#define EG2D_SYSTEM_WINSLOW 1  /* Winslow / Thompson-Thames-Mastin (default) */
+#define EG2D_SYSTEM_LAPLACE     0  /* Amsden-Hirt, x_xixi + x_etaeta = 0: linear */
+#define EG2D_SYSTEM_WINSLOW     1  /* Winslow / Thompson-Thames-Mastin (default) */
+#define EG2D_SYSTEM_VARIATIONAL 2  /* minimise V = aA + bS + cO (below) */
+/* EG2D_SYSTEM_VARIATIONAL (the grid-generation lecture notes, "Variational
+ * methods"): the interior nodes minimise, with the boundary fixed (sliding
+ * sides follow as with the other systems),
+ *     V = a A/Abar + b S + c O/Abar
+ *     S = sum over the grid's edges of |r_q - r_p|^2            (spacing)
+ *     A = sum over the cells of area^2                           (area)
+ *     O = sum over the cells, over each cell's four corners, of the squared
+ *         dot product of the two edges leaving the corner        (orthogonality)
+ * every physical edge and cell once (an O-grid's cut, a C-grid's wake).
+ * Abar, the mean cell area (enclosed area / cells), makes every term a
+ * length squared: the weights a, b, c (EG2D_PARAM_VARIATIONAL_*) are
+ * dimensionless, and only their ratios matter. S's minimiser is the
+ * Amsden-Hirt grid (a = c = 0: exactly EG2D_SYSTEM_LAPLACE's equations);
+ * A pulls the cell areas together; O pulls the corners to 90 degrees.
+ * The residual is V's gradient, scaled like the other systems':
+ *   residual = max over unknown nodes of max(|dV/dx|, |dV/dy|) / (tr H / 2) / L
+ * with H the 2x2 block of V's (Gauss-Newton) Hessian at the node: about the
+ * largest node move a pointwise Newton step would make, as a fraction of
+ * L; with a = c = 0 it is EG2D_SYSTEM_LAPLACE's residual.
+ * Fold guard (EG2D_PARAM_FOLD_CHECK 1, the default): no step may fold a
+ * cell; a node moves at most half the way to where a corner round it would
+ * turn flat, and a coarse correction that folds cells is halved (at most
+ * three times, then dropped). Where V's minimum folds or collapses cells
+ * the grid stays unfolded short of it and the gradient stops falling:
+ * multigrid then ends the run with EG2D_ERR_NOT_CONVERGED after 10 cycles
+ * that lowered it by less than 1.25x (the message says so; the other
+ * solvers run to the iteration limit). S alone folds where Amsden-Hirt
+ * does: on non-convex domains (the elliptic-grid course notes' swan and
+ * valley) and on the annulus 1 <= r <= 3 with n x (n/2+1) nodes; with
+ * a = 10 b (and c = b) V's minimum there is unfolded. With FOLD_CHECK 0 V
+ * is minimised without the guard (then eg2d_solve does not check folds
+ * either).
+ * Solvers: EG2D_SOLVER_MULTIGRID (FAS cycles smoothed by symmetric point
+ * Gauss-Seidel with the node's 2x2 Newton step, halved until it lowers V
+ * when O is on), PSOR and NESTED (the same point step, over-relaxed);
+ * LSOR and AF fail with EG2D_ERR_STATE (their line systems are Winslow's
+ * form). Control terms need EG2D_SYSTEM_WINSLOW (EG2D_ERR_STATE).
+ * Cost (bench/RESULTS.md, eg2d_bench --variational): S alone takes the
+ * cycles of Laplace (2-3); so do A and O on the annulus (3-7). On the
+ * course notes' single blocks A and O take hundreds to thousands of cycles
+ * from 65 x 65 nodes on: point smoothing barely damps their near-null
+ * directions (moves that keep the cells' areas or angles). */
 EG2D_API int eg2d_set_system(eg2d_grid *grid, int system);
 
 #define EG2D_SOLVER_PSOR      0  /* point SOR (Gauss-Seidel at omega = 1) */
@@ -262,7 +306,23 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
 #define EG2D_PARAM_DIVERGENCE_FACTOR  3  /* [10, 1e12], default 1e4: a residual this many times
                                             the best of the run (and above 1e-2) is divergence */
 #define EG2D_PARAM_FOLD_CHECK         4  /* 1 (default): eg2d_solve returns EG2D_ERR_FOLDED when
-                                            the converged grid has folded cells; 0: it does not */
+                                            the converged grid has folded cells; 0: it does not.
+                                            EG2D_SYSTEM_VARIATIONAL: 1 also guards every step
+                                            against folding a cell; 0 minimises without it */
+/* The weights a, b, c of EG2D_SYSTEM_VARIATIONAL (system parameters 10-19),
+ * dimensionless: each in [0, 1e6], not all 0 (a setting that would make
+ * them all 0 fails with EG2D_ERR_ARGUMENT: set the new weight before zeroing
+ * the old). The defaults are S alone (the Amsden-Hirt grid, which folds on
+ * non-convex domains: see the fold guard above). Measured on the course
+ * notes' domains (tests/c/test_variational.c at 33 x 33, bench/RESULTS.md
+ * to 257 x 257): a = 10, b = 1, c = 1 gives a smaller ratio of the largest
+ * to the smallest cell area than Winslow's; a = 10, b = 1, c = 5 a smaller
+ * mean deviation of the corner angles from 90 degrees (at 33 x 33 the
+ * largest too), and it stalls at the fold guard near the swan's and the
+ * dome's non-right corners from 129 x 129 and 65 x 65 nodes. */
+#define EG2D_PARAM_VARIATIONAL_AREA          10  /* a, default 0 */
+#define EG2D_PARAM_VARIATIONAL_SPACING       11  /* b, default 1 */
+#define EG2D_PARAM_VARIATIONAL_ORTHOGONALITY 12  /* c, default 0 */
 /* Multigrid (EG2D_SOLVER_MULTIGRID): FAS cycles smoothed by incomplete-LU
  * sweeps of the nine-point operator (two orderings) on a single block, by
  * alternating line Gauss-Seidel on O- and C-grids. One iteration is one
@@ -384,8 +444,10 @@ EG2D_API int eg2d_set_monitor(eg2d_grid *grid, eg2d_monitor_fn fn, void *user);
 EG2D_API int eg2d_iterate(eg2d_grid *grid, int iterations, double *residual);
 
 /* Iterates until residual <= tolerance: EG2D_OK, or EG2D_ERR_NOT_CONVERGED
- * after max_iterations, EG2D_ERR_DIVERGED, EG2D_ERR_INTERRUPTED. A converged
- * grid is checked for folded cells (EG2D_ERR_FOLDED, see PARAM_FOLD_CHECK). */
+ * after max_iterations (or when the variational system's fold guard stops
+ * it, see EG2D_SYSTEM_VARIATIONAL), EG2D_ERR_DIVERGED, EG2D_ERR_INTERRUPTED.
+ * A converged grid is checked for folded cells (EG2D_ERR_FOLDED, see
+ * PARAM_FOLD_CHECK). */
 EG2D_API int eg2d_solve(eg2d_grid *grid);
 
 /*=====================================================================

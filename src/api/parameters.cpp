@@ -17,6 +17,13 @@ const ParameterInfo kParameters[] = {
     {EG2D_PARAM_DIVERGENCE_FACTOR, "divergence_factor", 10.0, 1e12, false, false, false, false,
      &Settings::divergence_factor},
     {EG2D_PARAM_FOLD_CHECK, "fold_check", 0.0, 1.0, false, false, true, false, &Settings::fold_check},
+    // The variational system's weights (operator/variational.hpp).
+    {EG2D_PARAM_VARIATIONAL_AREA, "variational_area", 0.0, 1e6, false, false, false, false,
+     &Settings::variational_area},
+    {EG2D_PARAM_VARIATIONAL_SPACING, "variational_spacing", 0.0, 1e6, false, false, false, false,
+     &Settings::variational_spacing},
+    {EG2D_PARAM_VARIATIONAL_ORTHOGONALITY, "variational_orthogonality", 0.0, 1e6, false, false, false, false,
+     &Settings::variational_orthogonality},
     {EG2D_PARAM_MG_CYCLE, "mg_cycle", 1.0, 2.0, false, false, true, false, &Settings::mg_cycle},
     {EG2D_PARAM_MG_PRE_SMOOTH, "mg_pre_smooth", 0.0, 20.0, false, false, true, false, &Settings::mg_pre_smooth},
     {EG2D_PARAM_MG_POST_SMOOTH, "mg_post_smooth", 0.0, 20.0, false, false, true, false,
@@ -87,6 +94,9 @@ void check_settings(const Settings &s) {
     if (s.af_dtau_max > 0.0 && s.af_dtau_min > s.af_dtau_max)
         fail(Failure::Argument, format("af_dtau_min = %g > af_dtau_max = %g: the cycle needs min <= max",
                                        s.af_dtau_min, s.af_dtau_max));
+    if (s.variational_area == 0.0 && s.variational_spacing == 0.0 && s.variational_orthogonality == 0.0)
+        fail(Failure::Argument, "variational_area, variational_spacing and variational_orthogonality would all "
+                                "be 0: V = 0 has no minimiser (set the new weight before zeroing the old one)");
 }
 
 }  // namespace api

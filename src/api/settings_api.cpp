@@ -24,8 +24,9 @@ extern "C" {
 
 EG2D_API int eg2d_set_system(eg2d_grid *grid, int system) {
     return guard(grid, "eg2d_set_system", [&] {
-        require(system == EG2D_SYSTEM_LAPLACE || system == EG2D_SYSTEM_WINSLOW,
-                format("system = %d: not EG2D_SYSTEM_LAPLACE (0) or EG2D_SYSTEM_WINSLOW (1)", system));
+        require(system == EG2D_SYSTEM_LAPLACE || system == EG2D_SYSTEM_WINSLOW || system == EG2D_SYSTEM_VARIATIONAL,
+                format("system = %d: not EG2D_SYSTEM_LAPLACE (0), EG2D_SYSTEM_WINSLOW (1) or "
+                       "EG2D_SYSTEM_VARIATIONAL (2)", system));
         grid->gen.set_system(static_cast<System>(system));
     });
 }

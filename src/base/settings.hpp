@@ -11,6 +11,11 @@ struct Settings {
     double max_iterations = 100000;   // per eg2d_solve call
     double divergence_factor = 1e4;   // residual > factor * best of the run = divergence
     double fold_check = 1;            // 1: solve fails with Folded on a folded converged grid
+                                      // (and the variational system's steps may not fold cells)
+    // The variational system's weights a, b, c (operator/variational.hpp).
+    double variational_area = 0.0;
+    double variational_spacing = 1.0;
+    double variational_orthogonality = 0.0;
     // Multigrid (src/solvers/multigrid*.cpp).
     double mg_cycle = 2;              // cycle index: 1 = V, 2 = W
     double mg_pre_smooth = 2;         // alternating line sweeps before the coarse correction

@@ -217,11 +217,21 @@ void Generator::ensure_ready() {
     if (!grid_.initialized()) initialize(EG2D_INIT_TFI);
 }
 
+Functional Generator::functional() const {
+    if (system_ != System::Variational) return Functional{};
+    const double cells = static_cast<double>(grid_.ni() - 1) * (grid_.nj() - 1);
+    double mean = boundary_area(grid_) / cells;
+    if (!(mean > 0.0)) mean = grid_.extent() * grid_.extent() / cells;  // a flat boundary: any scale
+    const int orientation = settings.fold_check != 0.0 ? boundary_orientation(grid_) : 0;
+    return make_functional(settings.variational_area, settings.variational_spacing,
+                           settings.variational_orthogonality, mean, orientation);
+}
+
 ResidualInfo Generator::residual() const {
     require_initialized("residual");
     Grid &g = const_cast<Grid &>(grid_);  // the Level view is read-only here
     const ControlFields &f = controls_.update(g, false);
-    Problem p{g, system_, f, settings};
+    Problem p{g, system_, f, settings, false, true, nullptr, functional()};
     return finite_residual(system_, p.level(), grid_.extent());
 }
 
@@ -241,9 +251,13 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
     // The control terms are coefficients of the quasi-linear (Winslow/TTM)
     // equation; Laplace has no place for them, and silently dropping the
     // user's controls would hand back a grid they did not ask for.
-    if (system_ == System::Laplace && !controls_.empty())
-        fail(Failure::State, "control terms are set but the system is Laplace: controls need "
-                             "EG2D_SYSTEM_WINSLOW (or clear the controls)");
+    if (system_ != System::Winslow && !controls_.empty())
+        fail(Failure::State, format("control terms are set but the system is %s: controls need "
+                                    "EG2D_SYSTEM_WINSLOW (or clear the controls)", system_name(system_)));
+    if (system_ == System::Variational && !solver_info_->variational)
+        fail(Failure::State, format("the %s solver does not solve the variational system (its line systems are "
+                                    "Winslow's form); use one of: %s", solver_info_->name,
+                                    variational_solver_names().c_str()));
     ensure_ready();
     // The layer's settings are read when it is shaped: a change reshapes it.
     // A new boundary (or an interior no iteration has touched) gets a new
@@ -276,7 +290,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
     // coarse rings a few cells round (annulus 129x65 at a 1e-4 wall, far
     // field 30: the FMG start went non-finite).
     Problem problem{grid_, system_, fields, run_settings, controls_.has_dynamic(),
-                    fresh_start_ && grid_.held_rows() == 0, &report_};
+                    fresh_start_ && grid_.held_rows() == 0, &report_, functional()};
     const double extent = grid_.extent();
     double r = finite_residual(system_, problem.level(), extent).value;
     double best = r;
@@ -289,6 +303,8 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
         report_.iteration = iterations_ + 1;
         solver_->iterate(problem);
         for (const auto &m : motions_) m->apply(grid_);  // sliding sides follow the interior
+        if (system_ == System::Variational && !motions_.empty())
+            problem.functional = functional();  // the enclosed area moved a little
         const ResidualInfo ri = eg2d::residual(system_, problem.level(), extent);
         if (!std::isfinite(ri.value) ||
             (ri.value > settings.divergence_factor * best && ri.value > kDivergenceFloor))

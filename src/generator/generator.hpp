@@ -104,6 +104,9 @@ private:
     // Lets the controls build what they fix before the solve (a wall layer).
     void shape_start(bool fill_above);
     void drop_motion(Side s);
+    // The variational system's functional for the grid as it is (its mean
+    // cell area, the fold guard as settings ask); the default for the others.
+    Functional functional() const;
     void changed_start();
     void ensure_ready();
     enum class RunEnd { Done, Converged, Limit };

@@ -6,7 +6,12 @@
 namespace eg2d {
 
 const char *system_name(System s) {
-    return s == System::Laplace ? "Laplace" : "Winslow";
+    switch (s) {
+    case System::Laplace: return "Laplace";
+    case System::Winslow: return "Winslow";
+    case System::Variational: return "variational";
+    }
+    return "unknown";
 }
 
 ResidualInfo residual(System system, const Level &L, double extent) {

@@ -7,12 +7,15 @@
 #include "operator/control_fields.hpp"
 #include "base/connectivity.hpp"
 #include "operator/system.hpp"
+#include "operator/variational.hpp"
 
 namespace eg2d {
 
 // What the operator needs of one grid level: coordinates, neighbours,
 // control fields (nullptr = none) and an optional right-hand side f
-// (nullptr = 0; multigrid's FAS coarse levels solve L(r) = f).
+// (nullptr = 0; multigrid's FAS coarse levels solve L(r) = f). The
+// variational system reads its weights from `functional` (nullptr: b = 1
+// alone, the spacing functional).
 struct Level {
     const Connectivity *conn = nullptr;
     double *x = nullptr;
@@ -20,6 +23,7 @@ struct Level {
     const ControlFields *controls = nullptr;
     const double *fx = nullptr;
     const double *fy = nullptr;
+    const Functional *functional = nullptr;
 };
 
 // The equation at a node: R = L(r) - f for x and y, and the magnitude of the
@@ -65,12 +69,20 @@ inline Metrics node_metrics(const Level &L, const Stencil &s) {
     return m;
 }
 
+// The variational system's equation at a node (variational.cpp): L(r) =
+// -(dV/dr)/2, diag = trace(H)/4; f is not applied here.
+NodeEquation variational_equation(const Level &L, const Stencil &s);
+
 // `metrics`, if given, receives the coefficients used (Laplace: alpha = gamma
-// = 1, beta = C = 0), for line solvers that need both.
+// = 1, beta = C = 0), for line solvers that need both (not the variational
+// system, whose equation has no such form).
 inline NodeEquation node_equation(System system, const Level &L, const Stencil &s, Metrics *metrics = nullptr) {
     const double *x = L.x, *y = L.y;
     NodeEquation eq;
-    if (system == System::Laplace) {
+    if (system == System::Variational) {
+        eq = variational_equation(L, s);
+        if (metrics) *metrics = Metrics{1.0, 0.0, 1.0, 1.0, 0.0, 0.0};
+    } else if (system == System::Laplace) {
         eq.rx = x[s.e] + x[s.w] + x[s.n] + x[s.s] - 4.0 * x[s.c];
         eq.ry = y[s.e] + y[s.w] + y[s.n] + y[s.s] - 4.0 * y[s.c];
         eq.diag = 4.0;
@@ -98,9 +110,25 @@ inline NodeEquation node_equation(System system, const Level &L, const Stencil &
     return eq;
 }
 
-// One point Gauss-Seidel/SOR step at node (i, j): r += omega R/diag, then
-// the node's copies (conn.sync_node) follow.
+// The variational system's point step at node (i, j) (variational.cpp):
+// omega times the Newton step of its 2x2 equations; under the functional's
+// fold guard at most kToFold of the way to the nearest corner round the node
+// turning flat (Limited: the guard shortened it); with O, halved up to
+// kStepHalvings times until it lowers the node's energy (else NoDescent: the
+// node stays).
+enum class NodeStep { Moved, Limited, NoDescent };
+constexpr double kToFold = 0.5;
+constexpr int kStepHalvings = 8;
+NodeStep relax_variational(const Level &L, int i, int j, double omega);
+
+// One point Gauss-Seidel/SOR step at node (i, j): r += omega R/diag (the
+// variational system: relax_variational), then the node's copies
+// (conn.sync_node) follow.
 inline void relax_point(System system, const Level &L, int i, int j, double omega) {
+    if (system == System::Variational) {
+        relax_variational(L, i, j, omega);
+        return;
+    }
     const Connectivity &conn = *L.conn;
     const Stencil s = conn.stencil(i, j);
     const NodeEquation eq = node_equation(system, L, s);

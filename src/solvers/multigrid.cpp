@@ -37,6 +37,7 @@
 #include "solvers/multigrid_hierarchy.hpp"
 #include "solvers/multigrid_local.hpp"
 #include "solvers/multigrid_smoother.hpp"
+#include "solvers/multigrid_variational.hpp"
 #include "solvers/solver.hpp"
 
 namespace eg2d {
@@ -107,6 +108,7 @@ public:
         folded_ = -1;
         stall_best_ = std::numeric_limits<double>::infinity();
         stall_count_ = 0;
+        fold_stall_.reset();
     }
     bool converges_each_iteration() const override { return !sweeps_only_; }
     // Guarded cycles that stop making progress (the best residual not halved
@@ -117,6 +119,11 @@ public:
     // just as the control's acceleration began (65x33: 150 iterations, 30
     // when the gap counts).
     void observe(double residual, double control_gap) override {
+        if (system_ == System::Variational && !levels_.empty()) {
+            const long refused = levels_[0].refused;
+            levels_[0].refused = 0;
+            fold_stall_.observe(residual, refused);
+        }
         if (sweeps_only_ || folded_ < 0) return;
         const double progress = std::max(residual, control_gap);
         if (progress < 0.5 * stall_best_) {
@@ -164,6 +171,7 @@ private:
         const Level fine = p.level();
         levels_[0].level = fine;
         levels_[0].level.conn = &levels_[0].conn;
+        attach_functional(levels_, fine.functional);
         for (std::size_t l = 1; l < levels_.size(); ++l)
             restrict_controls(levels_[l - 1].level.controls, levels_[l - 1].conn, levels_[l]);
         levels_[0].singular = singular_nodes(conn, fine.x, fine.y);
@@ -223,7 +231,7 @@ private:
             cycle(l + 1);
             if (l + 2 >= levels_.size()) break;  // the coarsest level is solved once
         }
-        if (keep_coarse(l)) prolong_correction(levels_[l + 1], m.level);
+        if (keep_coarse(l)) correct(l);
         smooth(system_, m, post_, true);
     }
 
@@ -272,7 +280,7 @@ private:
                 MgLevel &c = levels_[l + 1];
                 inject(m.conn, m.level.x, c, c.x0.data());
                 inject(m.conn, m.level.y, c, c.y0.data());
-                prolong_correction(c, m.level);
+                correct(l);
             }
             if (l > 0) {
                 std::fill(m.fx.begin(), m.fx.end(), 0.0);
@@ -280,6 +288,13 @@ private:
             }
             cycle(l);
         }
+    }
+
+    // Level l += the correction of level l + 1; the variational system's
+    // fold guard may damp or drop it (multigrid_variational.hpp).
+    void correct(std::size_t l) {
+        if (system_ == System::Variational) prolong_guarded(levels_[l + 1], levels_[l].level, save_);
+        else prolong_correction(levels_[l + 1], levels_[l].level);
     }
 
     void note(std::string message) {
@@ -301,6 +316,8 @@ private:
     double stall_best_ = std::numeric_limits<double>::infinity();
     int stall_count_ = 0;
     GridSnapshot saved_;  // the grid before a guarded cycle
+    std::vector<double> save_;  // scratch of the variational fold guard
+    FoldStall fold_stall_;
 };
 
 }  // namespace

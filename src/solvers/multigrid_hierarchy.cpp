@@ -70,8 +70,9 @@ std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, in
         if (held > 0 && 2.0 * stretch_j > kMaxHeldStretching) cj = false;
         // Laplace in index units is not invariant under coarsening one
         // direction only (x_xixi + x_etaeta would change its anisotropy), so
-        // it coarsens in both or stops; Winslow's equation is invariant.
-        if (system == System::Laplace ? !(ci && cj) : !(ci || cj)) break;
+        // it coarsens in both or stops, and so does the variational system
+        // (its S is Laplace's); Winslow's equation is invariant.
+        if (system != System::Winslow ? !(ci && cj) : !(ci || cj)) break;
         CoarseAxis ai = make_axis(c.ni(), c.periodic_i(), anchors, ci);
         CoarseAxis aj = make_axis(c.nj(), false, j_anchors, cj);
         const int wake = c.wake() > 0 ? ai.nearest(c.wake()) : 0;
@@ -107,7 +108,19 @@ std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, in
 
 double operator_scale(System system, const MgLevel &coarse, int I, int J) {
     const double s = coarse.ai.h[static_cast<std::size_t>(I)] * coarse.aj.h[static_cast<std::size_t>(J)];
-    return system == System::Laplace ? s : s * s;
+    return system == System::Winslow ? s * s : s;
+}
+
+void attach_functional(std::vector<MgLevel> &levels, const Functional *fine) {
+    if (levels.empty()) return;
+    levels[0].level.functional = fine;
+    const Functional f = fine ? *fine : Functional{};
+    const double fine_cells = static_cast<double>(levels[0].conn.ni() - 1) * (levels[0].conn.nj() - 1);
+    for (std::size_t l = 1; l < levels.size(); ++l) {
+        MgLevel &m = levels[l];
+        m.functional = coarsened(f, static_cast<double>(m.conn.ni() - 1) * (m.conn.nj() - 1) / fine_cells);
+        m.level.functional = &m.functional;
+    }
 }
 
 // With r_xi = r_Xi/si, r_eta = r_Eta/sj on the coarse grid (capitals), alpha =

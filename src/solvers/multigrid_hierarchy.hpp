@@ -27,6 +27,8 @@ struct MgLevel {
     std::vector<double> rx, ry;      // R = L(r) - f, for the restriction
     std::vector<double> best_x, best_y;  // coarsest level: the best iterate of its solve
     ControlFields controls;          // the finer fields injected and rescaled
+    Functional functional;           // the variational system's, for this level's cells
+    long refused = 0;                // variational: node steps the fold guard refused (reset by the solver)
     std::vector<Connectivity::Node> singular;    // boundary singularities (multigrid_local.hpp)
     std::vector<Connectivity::Node> trailing_edge;  // a C-grid's cut ends on this level
     Level level;                     // the operator's view of this level
@@ -61,8 +63,15 @@ void coarse_stretch(const ControlFields *fields, double &stretch_i, double &stre
 // How much larger the coarse operator is than the fine one for the same
 // smooth grid at coarse node (I, J) (the operator is written in index units):
 // (hi*hj)^2 for Winslow, whose terms are quartic in index spacing, hi*hj for
-// Laplace, with hi, hj the fine cells per coarse cell there (coarse_axis.hpp).
+// Laplace and the variational system (its V is the same on every level, and
+// a coarse node gathers the gradient of hi*hj fine ones), with hi, hj the
+// fine cells per coarse cell there (coarse_axis.hpp).
 double operator_scale(System system, const MgLevel &coarse, int I, int J);
+
+// The variational functional of every level: `fine` on level 0, and on each
+// coarse level the same weights over that level's mean cell area, without
+// the fold guard (variational.hpp's coarsened).
+void attach_functional(std::vector<MgLevel> &levels, const Functional *fine);
 
 // coarse.controls = the fine fields at the coarse nodes, rescaled to the
 // coarse index units (controls/control_fields.hpp; derivation in the .cpp).

@@ -62,12 +62,7 @@ void relax_near(System system, const Level &L, const std::vector<Connectivity::N
         if (j == 0 && conn.wake() > 0 && i > conn.ni() - 1 - conn.wake() && i < conn.ni() - 1) i = conn.ni() - 1 - i;
         if (!conn.on_cut(i, j) && (i < conn.i_begin() || i >= conn.i_end() || j < conn.j_begin() || j >= conn.j_end()))
             return;
-        const Stencil s = conn.stencil(i, j);
-        const NodeEquation eq = node_equation(system, L, s);
-        L.x[s.c] += eq.rx / eq.diag;
-        L.y[s.c] += eq.ry / eq.diag;
-        conn.sync_node(L.x, i, j);
-        conn.sync_node(L.y, i, j);
+        relax_point(system, L, i, j, 1.0);
     };
     for (const Connectivity::Node &n : nodes)
         for (int s = 0; s < sweeps; ++s) {

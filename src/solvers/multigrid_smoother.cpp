@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "solvers/multigrid_local.hpp"
+#include "solvers/multigrid_variational.hpp"
 
 namespace eg2d {
 
@@ -48,7 +49,8 @@ static bool single_block(const Connectivity &c) { return !c.periodic_i() && c.ex
 
 void smooth(System system, MgLevel &m, int sweeps, bool reverse) {
     const double omega = kSmootherOmega;
-    for (int s = 0; s < sweeps; ++s) {
+    for (int s = 0; s < sweeps && system == System::Variational; ++s) m.refused += variational_sweeps(m.level);
+    for (int s = 0; s < sweeps && system != System::Variational; ++s) {
         if (single_block(m.conn)) {
             ilu_sweep(system, m.level, false, 1.0, m.ilu);
             ilu_sweep(system, m.level, true, 1.0, m.ilu);

@@ -66,6 +66,7 @@ private:
         const double target = std::max(p.settings.tolerance, kCoarseTolerance);
         levels[0].level = fine;
         levels[0].level.conn = &levels[0].conn;
+        attach_functional(levels, fine.functional);
         for (std::size_t l = 1; l < levels.size(); ++l) {
             MgLevel &c = levels[l];
             const MgLevel &f = levels[l - 1];

@@ -3,6 +3,7 @@
 // the Generator does that, the same way for every solver.
 #pragma once
 #include <memory>
+#include <string>
 
 #include "operator/control_fields.hpp"
 #include "base/settings.hpp"
@@ -29,6 +30,9 @@ struct Problem {
     bool fresh_start = true;
     // Where the solver says what it did (levels, fallbacks); may be null.
     RunReport *report = nullptr;
+    // The variational system's functional on the fine grid (its weights over
+    // this grid's mean cell area, and the fold guard).
+    Functional functional;
 
     void note(std::string message) const {
         if (report) report->note(std::move(message));
@@ -41,6 +45,7 @@ struct Problem {
         L.x = grid.x.data();
         L.y = grid.y.data();
         L.controls = controls.empty() ? nullptr : &controls;
+        L.functional = &functional;
         return L;
     }
 };
@@ -74,10 +79,15 @@ struct SolverInfo {
     int id;             // EG2D_SOLVER_*
     const char *name;   // short name: "psor"
     std::unique_ptr<Solver> (*make)();
+    // Solves the variational system: point and multilevel solvers; the line
+    // solvers' systems are Winslow's form, which the variational one lacks.
+    bool variational;
 };
 
 // nullptr if this library has no solver with that id.
 const SolverInfo *find_solver(int id);
+// The names of the solvers that solve the variational system, for messages.
+std::string variational_solver_names();
 
 // One lexicographic point SOR sweep over the unknowns of a level (psor.cpp);
 // the point solver and the coarse-to-fine solver share it.

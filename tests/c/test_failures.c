@@ -150,7 +150,10 @@ static int r_coords_nan(eg2d_grid *g) {
 }
 static int r_init_no_boundary(eg2d_grid *g) { return eg2d_initialize(g, EG2D_INIT_TFI); }
 static int r_init_method(eg2d_grid *g) { return eg2d_initialize(g, 77); }
-static int r_system_2(eg2d_grid *g) { return eg2d_set_system(g, 2); }
+static int r_system_3(eg2d_grid *g) { return eg2d_set_system(g, 3); }
+static int r_weights_zero(eg2d_grid *g) { return eg2d_set_parameter(g, EG2D_PARAM_VARIATIONAL_SPACING, 0); }
+static int r_weight_neg(eg2d_grid *g) { return eg2d_set_parameter(g, EG2D_PARAM_VARIATIONAL_AREA, -1); }
+static int r_variational_fold(eg2d_grid *g) { eg2d_set_system(g, EG2D_SYSTEM_VARIATIONAL); return eg2d_solve(g); }
 static int r_solver_99(eg2d_grid *g) { return eg2d_set_solver(g, 99); }
 static int r_solver_neg(eg2d_grid *g) { return eg2d_set_solver(g, -1); }
 static int r_topology_7(eg2d_grid *g) { return eg2d_set_topology(g, 7); }
@@ -408,6 +411,7 @@ typedef enum {
     S_POINT,  /* the square of side 0: every boundary point at (0, 0) */
     S_TRIANGLE, /* set_triangle */
     S_DUPLICATE, /* the unit square with JMIN's points 3 and 4 the same */
+    S_VAR_LSOR, /* the unit square, EG2D_SYSTEM_VARIATIONAL, EG2D_SOLVER_LSOR */
     S_BIG     /* a 1000 x 1000 grid with the quad boundary */
 } setup_kind;
 
@@ -468,8 +472,19 @@ static const bad_input rows[] = {
      EG2D_ERR_STATE, "eg2d_initialize: the boundary is not complete: side JMIN, IMAX, JMAX, IMIN not set", 0},
     {"unknown initialisation method", "eg2d_initialize(g, 77)", S_SQUARE, r_init_method, EG2D_ERR_ARGUMENT,
      "eg2d_initialize: initialisation method 77: no such method", 0},
-    {"unknown system", "eg2d_set_system(g, 2)", S_FRESH, r_system_2, EG2D_ERR_ARGUMENT,
-     "eg2d_set_system: system = 2: not EG2D_SYSTEM_LAPLACE (0) or EG2D_SYSTEM_WINSLOW (1)", 0},
+    {"unknown system", "eg2d_set_system(g, 3)", S_FRESH, r_system_3, EG2D_ERR_ARGUMENT,
+     "eg2d_set_system: system = 3: not EG2D_SYSTEM_LAPLACE (0), EG2D_SYSTEM_WINSLOW (1) or "
+     "EG2D_SYSTEM_VARIATIONAL (2)", 0},
+    {"variational weights all 0", "eg2d_set_parameter(g, EG2D_PARAM_VARIATIONAL_SPACING, 0)", S_FRESH,
+     r_weights_zero, EG2D_ERR_ARGUMENT,
+     "eg2d_set_parameter: variational_area, variational_spacing and variational_orthogonality would all be 0: "
+     "V = 0 has no minimiser (set the new weight before zeroing the old one)", 0},
+    {"negative variational weight", "eg2d_set_parameter(g, EG2D_PARAM_VARIATIONAL_AREA, -1)", S_FRESH,
+     r_weight_neg, EG2D_ERR_ARGUMENT, "eg2d_set_parameter: variational_area = -1: must be in [0, 1e+06]", 0},
+    {"variational system with a line solver", "eg2d_solve(g), EG2D_SYSTEM_VARIATIONAL, EG2D_SOLVER_LSOR",
+     S_VAR_LSOR, r_solve, EG2D_ERR_STATE,
+     "eg2d_solve: the lsor solver does not solve the variational system (its line systems are Winslow's form); "
+     "use one of: psor, multigrid, nested", 0},
     {"solver id not built in", "eg2d_set_solver(g, 99)", S_FRESH, r_solver_99, EG2D_ERR_UNSUPPORTED,
      "eg2d_set_solver: solver 99 is not built into this library", 0},
     {"negative solver id", "eg2d_set_solver(g, -1)", S_FRESH, r_solver_neg, EG2D_ERR_ARGUMENT,
@@ -607,6 +622,12 @@ static const bad_input rows[] = {
      "eg2d_solve: the converged grid has * folded cells; the first is cell (*, *) (cells are numbered by their "
      "lowest node)",
      KEEPS_WORK},
+    {"variational minimum that folds (swan, S alone)", "eg2d_solve(g), EG2D_SYSTEM_VARIATIONAL", S_SWAN,
+     r_variational_fold, EG2D_ERR_NOT_CONVERGED,
+     "eg2d_solve: variational: the gradient norm fell by less than 1.25 in 10 cycles (best *) while the fold guard "
+     "shortened * node steps: the minimum of V for these weights folds or collapses cells, and the grid is kept "
+     "unfolded short of it. Raise the area weight, or set EG2D_PARAM_FOLD_CHECK to 0 for the unconstrained minimum",
+     KEEPS_WORK},
     {"a zero-length side (IMIN a single point: a triangle)", "eg2d_solve(g)", S_TRIANGLE, r_solve, EG2D_OK,
      "", KEEPS_WORK},
     {"a duplicate point in a side", "eg2d_solve(g), JMIN point 4 = point 3", S_DUPLICATE, r_solve, EG2D_OK, "",
@@ -703,6 +724,9 @@ static int setup(const bad_input *r, eg2d_grid *g) {
     case S_POINT: return set_square(g, 0);
     case S_TRIANGLE: return set_triangle(g);
     case S_DUPLICATE: return set_square(g, 1) || jmin_with(g, 4, 0.375, 0);
+    case S_VAR_LSOR:
+        return set_square(g, 1) || eg2d_set_system(g, EG2D_SYSTEM_VARIATIONAL) ||
+               eg2d_set_solver(g, EG2D_SOLVER_LSOR);
     case S_BIG: return domain_set(g, "quad");
     }
     return EG2D_ERR_ARGUMENT;

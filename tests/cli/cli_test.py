@@ -113,7 +113,8 @@ class ErrorMessages(unittest.TestCase):
     def test_unknown_key(self):
         self.check('size = [9, 9]\nsovler = "psor"\n' + self.GOOD_SIDES, 3,
                    "CASE:2:1: key 'sovler': unknown key (expected one of: title, size, topology, system, "
-                   "initial, constants, solver, sides, controls, output, patches, hermite_spacing)")
+                   "initial, constants, solver, sides, controls, output, patches, variational_area, "
+                   "variational_orthogonality, variational_spacing, hermite_spacing)")
 
     def test_unknown_key_in_a_side(self):
         self.check('size = [9, 9]\n' + self.GOOD_SIDES + 'z = "1"\n', 3,
@@ -213,7 +214,7 @@ class ErrorMessages(unittest.TestCase):
 
     def test_bad_choice(self):
         self.check('size = [9, 9]\nsystem = "poisson"\n' + self.GOOD_SIDES, 3,
-                   "CASE:2:10: key 'system': \"poisson\" is not one of: laplace, winslow")
+                   "CASE:2:10: key 'system': \"poisson\" is not one of: laplace, winslow, variational")
 
     def test_point_count(self):
         text = 'size = [4, 3]\n' + self.GOOD_SIDES.replace('[sides.left]\nx = "0"\ny = "s"',

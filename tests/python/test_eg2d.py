@@ -218,6 +218,31 @@ def test_not_converged_keeps_iterations():
         assert g.get_iterations() == 3
 
 
+def test_variational_system():
+    """V = aA + bS + cO: the weights are parameters; S alone folds on the swan
+    (the fold guard stops short of it, unfolded); a = 10, b = 1, c = 1 gives an
+    unfolded grid with more even cells than Winslow's."""
+    assert eg2d.parameter_bounds(eg2d.PARAM_VARIATIONAL_SPACING) == (0.0, 1e6, 1.0)
+    with swan(33) as g:
+        g.set_system(eg2d.SYSTEM_VARIATIONAL)
+        with pytest.raises(eg2d.ArgumentError, match="would all be 0"):
+            g.set_parameter(eg2d.PARAM_VARIATIONAL_SPACING, 0)
+        with pytest.raises(eg2d.NotConvergedError, match="fold guard"):
+            g.solve()
+        assert g.get_quality(eg2d.QUALITY_FOLDED_CELLS) == 0
+    ratios = []
+    for system in (eg2d.SYSTEM_WINSLOW, eg2d.SYSTEM_VARIATIONAL):
+        with swan(33) as g:
+            g.set_system(system)
+            g.set_parameter(eg2d.PARAM_VARIATIONAL_AREA, 10)
+            g.set_parameter(eg2d.PARAM_VARIATIONAL_ORTHOGONALITY, 1)
+            g.solve()
+            assert g.get_residual() <= 1e-8
+            assert g.get_quality(eg2d.QUALITY_FOLDED_CELLS) == 0
+            ratios.append(g.get_quality(eg2d.QUALITY_MAX_AREA) / g.get_quality(eg2d.QUALITY_MIN_AREA))
+    assert ratios[1] < ratios[0]
+
+
 # ---- the grids are the C library's
 def test_swan_equals_c():
     """The file written by swan_write_c (C, tests/support/domains.c): 33 x 33,

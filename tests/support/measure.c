@@ -51,3 +51,38 @@ void measure_wall(const double *x, const double *y, int ni, int nj, int side, in
         if (h > *max_h) *max_h = h;
     }
 }
+
+void measure_angles(const double *x, const double *y, int ni, int nj, int single_block, double *mean,
+                    double *largest, double *area_ratio) {
+    double total = 0.0, sum = 0.0, amin = HUGE_VAL, amax = 0.0;
+    long count = 0;
+    int i, j, m, o;
+    *largest = 0.0;
+    for (j = 0; j + 1 < nj; ++j)
+        for (i = 0; i + 1 < ni; ++i) {
+            const int k = i + ni * j, c[4] = {k, k + 1, k + 1 + ni, k + ni};
+            total += (x[c[2]] - x[c[0]]) * (y[c[3]] - y[c[1]]) - (y[c[2]] - y[c[0]]) * (x[c[3]] - x[c[1]]);
+        }
+    o = total < 0 ? -1 : 1;
+    for (j = 0; j + 1 < nj; ++j)
+        for (i = 0; i + 1 < ni; ++i) {
+            const int k = i + ni * j, c[4] = {k, k + 1, k + 1 + ni, k + ni};
+            const int ci[4] = {i, i + 1, i + 1, i}, cj[4] = {j, j, j + 1, j + 1};
+            const double area =
+                0.5 * o * ((x[c[2]] - x[c[0]]) * (y[c[3]] - y[c[1]]) - (y[c[2]] - y[c[0]]) * (x[c[3]] - x[c[1]]));
+            amin = fmin(amin, area);
+            amax = fmax(amax, area);
+            for (m = 0; m < 4; ++m) {
+                const int n = c[(m + 1) % 4], p = c[(m + 3) % 4];
+                const double ax = x[n] - x[c[m]], ay = y[n] - y[c[m]], bx = x[p] - x[c[m]], by = y[p] - y[c[m]];
+                double d;
+                if (single_block && (ci[m] == 0 || ci[m] == ni - 1) && (cj[m] == 0 || cj[m] == nj - 1)) continue;
+                d = fabs(atan2(o * (ax * by - ay * bx), ax * bx + ay * by) * 180.0 / MEASURE_PI - 90.0);
+                sum += d;
+                ++count;
+                *largest = fmax(*largest, d);
+            }
+        }
+    *mean = count ? sum / count : 0.0;
+    *area_ratio = amin > 0.0 ? amax / amin : HUGE_VAL;
+}

@@ -18,6 +18,15 @@ double measure_distance(const double *x, const double *y, int ni, int i0, int j0
 void measure_wall(const double *x, const double *y, int ni, int nj, int side, int periodic, int k_begin, int k_end,
                   double *max_angle_deviation, double *min_height, double *max_height);
 
+/* Over the cell corners of an ni x nj grid (cell (i, j): (i,j), (i+1,j),
+ * (i+1,j+1), (i,j+1)), without the four block corners when single_block
+ * (their angle is the boundary's): the mean and the largest deviation
+ * (degrees) of the angle from 90, signed by the grid's orientation (a folded
+ * corner counts more than 90); and the ratio of the largest to the smallest
+ * cell area (HUGE_VAL when a cell is folded or flat). */
+void measure_angles(const double *x, const double *y, int ni, int nj, int single_block, double *mean,
+                    double *largest, double *area_ratio);
+
 #ifdef __cplusplus
 }
 #endif

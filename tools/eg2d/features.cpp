@@ -69,6 +69,16 @@ const std::vector<Feature> &parameters() {
 #else
         EG2D_NO_PARAM("wall_layer", "controls"), EG2D_NO_PARAM("wall_growth", "controls"),
 #endif
+#ifdef EG2D_PARAM_VARIATIONAL_AREA
+        // spacing last: the only weight not 0 by default, so a case may zero it
+        // (the library refuses a setting that leaves all three 0)
+        EG2D_PARAM("variational_area", EG2D_PARAM_VARIATIONAL_AREA, "top"),
+        EG2D_PARAM("variational_orthogonality", EG2D_PARAM_VARIATIONAL_ORTHOGONALITY, "top"),
+        EG2D_PARAM("variational_spacing", EG2D_PARAM_VARIATIONAL_SPACING, "top"),
+#else
+        EG2D_NO_PARAM("variational_area", "top"), EG2D_NO_PARAM("variational_orthogonality", "top"),
+        EG2D_NO_PARAM("variational_spacing", "top"),
+#endif
 #ifdef EG2D_PARAM_HERMITE_SPACING
         EG2D_PARAM("hermite_spacing", EG2D_PARAM_HERMITE_SPACING, "top"),
 #else
@@ -150,8 +160,15 @@ const std::vector<Feature> &cell_metrics() {
 }
 
 const std::vector<Feature> &systems() {
+#ifdef EG2D_SYSTEM_VARIATIONAL
     static const std::vector<Feature> t = {EG2D_FEATURE("laplace", EG2D_SYSTEM_LAPLACE),
-                                           EG2D_FEATURE("winslow", EG2D_SYSTEM_WINSLOW)};
+                                           EG2D_FEATURE("winslow", EG2D_SYSTEM_WINSLOW),
+                                           EG2D_FEATURE("variational", EG2D_SYSTEM_VARIATIONAL)};
+#else
+    static const std::vector<Feature> t = {EG2D_FEATURE("laplace", EG2D_SYSTEM_LAPLACE),
+                                           EG2D_FEATURE("winslow", EG2D_SYSTEM_WINSLOW),
+                                           EG2D_MISSING("variational")};
+#endif
     return t;
 }
 
