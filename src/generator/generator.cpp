@@ -240,10 +240,10 @@ void Generator::control_sources(double *P, double *Q) const {
     const std::size_t n = grid_.x.size();
     if (P) std::fill(P, P + n, 0.0);
     if (Q) std::fill(Q, Q + n, 0.0);
-    if (system_ == System::Laplace || controls_.empty()) return;  // Laplace has no control terms
+    if (system_ != System::Winslow || controls_.empty()) return;  // only Winslow has control terms
     Grid &g = const_cast<Grid &>(grid_);  // the Level view is read-only here
     const ControlFields &f = controls_.update(g, false);
-    Problem p{g, system_, f, settings};
+    Problem p{g, system_, f, settings, false, true, nullptr, functional()};
     equivalent_sources(p.level(), P, Q);
 }
 
