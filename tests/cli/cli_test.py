@@ -980,9 +980,9 @@ class Airfoil(unittest.TestCase):
             self.airfoil(d, "0012", "--topology", "c", "--size", "385x97", "--yplus", "1", "--reynolds", "6e6",
                          "--levels", "3", "--format", "plot3d3d,cgns,su2,openfoam,vts")
             for size in ("385x97", "193x49", "97x25"):
-                for ext in (".p3d", ".cgns", ".su2", ".vts", ".report.txt", ".report.json"):
+                for ext in ("-3d.xyz", ".cgns", ".su2", ".vts", ".report.txt", ".report.json"):
                     self.assertTrue(os.path.isfile(os.path.join(d, f"naca0012-{size}{ext}")), size + ext)
-                self.assertTrue(os.path.isdir(os.path.join(d, f"naca0012-{size}-openfoam", "constant", "polyMesh")))
+                self.assertTrue(os.path.isdir(os.path.join(d, f"naca0012-{size}_foam", "constant", "polyMesh")))
             # y+ 1 at Re 6e6 by the flat-plate estimate eg2d.h states
             cf = (2 * math.log10(6e6) - 0.65) ** -2.3
             h = 1 / (6e6 * math.sqrt(cf / 2))
@@ -1027,7 +1027,7 @@ class Airfoil(unittest.TestCase):
             if checkmesh:
                 env = dict(os.environ)
                 env.setdefault("WM_PROJECT_DIR", "/usr/share/openfoam")
-                p = subprocess.run([checkmesh, "-case", os.path.join(d, "naca0012-385x97-openfoam")],
+                p = subprocess.run([checkmesh, "-case", os.path.join(d, "naca0012-385x97_foam")],
                                    capture_output=True, text=True, env=env)
                 out = p.stdout
                 self.assertIn("Failed 1 mesh checks.", out)  # the aspect ratio a y+ 1 layer must have

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "failure.hpp"
+#include "features.hpp"
 #include "progress.hpp"
 #include "runner.hpp"
 
@@ -49,11 +50,13 @@ const char *const airfoil_help =
     "  --method       hybrid (default: the hyperbolic march's wall layer held, elliptic\n"
     "                 above), elliptic (the Sorenson-type wall control) or hyperbolic (the\n"
     "                 march alone; the far field is its own)\n"
-    "  --format       a comma list of plot3d, plot3d3d (one cell thick, for plot3dToFoam),\n"
-    "                 cgns, su2, openfoam (a case directory), vts, svg (default plot3d); a\n"
-    "                 report (text and JSON) is always written\n"
+    "  --format       a comma list of the formats of case files (plot3d, plot3d-ascii, cgns,\n"
+    "                 su2, openfoam: a case directory, vts, svg, gmv, matlab) and plot3d3d\n"
+    "                 (Plot3D one cell thick, for plot3dToFoam); default plot3d. A report\n"
+    "                 (text and JSON) is always written\n"
     "  -o DIR         the output directory (default .)\n"
-    "Files: DIR/NAME-NIxNJ.EXT per level and format, NAME the NACA code or the file's stem.\n"
+    "Files: DIR/NAME-NIxNJ.EXT per level and format (the extensions of eg2d run: .xyz, .cgns,\n"
+    "  .su2, _foam/, .vts, ...; plot3d3d -3d.xyz), NAME the NACA code or the file's stem.\n"
     "\n"
     "example:\n"
     "  eg2d airfoil 0012 --topology c --size 385x97 --yplus 1 --reynolds 6e6 --levels 3 \\\n"
@@ -69,19 +72,11 @@ struct CurveDeleter {
     void operator()(eg2d_curve *c) const { eg2d_curve_destroy(c); }
 };
 
-struct Format {
-    const char *name;
+// An output: a format of the command's table (features.cpp, the names and
+// extensions case files use), with flags; plot3d3d is Plot3D one cell thick.
+struct Output {
+    std::string name, extension;
     int id;
-    const char *extension;  // "" for a directory
-};
-const Format kFormats[] = {
-    {"plot3d", EG2D_FORMAT_PLOT3D, ".x"},
-    {"plot3d3d", EG2D_FORMAT_PLOT3D | EG2D_PLOT3D_EXTRUDED, ".p3d"},
-    {"cgns", EG2D_FORMAT_CGNS, ".cgns"},
-    {"su2", EG2D_FORMAT_SU2, ".su2"},
-    {"openfoam", EG2D_FORMAT_OPENFOAM, "-openfoam"},
-    {"vts", EG2D_FORMAT_VTS, ".vts"},
-    {"svg", EG2D_FORMAT_SVG, ".svg"},
 };
 
 struct Args {
@@ -186,18 +181,24 @@ void check(eg2d_grid *g, int status, const std::string &what) {
     if (status != EG2D_OK) throw Failure(exit_code_for_status(status), what + ": " + eg2d_last_error(g));
 }
 
-std::vector<const Format *> formats(const std::string &list) {
-    std::vector<const Format *> out;
+std::vector<Output> outputs_of(const std::string &list) {
+    std::vector<Output> out;
     std::stringstream in(list);
     std::string name;
     while (std::getline(in, name, ',')) {
-        const Format *f = nullptr;
-        for (const Format &k : kFormats)
-            if (name == k.name) f = &k;
         if (name == "png")
             throw Failure(EXIT_UNSUPPORTED, "airfoil: --format png is not written by this build (svg is)");
-        if (!f) usage("--format: unknown format \"" + name + "\" (plot3d, plot3d3d, cgns, su2, openfoam, vts, svg)");
-        out.push_back(f);
+        if (name == "plot3d3d") {
+            out.push_back({name, "-3d.xyz", EG2D_FORMAT_PLOT3D | EG2D_PLOT3D_EXTRUDED});
+            continue;
+        }
+        const Feature *f = nullptr;
+        for (const Feature &k : formats())
+            if (name == k.name && k.tool == 0 && k.id != EG2D_FORMAT_REPORT && k.id != EG2D_FORMAT_REPORT_JSON) f = &k;
+        if (!f) usage("--format: unknown format \"" + name + "\" (plot3d, plot3d3d, plot3d-ascii, cgns, su2, openfoam, vts, "
+                      "svg, gmv, matlab)");
+        if (!f->available) throw Failure(EXIT_UNSUPPORTED, "airfoil: --format " + name + " is not in this build");
+        out.push_back({name, f->extension, f->id});
     }
     if (out.empty()) usage("--format needs at least one format");
     return out;
@@ -227,7 +228,7 @@ int run_airfoil(int argc, char **argv) {
             return EXIT_OK;
         }
     const Args a = parse(argc, argv);
-    const std::vector<const Format *> outputs = formats(a.formats);
+    const std::vector<Output> outputs = outputs_of(a.formats);
     double h = a.first;
     if (h == 0 && eg2d_first_cell_height(a.yplus, a.reynolds, 1.0, &h) != EG2D_OK)
         throw Failure(EXIT_GEOMETRY, std::string("airfoil: ") + eg2d_last_error(nullptr));
@@ -314,9 +315,10 @@ int run_airfoil(int argc, char **argv) {
             check(lg, eg2d_set_parameter(lg, EG2D_PARAM_SPAN, span), "span");
         }
         const std::string base = a.out_dir + "/" + name + "-" + std::to_string(ci) + "x" + std::to_string(cj);
-        for (const Format *f : outputs) check(lg, eg2d_write(lg, (base + f->extension).c_str(), f->id), base + f->extension);
-        check(lg, eg2d_write(lg, (base + ".report.txt").c_str(), EG2D_FORMAT_REPORT), base + ".report.txt");
-        check(lg, eg2d_write(lg, (base + ".report.json").c_str(), EG2D_FORMAT_REPORT_JSON), base + ".report.json");
+        for (const Output &o : outputs) check(lg, eg2d_write(lg, (base + o.extension).c_str(), o.id), base + o.extension);
+        for (const Feature &f : formats())  // the reports, always
+            if (f.id == EG2D_FORMAT_REPORT || f.id == EG2D_FORMAT_REPORT_JSON)
+                check(lg, eg2d_write(lg, (base + f.extension).c_str(), f.id), base + f.extension);
         if (!a.quiet) {
             std::printf("level %d: %dx%d -> %s.*\n", level, ci, cj, base.c_str());
             if (level == 0) {
