@@ -6,6 +6,7 @@
 
 #include "base/error.hpp"
 #include "geometry/distribution.hpp"
+#include "grid/march_schedule.hpp"
 
 namespace eg2d {
 
@@ -47,19 +48,6 @@ double leading_edge(const ArcLength &c, P te) {
         else a = m1;
     }
     return 0.5 * (a + b);
-}
-
-// The ratio r of n geometric cells from `first` that add up to `length`.
-double geometric_ratio(double first, double length, int n) {
-    if (first * n >= length) return 1.0;
-    double lo = 1.0, hi = 2.0;
-    auto span = [&](double r) { return first * (std::pow(r, n) - 1.0) / (r - 1.0); };
-    while (span(hi) < length) hi *= 2.0;
-    for (int it = 0; it < 200; ++it) {
-        const double r = 0.5 * (lo + hi);
-        (span(r) < length ? lo : hi) = r;
-    }
-    return 0.5 * (lo + hi);
 }
 
 // n points of the section between normalized arc lengths s0 and s1 by
@@ -144,7 +132,7 @@ void airfoil_boundary(const ArcLength &c, const AirfoilSpec &spec, int ni, int n
     const P start = frame(1.0, 0.0);  // where the cut starts: the trailing edge (a base's midpoint)
     if (cgrid) {
         // The cut along the chord line, its first cell the trailing edge's spacing.
-        const double r = geometric_ratio(te_ds, spec.farfield, wake);
+        const double r = covering_ratio(wake, te_ds, spec.farfield);
         std::vector<double> u(static_cast<std::size_t>(wake));  // cut node k (0 = outflow) at 1 + u[k]
         double cell = te_ds, at = 0.0;
         for (int k = wake - 1; k >= 0; --k, cell *= r) u[static_cast<std::size_t>(k)] = (at += cell);

@@ -8,6 +8,7 @@
 #include "base/polyline.hpp"
 #include "grid/hybrid_cgrid.hpp"
 #include "grid/hyperbolic.hpp"
+#include "grid/march_schedule.hpp"
 
 namespace eg2d {
 
@@ -99,14 +100,7 @@ void respace_layer(Grid &m, int rows, const std::vector<double> &first) {
         const std::vector<Vec2> column = grid_column(m, i, rows);
         const double total = arc_lengths(column).back();
         const double h1 = std::min(first[static_cast<std::size_t>(i)], total / rows);
-        auto span = [&](double r) { return r - 1.0 < 1e-12 ? h1 * rows : h1 * (std::pow(r, rows) - 1.0) / (r - 1.0); };
-        double lo = 1.0, hi = 2.0;  // h1 (r^rows - 1)/(r - 1) = total
-        while (span(hi) < total) hi *= 2.0;
-        for (int it = 0; it < 200; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            (span(mid) < total ? lo : hi) = mid;
-        }
-        const double r = 0.5 * (lo + hi);
+        const double r = covering_ratio(rows, h1, total);
         std::vector<double> want(static_cast<std::size_t>(rows + 1), 0.0);
         double cell = h1;
         for (int j = 1; j <= rows; ++j, cell *= r) want[static_cast<std::size_t>(j)] = want[static_cast<std::size_t>(j - 1)] + cell;

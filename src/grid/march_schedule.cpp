@@ -14,6 +14,17 @@ double covered(int n, double h1, double r) {
 }
 }  // namespace
 
+double covering_ratio(int n, double first, double distance) {
+    if (first * n >= distance) return 1.0;
+    double lo = 1.0, hi = 2.0;
+    while (covered(n, first, hi) < distance) hi *= 2.0;
+    for (int it = 0; it < 200; ++it) {
+        const double r = 0.5 * (lo + hi);
+        (covered(n, first, r) < distance ? lo : hi) = r;
+    }
+    return 0.5 * (lo + hi);
+}
+
 std::vector<double> march_schedule(int layers, double distance, double first_height, double growth) {
     double h1 = first_height, r = 1.0;
     if (h1 == 0.0) {

@@ -12,4 +12,8 @@ namespace eg2d {
 // 1/G <= r <= G.
 std::vector<double> march_schedule(int layers, double distance, double first_height, double growth);
 
+// The ratio r >= 1 of n geometric cells from `first` that add up to
+// `distance` (1 when n cells of `first` already reach it).
+double covering_ratio(int n, double first, double distance);
+
 }  // namespace eg2d
