@@ -127,8 +127,36 @@ int domain_set_airfoil_o(eg2d_grid *g, const char *digits, double radius) {
     return status;
 }
 
+/* A C-grid's far field and outflow sides (x holds JMIN's x on entry, ni +
+ * nj values of room): JMAX the lines y = -radius, radius above the cut at its
+ * nodes' x and the half circle of that radius about the trailing edge (1, 0)
+ * between, at the fractions f of its arc (NULL: uniform); IMIN and IMAX the
+ * outflow lines x = 1 + radius, uniform. */
+static int c_grid_far_sides(eg2d_grid *g, int ni, int nj, int wake, double radius, const double *f, double *x,
+                            double *y) {
+    const int na = ni - 2 * wake;
+    int i, j, status;
+    for (i = 0; i < ni; ++i) {
+        if (i <= wake || i >= ni - 1 - wake) {
+            y[i] = i <= wake ? -radius : radius;
+        } else {
+            const double a = -EG2D_TEST_PI / 2 - EG2D_TEST_PI * (f ? f[i - wake] : (double)(i - wake) / (na - 1));
+            x[i] = 1 + radius * cos(a);
+            y[i] = radius * sin(a);
+        }
+    }
+    if ((status = eg2d_set_side(g, EG2D_SIDE_JMAX, x, y))) return status;
+    for (j = 0; j < nj; ++j) {
+        x[j] = 1 + radius;
+        y[j] = -radius * (double)j / (nj - 1);
+    }
+    if ((status = eg2d_set_side(g, EG2D_SIDE_IMIN, x, y))) return status;
+    for (j = 0; j < nj; ++j) y[j] = -y[j];
+    return eg2d_set_side(g, EG2D_SIDE_IMAX, x, y);
+}
+
 int domain_set_airfoil_c(eg2d_grid *g, const char *digits, int wake, double radius) {
-    int ni, nj, na, i, j, status;
+    int ni, nj, na, i, status;
     double *x, *y;
     eg2d_curve *foil = NULL;
     if ((status = eg2d_get_size(g, &ni, &nj))) return status;
@@ -150,23 +178,7 @@ int domain_set_airfoil_c(eg2d_grid *g, const char *digits, int wake, double radi
         y[i] = y[ni - 1 - i] = 0;
     }
     if (!status) status = eg2d_set_side(g, EG2D_SIDE_JMIN, x, y);
-    for (i = 0; i < ni; ++i) { /* the far field: the same x on the wake, a half circle about the TE between */
-        if (i <= wake || i >= ni - 1 - wake) {
-            y[i] = i <= wake ? -radius : radius;
-        } else {
-            const double a = -EG2D_TEST_PI / 2 - EG2D_TEST_PI * (double)(i - wake) / (na - 1);
-            x[i] = 1 + radius * cos(a);
-            y[i] = radius * sin(a);
-        }
-    }
-    if (!status) status = eg2d_set_side(g, EG2D_SIDE_JMAX, x, y);
-    for (j = 0; j < nj; ++j) { /* the outflow lines */
-        x[j] = 1 + radius;
-        y[j] = -radius * (double)j / (nj - 1);
-    }
-    if (!status) status = eg2d_set_side(g, EG2D_SIDE_IMIN, x, y);
-    for (j = 0; j < nj; ++j) y[j] = -y[j];
-    if (!status) status = eg2d_set_side(g, EG2D_SIDE_IMAX, x, y);
+    if (!status) status = c_grid_far_sides(g, ni, nj, wake, radius, NULL, x, y);
     free(x);
     free(y);
     return status;
@@ -184,7 +196,7 @@ static double geometric_ratio(double first, double length, int n) {
 }
 
 int domain_set_airfoil_c_graded(eg2d_grid *g, const char *digits, int wake, double radius, double le, double te) {
-    int ni, nj, na, half, i, j, status;
+    int ni, nj, na, half, i, status;
     double *x, *y, *s, *s2, length, s_le = 0.5, lo = 0.0, hi = 1.0;
     eg2d_curve *foil = NULL;
     if ((status = eg2d_get_size(g, &ni, &nj))) return status;
@@ -236,23 +248,7 @@ int domain_set_airfoil_c_graded(eg2d_grid *g, const char *digits, int wake, doub
      * at the TE on to both ends (no jump in spacing where the two meet). */
     if (!status)
         status = eg2d_distribution(EG2D_DIST_VINOKUR, na, te / (EG2D_TEST_PI * radius), te / (EG2D_TEST_PI * radius), s2);
-    for (i = 0; i < ni; ++i) {
-        if (i <= wake || i >= ni - 1 - wake) {
-            y[i] = i <= wake ? -radius : radius;
-        } else {
-            const double a = -EG2D_TEST_PI / 2 - EG2D_TEST_PI * s2[i - wake];
-            x[i] = 1 + radius * cos(a);
-            y[i] = radius * sin(a);
-        }
-    }
-    if (!status) status = eg2d_set_side(g, EG2D_SIDE_JMAX, x, y);
-    for (j = 0; j < nj; ++j) { /* the outflow lines */
-        x[j] = 1 + radius;
-        y[j] = -radius * (double)j / (nj - 1);
-    }
-    if (!status) status = eg2d_set_side(g, EG2D_SIDE_IMIN, x, y);
-    for (j = 0; j < nj; ++j) y[j] = -y[j];
-    if (!status) status = eg2d_set_side(g, EG2D_SIDE_IMAX, x, y);
+    if (!status) status = c_grid_far_sides(g, ni, nj, wake, radius, s2, x, y);
     free(x); free(y); free(s); free(s2);
     return status;
 }
