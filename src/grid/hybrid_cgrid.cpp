@@ -5,24 +5,83 @@
 #include <limits>
 
 #include "base/polyline.hpp"
+#include "grid/march_schedule.hpp"
 
 namespace eg2d {
 
-std::vector<double> cut_first_heights(const Grid &g, double h) {
-    const int ni = g.ni(), wake = g.connectivity().wake();
-    std::vector<double> first(static_cast<std::size_t>(ni), h);
-    if (g.topology() != Topology::C || wake <= 0) return first;
-    const std::vector<Vec2> cut = grid_row(g, 0);
-    auto gap = [&](int a) {
-        return std::hypot(cut[static_cast<std::size_t>(a + 1)].x - cut[static_cast<std::size_t>(a)].x,
-                          cut[static_cast<std::size_t>(a + 1)].y - cut[static_cast<std::size_t>(a)].y);
-    };
-    const double te = gap(wake - 1);
+namespace {
+
+// The cut's first cells stay h up to kRampStart layer thicknesses from the
+// trailing edge, then grow as (ds / ds_0)^kRampPower (ds_0: the cut's
+// spacing there) until the held rows' graded cells would shrink
+// (largest_graded_first), which the far wake reaches. The figures, NACA
+// 0012 C-grids (bench/RESULTS.md): a slower ramp leaves the wake's cells
+// far apart in shape from column to column where they are 1e4-1e6 times
+// wider than high, and OpenFOAM's non-orthogonality (measured between
+// cell centres) reached 84-89 degrees on the every-other-node coarser
+// levels of 385x97 (start 0.25-0.5, power 1-1.5) against 0 faces above
+// 70 with (0.03, 3) and 2 with (0.03, 2); a faster one tilts the held
+// rows across the narrow columns beside the trailing edge (wake skew 89
+// degrees at 769x193 to 500 chords with (0.03, 3) and no straightening,
+// see straightened_column). The first cells growing as (ds / ds_te)^(1/2)
+// all along (before): wake skew up to 51.5 degrees, non-orthogonality
+// 69.6 / 83.6 / 88.0 on 385x97's three levels.
+constexpr double kRampStart = 0.03;
+constexpr double kRampPower = 3.0;
+// Cut columns are straightened over this many layer thicknesses from the
+// trailing edge (1, 4 and 16 gave the same figures within 0.1 degree).
+constexpr double kStraightLength = 4.0;
+
+// Distance of each cut node from the trailing edge along the cut (0 on the body).
+std::vector<double> cut_distances(const Grid &m) {
+    const int ni = m.ni(), wake = m.connectivity().wake();
+    std::vector<double> d(static_cast<std::size_t>(ni), 0.0);
+    if (m.topology() != Topology::C || wake <= 0) return d;
+    const std::vector<double> arc = arc_lengths(grid_row(m, 0));
     for (int i = 0; i < wake; ++i) {
-        const double ratio = te > 0.0 ? gap(i) / te : 1.0;
-        first[static_cast<std::size_t>(i)] = first[static_cast<std::size_t>(ni - 1 - i)] = h * std::sqrt(std::max(1.0, ratio));
+        const std::size_t k = static_cast<std::size_t>(i);
+        d[k] = arc[static_cast<std::size_t>(wake)] - arc[k];
+        d[static_cast<std::size_t>(ni - 1 - i)] = arc[static_cast<std::size_t>(ni - 1 - i)] - arc[static_cast<std::size_t>(ni - 1 - wake)];
+    }
+    return d;
+}
+
+double layer_thickness(const Grid &m, int rows) {
+    return arc_lengths(grid_column(m, m.connectivity().wake(), rows)).back();
+}
+
+}  // namespace
+
+std::vector<double> cut_first_heights(const Grid &m, double h, int rows) {
+    const int ni = m.ni(), wake = m.connectivity().wake();
+    std::vector<double> first(static_cast<std::size_t>(ni), h);
+    if (m.topology() != Topology::C || wake <= 0) return first;
+    const std::vector<double> along = cut_distances(m);
+    const double start = kRampStart * layer_thickness(m, rows);
+    const std::vector<Vec2> cut = grid_row(m, 0);
+    double base = 0.0;  // the cut's spacing where the ramp starts
+    for (int i = wake - 1; i >= 0; --i) {
+        const std::size_t k = static_cast<std::size_t>(i);
+        const double ds = std::hypot(cut[k + 1].x - cut[k].x, cut[k + 1].y - cut[k].y);
+        if (base == 0.0 && along[k] >= start) base = ds;
+        first[k] = first[static_cast<std::size_t>(ni - 1 - i)] =
+            base > 0.0 ? h * std::pow(std::max(1.0, ds / base), kRampPower) : h;
     }
     return first;
+}
+
+std::vector<Vec2> straightened_column(const Grid &m, int i, int rows) {
+    std::vector<Vec2> column = grid_column(m, i, rows);
+    const double along = cut_distances(m)[static_cast<std::size_t>(i)];
+    if (along <= 0.0) return column;
+    const std::vector<double> arc = arc_lengths(column);
+    const double w = std::min(1.0, along / (kStraightLength * layer_thickness(m, rows)));
+    const Vec2 a = column.front(), b = column.back();
+    for (std::size_t k = 1; k + 1 < column.size(); ++k) {
+        const double t = arc[k] / arc.back();
+        column[k] = {(1 - w) * column[k].x + w * (a.x + t * (b.x - a.x)), (1 - w) * column[k].y + w * (a.y + t * (b.y - a.y))};
+    }
+    return column;
 }
 
 void place_outflow_side(Grid &g, const Grid &m, int i, int rows) {

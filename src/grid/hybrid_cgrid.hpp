@@ -6,17 +6,29 @@
 #include <vector>
 
 #include "base/grid.hpp"
+#include "base/polyline.hpp"  // Vec2
 
 namespace eg2d {
 
-// First-cell heights along JMIN (ni values): h on the body; on the cut,
-// h (ds / ds_te)^(1/2), ds the cut's spacing at the node and ds_te its
-// spacing at the trailing edge, so the cut's normal spacing grows
-// downstream. The square root: with ds / ds_te itself (the cells keeping
-// the trailing edge's aspect ratio) the cells between the trailing edge's
-// column and the first cut columns reached 54-61 degrees of skew on NACA
-// 0012 385x97 to 500 chords and 769x193; with the root 36-43.
-std::vector<double> cut_first_heights(const Grid &g, double h);
+// First-cell heights along JMIN of the march m (ni values): h on the body;
+// on the cut, h up to a small distance from the trailing edge (a few
+// hundredths of the thickness of the layer of `rows` rows there), then
+// growing as the cube of the cut's spacing over its spacing at that
+// distance. The held rows' cells (respace_layer) keep them only while they
+// need not shrink, so in the far wake the heights are the largest that do
+// not, and the columns there have one shape.
+std::vector<double> cut_first_heights(const Grid &m, double h, int rows);
+
+// Column i of m, rows 0..rows, as the line its held rows are put back on:
+// on the cut, moved towards the straight segment between its ends, fully
+// a few layer thicknesses from the trailing edge. The march's cut columns
+// bend near the outflow sides, which the march keeps straight, and rows
+// put on bent columns beside straight ones differ in shape from column to
+// column (OpenFOAM's non-orthogonality 86-90 degrees at the outflow side
+// of NACA 0012 385x97); straightened all along, the cut column beside the
+// trailing edge nearly crossed the trailing edge's (wake skew 89 degrees
+// at 385x97 to 500 chords).
+std::vector<Vec2> straightened_column(const Grid &m, int i, int rows);
 
 // Side i (0 or ni-1) of g keeps its line; its nodes move along it: rows up
 // to `rows` at the distances of the march m's column i, the rows above at

@@ -19,6 +19,16 @@ namespace {
 // (385x97, 385x129 to 100 chords, 250x100 to 500) marched at 1; C-grids
 // 385x97 to 100 chords at 2, to 500 chords at 4 (bench/RESULTS.md).
 constexpr double kRetrySmoothing[] = {1.0, 2.0, 4.0, 8.0};
+// A C-grid's march starts at this dissipation. Its cut clusters the lines
+// at the trailing edge, and they fan out over the march's outer layers:
+// from 0.5 every NACA 0012 C-grid of bench/RESULTS.md's table (385x97,
+// 513x129 to 100 chords, 385x97 and 769x193 to 500, first cells 1e-6 to
+// 2e-5) folded above the held rows and was marched again, at 2 or 4; those
+// marched at 2 ended with layers swung sideways (a last layer 24 degrees
+// off its line), whose controls and far-field nodes left the wake's cells
+// skewed by up to 63 degrees. From 4 none folds, and the wake's largest
+// skew is 10-30 degrees on all of them; from 3, 10-39; from 6, 15-41.
+constexpr double kCGridSmoothing = 4.0;
 // The frozen controls are kept within this: central differences are
 // monotone while |Phi|, |Psi| < 2 (NUMERICS.md), and the march's outer
 // layers, where a C-grid's clustered trailing-edge columns fan out, invert
@@ -86,24 +96,47 @@ void start_above(Grid &g, const Grid &m, int rows, int first, int last) {
     }
 }
 
-// Rows 1..rows of each column of m put back along the column at geometric
-// distances from its first height (first[i], at most the layer's thickness
-// over rows) that end at its row `rows`. The march's area smoothing and its
-// step where the front turns leave first cells a few per cent off and the
-// growth uneven there (a C-grid's trailing edge, a concave corner of the
-// front: first cell 3% short, growth 1.24 at NACA 0012 385x97), and the
-// control's contract is the height. The columns keep their lines (normal
-// to the wall) and the layer's top row stays, so the rows above are as
-// marched.
+// Rows 1..rows of each column of m put back along the column
+// (straightened_column) at distances from its first height (first[i]) to
+// the march's own last cell below row `rows`, the log of the cells a
+// quadratic (graded_cells), and ending at row `rows`. The march's area
+// smoothing and its step where the front turns leave first cells a few per
+// cent off and the growth uneven there (a C-grid's trailing edge, a
+// concave corner of the front: first cell 3% short, growth 1.24 at NACA
+// 0012 385x97), and the control's contract is the height. Keeping the
+// march's last cell keeps the spacing continuous into the rows above: a
+// geometric series from a cut's larger first cells made the cells above
+// the layer 2.4-11 times its last. The first height is at most the
+// largest whose cells do not shrink; the cut columns beyond the first
+// that reaches it take its cells' shape, scaled to their length, so that
+// neighbouring far-wake columns have the same shape (see
+// cut_first_heights).
 void respace_layer(Grid &m, int rows, const std::vector<double> &first) {
-    for (int i = 0; i < m.ni(); ++i) {
-        const std::vector<Vec2> column = grid_column(m, i, rows);
+    const int ni = m.ni(), wake = m.topology() == Topology::C ? m.connectivity().wake() : 0;
+    // The body, then each side of the cut outward from the trailing edge.
+    std::vector<int> order;
+    for (int i = wake; i <= ni - 1 - wake; ++i) order.push_back(i);
+    for (int i = wake - 1; i >= 0; --i) order.push_back(i);
+    for (int i = ni - wake; i < ni; ++i) order.push_back(i);
+    std::vector<double> shape;  // cells over length of the side's first column at the largest first cell
+    for (int i : order) {
+        if (i == wake - 1 || i == ni - wake) shape.clear();
+        const std::vector<Vec2> column = straightened_column(m, i, rows);
+        const std::vector<double> marched = arc_lengths(grid_column(m, i, rows));
         const double total = arc_lengths(column).back();
-        const double h1 = std::min(first[static_cast<std::size_t>(i)], total / rows);
-        const double r = covering_ratio(rows, h1, total);
+        const double last = (marched.back() - marched[static_cast<std::size_t>(rows - 1)]) * total / marched.back();
+        const double h1 = first[static_cast<std::size_t>(i)], most = largest_graded_first(rows, last, total);
+        std::vector<double> cells;
+        if (!shape.empty()) {
+            for (double c : shape) cells.push_back(c * total);
+        } else {
+            cells = graded_cells(rows, std::min(h1, most), last, total);
+            if (h1 >= most && (i < wake || i > ni - 1 - wake))
+                for (double c : cells) shape.push_back(c / total);
+        }
         std::vector<double> want(static_cast<std::size_t>(rows + 1), 0.0);
-        double cell = h1;
-        for (int j = 1; j <= rows; ++j, cell *= r) want[static_cast<std::size_t>(j)] = want[static_cast<std::size_t>(j - 1)] + cell;
+        for (int j = 1; j <= rows; ++j)
+            want[static_cast<std::size_t>(j)] = want[static_cast<std::size_t>(j - 1)] + cells[static_cast<std::size_t>(j - 1)];
         for (double &d : want) d *= total / want.back();  // the bisection's last digits
         const std::vector<Vec2> p = points_along(column, want);
         for (int j = 1; j < rows; ++j) set_node(m, i, j, p[static_cast<std::size_t>(j)]);
@@ -112,10 +145,17 @@ void respace_layer(Grid &m, int rows, const std::vector<double> &first) {
 
 // The march, retried with more dissipation while it folds (kRetrySmoothing);
 // each retry is noted.
-void march_with_retries(const Grid &g, Grid &m, Settings s, std::string &note) {
-    std::vector<double> tries{s.march_smoothing};
+void march_with_retries(const Grid &g, Grid &m, Settings s, double least, std::string &note) {
+    std::vector<double> tries{std::max(s.march_smoothing, least)};
     for (double r : kRetrySmoothing)
         if (r > tries.back()) tries.push_back(r);
+    // Then down to the user's, for a C-grid started at `least`: a coarse
+    // leading edge folded its third layer at 4 and 8 and marched at 2
+    // (tests/fortran/test_march.f90's C-grid, NACA 0012 385x97 with both
+    // ends of the section at 2e-3 chord).
+    for (auto r = std::rbegin(kRetrySmoothing); r != std::rend(kRetrySmoothing); ++r)
+        if (*r < tries.front() && *r > s.march_smoothing) tries.push_back(*r);
+    if (s.march_smoothing < tries.front()) tries.push_back(s.march_smoothing);
     for (std::size_t k = 0;; ++k) {
         s.march_smoothing = tries[k];
         m = g;
@@ -142,13 +182,17 @@ HybridLayer shape_hybrid_layer(Grid &g, const Settings &settings, double h, bool
     Grid m = g;
     m.hold_rows(0);  // the topology's own connectivity: the C-grid's cut index
     const int wake = cgrid ? m.connectivity().wake() : 0;
-    const std::vector<double> first = cut_first_heights(m, h);
     Settings s = settings;
     s.march_first_height = h;
     s.march_distance = outer_distance(g);
     s.march_growth = 3.0;  // the schedule's ratio is the one that reaches the distance in nj-1 layers
-    march_with_retries(g, m, s, out.shape.note);  // throws before g changes
+    if (cgrid && s.march_smoothing < kCGridSmoothing)
+        out.shape.note = format("wall layer (hybrid): the C-grid marched first with EG2D_PARAM_MARCH_SMOOTHING %g "
+                                "(%g asked: C-grids start at %g, as the cut's lines fan out from the trailing edge)",
+                                kCGridSmoothing, s.march_smoothing, kCGridSmoothing);
+    march_with_retries(g, m, s, cgrid ? kCGridSmoothing : 0.0, out.shape.note);  // throws before g changes
     const int rows = hybrid_layer_rows(nj);
+    const std::vector<double> first = cut_first_heights(m, h, rows);
     respace_layer(m, rows, first);
     g.hold_rows(0);
     // The columns the solve moves: an O-grid's all (ni-1 is 0), a C-grid's

@@ -16,4 +16,14 @@ std::vector<double> march_schedule(int layers, double distance, double first_hei
 // `distance` (1 when n cells of `first` already reach it).
 double covering_ratio(int n, double first, double distance);
 
+// n >= 2 cells c_k = exp(ln first + k (ln last - ln first) / (n-1) + q k (k-(n-1))),
+// k = 0..n-1, from `first` to `last`, with q found so that they add up to
+// `distance`: the log of the cell a quadratic, so the ratio of consecutive
+// cells changes linearly along the line (a geometric series when q = 0).
+std::vector<double> graded_cells(int n, double first, double last, double distance);
+
+// The largest first cell whose graded_cells do not shrink: their first
+// ratio is 1 (cells first exp(q k^2)).
+double largest_graded_first(int n, double last, double distance);
+
 }  // namespace eg2d

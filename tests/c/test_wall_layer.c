@@ -50,6 +50,21 @@ static double height(const double *x, const double *y, int ni, int i, int j) {
     return hypot(x[i + ni * (j + 1)] - x[i + ni * j], y[i + ni * (j + 1)] - y[i + ni * j]);
 }
 
+/* The least and largest ratio of consecutive cell heights over the first
+ * 30 cells of columns first..last (C-grids: the body). */
+static void growth_range(const double *x, const double *y, int ni, int first, int last, double *least,
+                         double *worst) {
+    int i, j;
+    *least = 10;
+    *worst = 0;
+    for (i = first; i <= last; ++i)
+        for (j = 1; j < 30; ++j) {
+            const double q = height(x, y, ni, i, j) / height(x, y, ni, i, j - 1);
+            *worst = fmax(*worst, q);
+            *least = fmin(*least, q);
+        }
+}
+
 static void solve_c_grid(double h, int pass_limit) {
     const int ni = 129, nj = 33, wake = 32;
     const double growth = 1.15;
@@ -289,21 +304,20 @@ static void test_hybrid_c_grid(void **state) {
     assert_true(folded == 0);
     assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
     measure_wall(x, y, ni, nj, EG2D_SIDE_JMIN, 0, wake, ni - wake, &dev, &hmin, &hmax);
-    for (i = wake; i <= ni - 1 - wake; ++i)
-        for (j = 1; j < 30; ++j) {
-            const double q = height(x, y, ni, i, j) / height(x, y, ni, i, j - 1);
-            worst = fmax(worst, q);
-            least = fmin(least, q);
-        }
+    growth_range(x, y, ni, wake, ni - 1 - wake, &least, &worst);
     assert_int_equal(eg2d_get_cell_quality(g, EG2D_QUALITY_SKEWNESS, skew), EG2D_OK);
     for (j = 0; j < nj - 1; ++j)
         for (i = 0; i < ni - 1; ++i)
             if (i < wake || i >= ni - 1 - wake) wake_skew = fmax(wake_skew, skew[i + (ni - 1) * j]);
-    for (i = wake - 1; i >= 1; --i) { /* the lower cut from the trailing edge to the outflow */
+    /* The lower cut from the trailing edge to the outflow: the first cells
+       grow, then stay level in the far wake, where they follow the layer's
+       thickness (within 1%). */
+    for (i = wake - 1; i >= 1; --i) {
         const double c = height(x, y, ni, i, 0);
-        assert_true(c >= cut_prev * (1 - 1e-9));
+        assert_true(c >= cut_prev * (1 - 1e-2));
         cut_prev = c;
     }
+    assert_true(cut_prev > 10 * h);
     print_message("hybrid NACA 0012 C-grid %dx%d, y+ 1 at Re 6e6 (%.3g), 100 chords: %d cycles, first cell %.6g..%.6g, "
                   "%.3f deg, growth %.4f..%.4f over 30 cells, wake skew %.1f deg, cut's first cell %.3g at the "
                   "outflow\n", ni, nj, h, it, hmin, hmax, dev, least, worst, wake_skew, cut_prev);
@@ -319,6 +333,71 @@ static void test_hybrid_c_grid(void **state) {
     free(skew);
 }
 
+/* The C-grid that eg2d_set_airfoil builds (NACA 0012, 385x97, its default
+ * cut), across first cells from 1e-6 to 2e-5 chord and far fields of 100
+ * and 500 chords: the wake's largest skew depended on the first cell (21-62
+ * degrees) before the C-grid's march started at more dissipation and the
+ * cut's columns were re-spaced to one shape (bench/RESULTS.md). Each: the
+ * hybrid layer, a few cycles, no folds, first cells within 2% over the
+ * body, growth 1..1.2 over 30 cells (1.25 to 500 chords), the wake's cells
+ * within 45 degrees, and the cells above the held layer on the cut at most
+ * the body's growth times its last (the spacing does not jump where the
+ * solve takes over: it did by 2.4-11 before). */
+static void test_hybrid_c_grid_first_cells(void **state) {
+    const int ni = 385, nj = 97, rows = 64;
+    const double cells[] = {1e-6, 4.46e-6, 1e-5, 2e-5}, radii[] = {100, 500};
+    double *x = alloc(ni * nj), *y = alloc(ni * nj), *skew = alloc((ni - 1) * (nj - 1));
+    eg2d_curve *foil;
+    int r, c, i, j;
+    (void)state;
+    assert_int_equal(eg2d_curve_naca4("0012", EG2D_NACA_CLOSED_TE, &foil), EG2D_OK);
+    for (r = 0; r < 2; ++r)
+        for (c = 0; c < 4; ++c) {
+            const double h = cells[c];
+            double folded, dev, hmin, hmax, worst, least, wake_skew = 0, jump = 0;
+            int it, wake;
+            eg2d_grid *g;
+            assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+            assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_FARFIELD, radii[r]), EG2D_OK);
+            assert_int_equal(eg2d_set_airfoil(g, foil, EG2D_TOPO_C), EG2D_OK);
+            assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h), EG2D_OK);
+            assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), EG2D_OK);
+            assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
+            if (eg2d_solve(g) != EG2D_OK) fail_msg("%g chords, %g: %s", radii[r], h, eg2d_last_error(g));
+            assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
+            assert_int_equal(eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &folded), EG2D_OK);
+            assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+            assert_int_equal(eg2d_get_cell_quality(g, EG2D_QUALITY_SKEWNESS, skew), EG2D_OK);
+            for (wake = 0; x[wake + 1] == x[ni - 2 - wake] && y[wake + 1] == y[ni - 2 - wake]; ++wake) {
+            } /* the trailing edge: the last node the cut's two sides share */
+            assert_true(wake > 0 && wake < ni / 2);
+            measure_wall(x, y, ni, nj, EG2D_SIDE_JMIN, 0, wake, ni - wake, &dev, &hmin, &hmax);
+            growth_range(x, y, ni, wake, ni - 1 - wake, &least, &worst);
+            for (j = 0; j < nj - 1; ++j)
+                for (i = 0; i < ni - 1; ++i)
+                    if (i < wake || i >= ni - 1 - wake) wake_skew = fmax(wake_skew, skew[i + (ni - 1) * j]);
+            for (i = 0; i < wake; ++i)
+                jump = fmax(jump, height(x, y, ni, i, rows) / height(x, y, ni, i, rows - 1));
+            print_message("eg2d_set_airfoil C-grid %dx%d to %g chords, first cell %g: %d cycles, first cell "
+                          "%.4g..%.4g, %.3f deg, growth %.4f..%.4f, wake skew %.1f deg, cut's spacing above the "
+                          "layer %.3f x its last\n", ni, nj, radii[r], h, it, hmin, hmax, dev, least, worst, wake_skew,
+                          jump);
+            assert_true(folded == 0);
+            assert_true(it <= 10);
+            assert_true(fabs(hmin / h - 1) < 0.02 && fabs(hmax / h - 1) < 0.02);
+            assert_true(dev <= 0.5);
+            /* 96 rows from 1e-6 to 500 chords grow by 1.21 at least */
+            assert_true(least >= 1.0 && worst <= (radii[r] > 100 ? 1.25 : 1.2));
+            assert_true(wake_skew <= 45.0);
+            assert_true(jump <= 1.05 * worst);
+            eg2d_destroy(g);
+        }
+    eg2d_curve_destroy(foil);
+    free(x);
+    free(y);
+    free(skew);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_c_grid_layer),
@@ -328,6 +407,7 @@ int main(void) {
         cmocka_unit_test(test_hybrid_retries_then_falls_back_and_says_so),
         cmocka_unit_test(test_default_is_automatic),
         cmocka_unit_test(test_hybrid_c_grid),
+        cmocka_unit_test(test_hybrid_c_grid_first_cells),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1024,19 +1024,20 @@ class Airfoil(unittest.TestCase):
                     self.assertIn('checking 1to1 connectivity "wake_lower"', out)
                     self.assertIn('checking 1to1 connectivity "wake_upper"', out)
             checkmesh = shutil_which("checkMesh")
-            if checkmesh:
+            if checkmesh:  # every level: only the aspect ratio a y+ 1 layer must have fails
                 env = dict(os.environ)
                 env.setdefault("WM_PROJECT_DIR", "/usr/share/openfoam")
-                p = subprocess.run([checkmesh, "-case", os.path.join(d, "naca0012-385x97_foam")],
-                                   capture_output=True, text=True, env=env)
-                out = p.stdout
-                self.assertIn("Failed 1 mesh checks.", out)  # the aspect ratio a y+ 1 layer must have
-                self.assertIn("High aspect ratio cells found", out)
-                nonorth = float(re.search(r"Mesh non-orthogonality Max: ([0-9.eE+-]+)", out).group(1))
-                skew = float(re.search(r"Max skewness = ([0-9.eE+-]+)", out).group(1))
-                self.assertLessEqual(nonorth, 70.0)
-                self.assertLessEqual(skew, 4.0)
-                self.assertNotIn("negative", out.lower().replace("negative volumes: 0", ""))
+                for size in ("385x97", "193x49", "97x25"):
+                    p = subprocess.run([checkmesh, "-case", os.path.join(d, f"naca0012-{size}_foam")],
+                                       capture_output=True, text=True, env=env)
+                    out = p.stdout
+                    self.assertIn("Failed 1 mesh checks.", out, size)
+                    self.assertIn("High aspect ratio cells found", out, size)
+                    nonorth = float(re.search(r"Mesh non-orthogonality Max: ([0-9.eE+-]+)", out).group(1))
+                    skew = float(re.search(r"Max skewness = ([0-9.eE+-]+)", out).group(1))
+                    self.assertLessEqual(nonorth, 70.0, size)
+                    self.assertLessEqual(skew, 4.0, size)
+                    self.assertNotIn("negative", out.lower().replace("negative volumes: 0", ""), size)
 
     def test_o_grid_and_open_trailing_edges(self):
         with tempfile.TemporaryDirectory() as d:

@@ -143,7 +143,10 @@ contains
     call check(maxval(abs(hgt(wake + 1:ci - wake, 1) / wall - 1)) < 1d-3, 'C-grid: first cell on the body')
     call check(maxval(hgt(wake + 1:ci - wake, 2:30) / hgt(wake + 1:ci - wake, 1:29)) <= 1.2d0, 'C-grid: growth <= 1.2')
     call check(minval(hgt(wake + 1:ci - wake, 2:30) / hgt(wake + 1:ci - wake, 1:29)) >= 1d0, 'C-grid: growth >= 1')
-    call check(all(hgt(2:wake - 1, 1) >= hgt(3:wake, 1)) .and. hgt(2, 1) > 10 * wall, 'C-grid: the cut grows downstream')
+    ! the cut's first cells grow downstream, then stay level in the far wake
+    ! (within 1%, the layer's thickness there)
+    call check(all(hgt(2:wake - 1, 1) >= hgt(3:wake, 1) * (1 - 1d-2)) .and. hgt(2, 1) > 10 * wall, &
+               'C-grid: the cut grows downstream')
     call c%get_quality(EG2D_QUALITY_FOLDED_CELLS, folded, st)
     call check(folded == 0, 'C-grid: no folded cells')
     call c%destroy()

@@ -136,4 +136,5 @@ def test_hybrid_c_grid_by_default():
     skew = g.get_cell_quality(eg2d.QUALITY_SKEWNESS)
     assert max(skew[:wake, :].max(), skew[ni - 1 - wake:, :].max()) <= 45.0
     cut = np.hypot(x[1:wake, 1] - x[1:wake, 0], y[1:wake, 1] - y[1:wake, 0])  # outflow -> trailing edge
-    assert np.all(np.diff(cut) <= 1e-12) and cut[0] > 10 * h
+    # growing downstream, then level in the far wake (within 1%: the layer's thickness there)
+    assert np.all(cut[:-1] >= cut[1:] * (1 - 1e-2)) and cut[0] > 10 * h
