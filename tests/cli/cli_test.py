@@ -4,6 +4,7 @@ progress and Ctrl-C. Run by ctest with /usr/bin/python3:
     cli_test.py TOOL EXAMPLES_DIR [unittest arguments, e.g. ErrorMessages]
     cli_test.py TOOL EXAMPLES_DIR --example NAME SIZE   (one example at a small size)
 """
+import math
 import os
 import re
 import resource
@@ -414,6 +415,24 @@ class RunFiles(unittest.TestCase):
             self.assertEqual([float(r[3]) for r in rows], list(xy[13 * 9:]))
             self.assertEqual(sorted(os.listdir(os.path.join(d, "out"))),
                              ["case.controls.csv", "case.history.csv", "case.history.svg", "case.xyz"])
+
+    def test_png(self):
+        # the whole grid as a picture, 800 pixels on its longer side (the domain is
+        # 1 x 1.075: taller), drawn by cairo; a build without it says so
+        with tempfile.TemporaryDirectory() as d:
+            code, out, err = self.run_case(d, self.CASE.replace('"controls"]', '"controls", "png"]'))
+            if features()["formats"]["png"]:
+                self.assertEqual(code, 0, out + err)
+                size, pixels = png_size(self, os.path.join(d, "out", "case.png"))
+                self.assertEqual(size[1], 800)
+                self.assertLess(abs(size[0] - 800 / 1.075), 40)
+                if pixels:  # the walls' red (a single block's sides by default) and the white between lines
+                    colours = set(pixels.getdata())
+                    self.assertIn((0xc0, 0x10, 0x10), colours)
+                    self.assertIn((255, 255, 255), colours)
+            else:
+                self.assertEqual(code, 9, out + err)
+                self.assertIn('"png" is not available in this build', err)
 
     def test_failed_run_writes_no_history(self):
         with tempfile.TemporaryDirectory() as d:
@@ -939,17 +958,44 @@ class Patches(unittest.TestCase):
 
 
 
-def naca0012_selig(path, n=81):
-    """The standard NACA 0012 (open trailing edge, 0.00252 chords) as a Selig file."""
-    import math
+def naca0012_selig(path, n=81, scale=1, at=(0, 0)):
+    """The standard NACA 0012 (open trailing edge, 0.00252 chords) as a Selig file,
+    of chord SCALE with its leading edge AT."""
     xs = [0.5 * (1 - math.cos(math.pi * k / (n - 1))) for k in range(n)]
     t = lambda x: 0.6 * (0.2969 * math.sqrt(x) - 0.1260 * x - 0.3516 * x**2 + 0.2843 * x**3 - 0.1015 * x**4)
     with open(path, "w") as f:
         f.write("NACA 0012 open\n")
-        for x in reversed(xs):
-            f.write(f"{x:.8f} {t(x):.8f}\n")
-        for x in xs[1:]:
-            f.write(f"{x:.8f} {-t(x):.8f}\n")
+        for x, y in [(x, t(x)) for x in reversed(xs)] + [(x, -t(x)) for x in xs[1:]]:
+            f.write(f"{at[0] + scale * x:.8f} {at[1] + scale * y:.8f}\n")
+
+
+def svg_view(path):
+    """An eg2d airfoil picture: (its window in the plane as xmin, ymin, xmax, ymax,
+    from the viewBox with y negated back; its width and height in pixels;
+    {class: [[(x, y), ...], ...]} its polylines in the plane)."""
+    root = ET.parse(path).getroot()
+    vx, vy, vw, vh = (float(v) for v in root.get("viewBox").split())
+    lines = {}
+    for p in root.iter("{http://www.w3.org/2000/svg}polyline"):
+        pts = [tuple(float(v) for v in xy.split(",")) for xy in p.get("points").split()]
+        lines.setdefault(p.get("class"), []).append([(x, -y) for x, y in pts])
+    return (vx, -(vy + vh), vx + vw, -vy), (int(root.get("width")), int(root.get("height"))), lines
+
+
+def png_size(test, path):
+    """The width and height of a PNG file, read by PIL (Debian's python3-pil), or by
+    file(1) where PIL is missing; the pixels too with PIL (else None)."""
+    try:
+        from PIL import Image
+    except ImportError:
+        out = subprocess.run(["file", path], capture_output=True, text=True).stdout
+        m = re.search(r"PNG image data, (\d+) x (\d+)", out)
+        test.assertTrue(m, out)
+        return (int(m.group(1)), int(m.group(2))), None
+    with Image.open(path) as im:
+        test.assertEqual(im.format, "PNG")
+        im.load()
+        return im.size, im.convert("RGB")
 
 
 def vts_points(path):
@@ -1055,6 +1101,76 @@ class Airfoil(unittest.TestCase):
             self.airfoil(d, selig, "--topology", "c", "--size", "385x97", "--first-cell", "1e-5", "--format", "vts")
             self.assertEqual(self.report(d, "open-385x97")["folded_cells"], 0)  # sharpened by default
 
+    VIEWS = ("domain", "airfoil", "le", "te")
+
+    def check_views(self, d, name, le, te, ni, nj):
+        """The four pictures of grid NAME in D frame what they say, from the section's
+        leading edge LE and trailing edge TE; what lies outside a window is left out."""
+        chord = math.dist(le, te)
+        inside = lambda p, w, margin=0: w[0] - margin <= p[0] <= w[2] + margin and w[1] - margin <= p[1] <= w[3] + margin
+        windows, shown, has_png = {}, {}, features()["formats"]["png"]
+        for view in self.VIEWS:
+            path = os.path.join(d, f"{name}-{view}.svg")
+            window, size, lines = svg_view(path)
+            windows[view] = window
+            points = [p for kind in lines.values() for line in kind for p in line]
+            shown[view] = len(points)
+            # clipped: every point drawn is in the window (to the printed digits)
+            eps = 1e-3 * (window[2] - window[0])
+            self.assertEqual([p for p in points if not inside(p, window, eps)], [], view)
+            self.assertTrue(lines.get("wall"), view)  # the section is in every view
+            self.assertTrue(lines.get("grid"), view)
+            self.assertLess(os.path.getsize(path), 200_000, view)
+            if view != "domain":
+                self.assertEqual(size, (800, 600), view)
+            if has_png:
+                png, pixels = png_size(self, os.path.join(d, f"{name}-{view}.png"))
+                self.assertEqual(png, size, view)  # the size the SVG states
+                if pixels:  # drawn: the wall's colour in the middle half, where the section is
+                    red = [(x, y) for x in range(png[0] // 4, 3 * png[0] // 4) for y in range(png[1] // 4, 3 * png[1] // 4)
+                           if pixels.getpixel((x, y))[0] > 150 > pixels.getpixel((x, y))[1]]
+                    self.assertTrue(red, view)
+        width = lambda w: w[2] - w[0]
+        for p in (le, te):
+            self.assertTrue(inside(p, windows["airfoil"]))
+            self.assertTrue(inside(p, windows["domain"]))
+        self.assertLess(width(windows["airfoil"]), 2 * chord)
+        self.assertGreater(width(windows["domain"]), 100 * chord)
+        for view, p, other in (("le", le, te), ("te", te, le)):
+            w = windows[view]
+            self.assertTrue(inside(p, w), view)
+            self.assertFalse(inside(other, w), view)
+            self.assertLess(width(w), 0.1 * chord, view)
+            self.assertLess(math.dist(p, ((w[0] + w[2]) / 2, (w[1] + w[3]) / 2)), 0.01 * chord, view)
+            # culled: far fewer points than the grid's lines have (2 ni nj)
+            self.assertLess(shown[view], 0.05 * 2 * ni * nj, view)
+        self.assertLess(shown["domain"], 0.25 * 2 * ni * nj)
+
+    def test_views(self):
+        with tempfile.TemporaryDirectory() as d:
+            formats = "svg,png" if features()["formats"]["png"] else "svg"
+            self.airfoil(d, "0012", "--topology", "c", "--size", "385x97", "--yplus", "1", "--reynolds", "6e6",
+                         "--levels", "2", "--format", formats)
+            self.check_views(d, "naca0012-385x97", (0, 0), (1, 0), 385, 97)
+            self.check_views(d, "naca0012-193x49", (0, 0), (1, 0), 193, 49)
+            # a section of chord 2 elsewhere, with a blunt base: framed from the grid alone
+            selig = os.path.join(d, "moved.dat")
+            naca0012_selig(selig, scale=2, at=(3, 1))
+            self.airfoil(d, selig, "--topology", "o", "--size", "257x129", "--first-cell", "1e-5", "--format", formats)
+            self.check_views(d, "moved-257x129", (3, 1), (5, 1), 257, 129)
+
+    def test_docs_pictures_are_current(self):
+        # docs/airfoil.md's pictures are what its command draws now
+        docs = os.path.join(EXAMPLES, os.pardir, "docs", "airfoil")
+        with tempfile.TemporaryDirectory() as d:
+            self.airfoil(d, "0012", "--topology", "c", "--size", "385x97", "--yplus", "1", "--reynolds", "6e6",
+                         "--levels", "3", "--format", "svg")
+            for view in self.VIEWS:
+                name = f"naca0012-385x97-{view}.svg"
+                with open(os.path.join(d, name)) as new, open(os.path.join(docs, name)) as old:
+                    self.assertTrue(new.read() == old.read(), f"docs/airfoil/{name} is not what eg2d draws now: "
+                                    "make it again with docs/airfoil.md's command and --format svg")
+
     def test_command_line(self):
         with tempfile.TemporaryDirectory() as d:
             code, _, err = run("airfoil", "0012", "--size", "250x100", "--first-cell", "1e-5", "--levels", "2", "-o", d)
@@ -1064,9 +1180,14 @@ class Airfoil(unittest.TestCase):
             code, _, err = run("airfoil", "0012", "--size", "97x25", "--yplus", "1", "-o", d)
             self.assertEqual(code, 2)
             self.assertIn("--yplus needs --reynolds, and --reynolds --yplus", err)
-            code, _, err = run("airfoil", "0012", "--size", "97x25", "--first-cell", "1e-5", "--format", "png", "-o", d)
-            self.assertEqual(code, 9)
-            self.assertIn("png is not written by this build", err)
+            code, _, err = run("airfoil", "0012", "--size", "97x25", "--first-cell", "1e-5", "--growth", "10",
+                               "--format", "png", "-o", d)
+            if features()["formats"]["png"]:
+                self.assertEqual(code, 0, err)
+                self.assertTrue(os.path.isfile(os.path.join(d, "naca0012-97x25-le.png")))
+            else:  # a build without cairo names what it lacks
+                self.assertEqual(code, 9)
+                self.assertIn("--format png is not in this build: it needs cairo", err)
             code, out, _ = run("airfoil", "--help")
             self.assertEqual(code, 0)
             self.assertIn("--levels", out)

@@ -15,8 +15,11 @@
 
 #include "failure.hpp"
 #include "features.hpp"
+#include "grid_views.hpp"
 #include "progress.hpp"
 #include "runner.hpp"
+#include "text_output.hpp"
+#include "view_picture.hpp"
 
 namespace eg2dtool {
 
@@ -51,12 +54,15 @@ const char *const airfoil_help =
     "                 above), elliptic (the Sorenson-type wall control) or hyperbolic (the\n"
     "                 march alone; the far field is its own)\n"
     "  --format       a comma list of the formats of case files (plot3d, plot3d-ascii, cgns,\n"
-    "                 su2, openfoam: a case directory, vts, svg, gmv, matlab) and plot3d3d\n"
-    "                 (Plot3D one cell thick, for plot3dToFoam); default plot3d. A report\n"
-    "                 (text and JSON) is always written\n"
+    "                 su2, openfoam: a case directory, vts, gmv, matlab), plot3d3d (Plot3D\n"
+    "                 one cell thick, for plot3dToFoam) and the pictures svg and png (cairo):\n"
+    "                 four views, the domain, the airfoil (1.5 chords), its leading and\n"
+    "                 trailing edge (0.05 chords), 800x600 pixels (the domain 800 on its\n"
+    "                 longer side); default plot3d. A report (text and JSON) is always written\n"
     "  -o DIR         the output directory (default .)\n"
     "Files: DIR/NAME-NIxNJ.EXT per level and format (the extensions of eg2d run: .xyz, .cgns,\n"
-    "  .su2, _foam/, .vts, ...; plot3d3d -3d.xyz), NAME the NACA code or the file's stem.\n"
+    "  .su2, _foam/, .vts, ...; plot3d3d -3d.xyz; the pictures -domain, -airfoil, -le and\n"
+    "  -te .svg or .png), NAME the NACA code or the file's stem.\n"
     "\n"
     "example:\n"
     "  eg2d airfoil 0012 --topology c --size 385x97 --yplus 1 --reynolds 6e6 --levels 3 \\\n"
@@ -73,10 +79,12 @@ struct CurveDeleter {
 };
 
 // An output: a format of the command's table (features.cpp, the names and
-// extensions case files use), with flags; plot3d3d is Plot3D one cell thick.
+// extensions case files use), with flags; plot3d3d is Plot3D one cell thick;
+// svg and png are the command's own pictures, four views each (views).
 struct Output {
     std::string name, extension;
     int id;
+    bool views = false;
 };
 
 struct Args {
@@ -186,8 +194,13 @@ std::vector<Output> outputs_of(const std::string &list) {
     std::stringstream in(list);
     std::string name;
     while (std::getline(in, name, ',')) {
-        if (name == "png")
-            throw Failure(EXIT_UNSUPPORTED, "airfoil: --format png is not written by this build (svg is)");
+        if (name == "png" && !png_available())
+            throw Failure(EXIT_UNSUPPORTED, "airfoil: --format png is not in this build: it needs cairo (Debian's "
+                                            "libcairo2-dev) when eg2d is configured; svg draws the same views");
+        if (name == "svg" || name == "png") {
+            out.push_back({name, "." + name, -1, true});
+            continue;
+        }
         if (name == "plot3d3d") {
             out.push_back({name, "-3d.xyz", EG2D_FORMAT_PLOT3D | EG2D_PLOT3D_EXTRUDED});
             continue;
@@ -196,7 +209,7 @@ std::vector<Output> outputs_of(const std::string &list) {
         for (const Feature &k : formats())
             if (name == k.name && k.tool == 0 && k.id != EG2D_FORMAT_REPORT && k.id != EG2D_FORMAT_REPORT_JSON) f = &k;
         if (!f) usage("--format: unknown format \"" + name + "\" (plot3d, plot3d3d, plot3d-ascii, cgns, su2, openfoam, vts, "
-                      "svg, gmv, matlab)");
+                      "svg, png, gmv, matlab)");
         if (!f->available) throw Failure(EXIT_UNSUPPORTED, "airfoil: --format " + name + " is not in this build");
         out.push_back({name, f->extension, f->id});
     }
@@ -217,6 +230,23 @@ double wall_growth(eg2d_grid *g, int ni, int nj, int first, int last) {
     for (int i = first; i <= last; ++i)
         for (int j = 1; j < 30 && j < nj - 1; ++j) worst = std::max(worst, h(i, j) / h(i, j - 1));
     return worst;
+}
+
+// The pictures (svg, png) of one level: the same four views in each.
+void write_views(const eg2d_grid *g, const std::vector<Output> &outputs, const std::string &base, const std::string &title) {
+    bool any = false;
+    for (const Output &o : outputs) any = any || o.views;
+    if (!any) return;
+    const GridLines lines = grid_lines(g);
+    for (const View &v : airfoil_views(lines)) {
+        const std::vector<Polyline> shown = view_lines(lines, v);
+        for (const Output &o : outputs) {
+            if (!o.views) continue;
+            const std::string path = base + "-" + v.name + o.extension;
+            write_text_in_place(path, o.name == "png" ? view_png(v, shown)
+                                                      : view_svg(v, shown, "eg2d " + title + ": " + v.name));
+        }
+    }
 }
 
 }  // namespace
@@ -315,7 +345,9 @@ int run_airfoil(int argc, char **argv) {
             check(lg, eg2d_set_parameter(lg, EG2D_PARAM_SPAN, span), "span");
         }
         const std::string base = a.out_dir + "/" + name + "-" + std::to_string(ci) + "x" + std::to_string(cj);
-        for (const Output &o : outputs) check(lg, eg2d_write(lg, (base + o.extension).c_str(), o.id), base + o.extension);
+        for (const Output &o : outputs)
+            if (!o.views) check(lg, eg2d_write(lg, (base + o.extension).c_str(), o.id), base + o.extension);
+        write_views(lg, outputs, base, name + " " + std::to_string(ci) + "x" + std::to_string(cj));
         for (const Feature &f : formats())  // the reports, always
             if (f.id == EG2D_FORMAT_REPORT || f.id == EG2D_FORMAT_REPORT_JSON)
                 check(lg, eg2d_write(lg, (base + f.extension).c_str(), f.id), base + f.extension);

@@ -2,6 +2,8 @@
 
 #include <eg2d.h>
 
+#include "view_picture.hpp"
+
 namespace eg2dtool {
 
 // A feature whose constant is not in this header is listed with available = false.
@@ -145,6 +147,8 @@ const std::vector<Feature> &formats() {
         {"history", -1, true, ".history.csv", "", false, false, kHistoryCsv},
         {"history-svg", -1, true, ".history.svg", "", false, false, kHistorySvg},
         {"controls", -1, true, ".controls.csv", "", false, false, kControlsCsv},
+        // the whole grid as a PNG picture, drawn by the command with cairo where the build has it
+        {"png", -1, png_available(), ".png", "", false, false, kGridPng},
     };
     return t;
 }

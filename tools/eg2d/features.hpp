@@ -20,8 +20,9 @@ struct Feature {
 };
 
 // Output files the command writes itself, from the run rather than the grid
-// (run_files.hpp): Feature::tool, OutputFile::tool.
-enum ToolFile { kLibraryFile = 0, kHistoryCsv = 1, kHistorySvg = 2, kControlsCsv = 3 };
+// (run_files.hpp), or the grid's PNG picture (view_picture.hpp; available
+// only with cairo): Feature::tool, OutputFile::tool.
+enum ToolFile { kLibraryFile = 0, kHistoryCsv = 1, kHistorySvg = 2, kControlsCsv = 3, kGridPng = 4 };
 
 const std::vector<Feature> &solvers();        // [solver] method
 const std::vector<Feature> &parameters();     // keys that are EG2D_PARAM_* settings, by section

@@ -8,30 +8,11 @@
 #include <string>
 
 #include "failure.hpp"
+#include "svg_text.hpp"
 
 namespace eg2dtool {
 
 namespace {
-
-// printf into a std::string.
-template <class... Args>
-void append(std::string &out, const char *fmt, Args... args) {
-    char buf[256];
-    const int n = std::snprintf(buf, sizeof buf, fmt, args...);
-    if (n > 0) out.append(buf, static_cast<std::size_t>(std::min<int>(n, static_cast<int>(sizeof buf) - 1)));
-}
-
-std::string xml_text(const std::string &s) {
-    std::string out;
-    for (char ch : s) {
-        if (ch == '&') out += "&amp;";
-        else if (ch == '<') out += "&lt;";
-        else if (ch == '>') out += "&gt;";
-        else if (ch == '"') out += "&quot;";
-        else out += ch;
-    }
-    return out;
-}
 
 // A tick step of 1, 2 or 5 times a power of ten giving at most ~8 ticks over span.
 double tick_step(double span) {

@@ -15,10 +15,12 @@
 
 #include "failure.hpp"
 #include "features.hpp"
+#include "grid_views.hpp"
 #include "piece_curve.hpp"
 #include "progress.hpp"
 #include "run_files.hpp"
 #include "text_output.hpp"
+#include "view_picture.hpp"
 
 namespace eg2dtool {
 
@@ -231,9 +233,14 @@ std::vector<std::string> tool_texts(const eg2d_grid *g, const Case &c, const std
         std::string text;
         if (out.tool == kHistoryCsv) text = history_csv(history);
         else if (out.tool == kHistorySvg) text = history_svg(history, tolerance, c.title);
-        else if (out.tool == kControlsCsv) {
+        else if (out.tool == kControlsCsv || out.tool == kGridPng) {
             try {
-                text = controls_csv(g);
+                if (out.tool == kControlsCsv) text = controls_csv(g);
+                else {
+                    const GridLines lines = grid_lines(g);
+                    const View v = domain_view(lines);
+                    text = view_png(v, view_lines(lines, v));
+                }
             } catch (const Failure &f) {
                 throw Failure(f.exit_code(), out.where.str() + ": " + f.what());
             }
