@@ -230,7 +230,8 @@ EG2D_API int eg2d_set_coordinates(eg2d_grid *grid, const double *x, const double
  * eg2d_set_coordinates gets the lines' points. EG2D_ORTHO_WALL makes no
  * marched wall layer on a grid with lines (its updates instead). Setting or
  * clearing a line restarts the run like a new start grid (iterations count
- * from 0). Errors: EG2D_ERR_ARGUMENT for a bad direction, index, NULL or
+ * from 0); on an initialised grid a new line's nodes move onto it at once
+ * and the rest stays: eg2d_initialize again for a TFI through it. Errors: EG2D_ERR_ARGUMENT for a bad direction, index, NULL or
  * non-finite point, EG2D_ERR_BOUNDARY for ends off the boundary, an open
  * O-grid row or crossing lines that disagree; the handle is then unchanged.
  * Lines are forgotten with the topology (eg2d_set_topology). */

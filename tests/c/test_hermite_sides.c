@@ -110,6 +110,27 @@ static void test_hermite_all_domains(void **state) {
         }
 }
 
+/* Height 0: alpha times the grid line's length over its cells, here
+ * 0.5 x 2 / 32 on the annulus 1 <= r <= 3, and only at the chosen side. */
+static void test_hermite_default_height(void **state) {
+    const int n = 33;
+    double *x = alloc(n * n), *y = alloc(n * n), worst = 0;
+    eg2d_grid *g;
+    int i;
+    (void)state;
+    assert_int_equal(eg2d_create(n, n, &g), EG2D_OK);
+    assert_int_equal(domain_set_annulus(g, 1.0, 3.0), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_HERMITE_SIDES, 1 << EG2D_SIDE_JMIN), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_HERMITE_SPACING, 0.5), EG2D_OK);
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_HERMITE), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    for (i = 0; i < n; ++i) worst = fmax(worst, fabs(hypot(x[i + n], y[i + n]) - (1 + 0.5 * 2.0 / (n - 1))));
+    assert_true(worst < 1e-12);
+    eg2d_destroy(g);
+    free(x);
+    free(y);
+}
+
 /* The errors: a side the topology lacks; first cells too large for the
  * swan's acute corners (the grid is left as it was); bad parameter values. */
 static void test_hermite_errors(void **state) {
@@ -148,6 +169,7 @@ static void test_hermite_errors(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_hermite_all_domains),
+        cmocka_unit_test(test_hermite_default_height),
         cmocka_unit_test(test_hermite_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
