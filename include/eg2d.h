@@ -183,7 +183,9 @@ EG2D_API int eg2d_set_boundary(eg2d_grid *grid, const double *x, const double *y
                                 and JMAX normal to them, with d r/d eta of length
                                 alpha * |r(i,nj-1) - r(i,0)| / (nj-1), alpha =
                                 EG2D_PARAM_HERMITE_SPACING; linear TFI in xi (none on an
-                                O-grid). Can fold on strongly curved sides. */
+                                O-grid). Can fold on strongly curved sides. With
+                                EG2D_PARAM_HERMITE_SIDES: Hermite at the chosen sides, in
+                                both directions, with a first-cell height per side (below) */
 
 /* Fills the interior from the boundary. Needs the whole boundary. The
  * boundary is the one set: a C-grid's wake cut and sliding sides, which a
@@ -199,6 +201,43 @@ EG2D_API int eg2d_initialize(eg2d_grid *grid, int method);
  * (which then becomes the boundary). For an O-grid, columns 0 and ni-1 must
  * agree. */
 EG2D_API int eg2d_set_coordinates(eg2d_grid *grid, const double *x, const double *y);
+
+/* Interior lines: a grid line inside the domain held on a curve of the
+ * user's, e.g. where a shock or a shear layer will sit. direction EG2D_XI
+ * is the column i = index (a xi = const line, nj points, from JMIN to
+ * JMAX), EG2D_ETA the row j = index (an eta = const line, ni points, from
+ * IMIN to IMAX; on an O-grid a closed curve, first point == last, like
+ * JMIN); index in [1, ni-2] (resp. [1, nj-2]). x, y are the line's nodes in
+ * increasing index, ends included; the ends must be the boundary's nodes
+ * where the line meets it (to 1e-8 of the boundary's size; checked against
+ * the sides set, and again when the grid is initialised or run), and a
+ * column and a row must share their crossing node (the column's point is
+ * used there). A line of the same direction and index is replaced; points
+ * are copied. Columns need the single-block topology (EG2D_ERR_UNSUPPORTED
+ * on O- and C-grids); rows work on all three.
+ * TFI and Hermite TFI (eg2d_initialize, and the TFI a first run makes)
+ * pass through the lines: the lines cut the grid into sub-blocks, each
+ * filled by the method as a grid of its own whose sides are pieces of the
+ * boundary and of the lines (piecewise TFI, Thompson, Warsi & Mastin 1985);
+ * the grid line then holds the curve's points exactly, and the spacing
+ * across it is continuous, its slope not. With EG2D_PARAM_HERMITE_SIDES only
+ * the grid's own sides are chosen, not the lines; the eta-only form (mask
+ * 0) treats each sub-block's rows next to a line as its JMIN/JMAX.
+ * EG2D_INIT_HYPERBOLIC fails with EG2D_ERR_STATE while lines are set.
+ * Every solver and system (eg2d_iterate, eg2d_solve) keeps the lines'
+ * nodes fixed, as an interior boundary (Dirichlet nodes: the residual
+ * leaves them out, multigrid keeps them as coarse nodes). A grid given by
+ * eg2d_set_coordinates gets the lines' points. EG2D_ORTHO_WALL makes no
+ * marched wall layer on a grid with lines (its updates instead). Setting or
+ * clearing a line restarts the run like a new start grid (iterations count
+ * from 0); on an initialised grid a new line's nodes move onto it at once
+ * and the rest stays: eg2d_initialize again for a TFI through it. Errors: EG2D_ERR_ARGUMENT for a bad direction, index, NULL or
+ * non-finite point, EG2D_ERR_BOUNDARY for ends off the boundary, an open
+ * O-grid row or crossing lines that disagree; the handle is then unchanged.
+ * Lines are forgotten with the topology (eg2d_set_topology). */
+EG2D_API int eg2d_set_interior_line(eg2d_grid *grid, int direction, int index, const double *x, const double *y);
+/* Forgets every interior line: their nodes are unknowns again. */
+EG2D_API int eg2d_clear_interior_lines(eg2d_grid *grid);
 
 /*=====================================================================
  * System, solver and run settings
@@ -380,6 +419,46 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
                                             and EG2D_PLOT3D_EXTRUDED */
 #define EG2D_PARAM_HERMITE_SPACING  400  /* geometry and initial grid 400-499. (0, 10], default 1:
                                             alpha of EG2D_INIT_HERMITE */
+/* EG2D_INIT_HERMITE at chosen sides (the grid-generation lecture notes eqs 2.3-2.6, the
+ * Boolean sum of Hermite projectors in xi and in eta). With EG2D_PARAM_HERMITE_SIDES
+ * a mask of sides, sum of (1 << EG2D_SIDE_*) in [1, 15], each chosen side gets the
+ * Hermite projector with the orthogonal derivative, in both directions when
+ * sides of both families are chosen; a direction with no chosen side is
+ * blended linearly, one with one chosen side quadratically (value at both
+ * sides, derivative at the chosen one). The derivative at each node of a
+ * chosen side is solved from the discrete form of eqs 2.5-2.6: the first
+ * interior node of the grid line leaving the side lies on the side's normal
+ * (perpendicular to the central difference r(k+1) - r(k-1)), at the
+ * distance h = EG2D_PARAM_HERMITE_HEIGHT_<side> from it (the first cell's
+ * height, in the boundary's length unit; 0, the default: alpha times the
+ * node's line length over its cells, as EG2D_PARAM_HERMITE_SPACING's alpha
+ * does for the eta-only form). So lines leave the side at 90 degrees with
+ * first cells of height h, to round-off, except at the node next to a
+ * corner where two chosen sides meet: one node (1, 1) cannot lie on both
+ * sides' normals at both heights unless the corner is a right angle; it is
+ * put where the two normals cross when that lies within [h/2, 2h] of both
+ * sides, else halfway between the two wanted positions. Fold guard: the
+ * derivative's reach (its blending function psi_0(s) = s (1 - s/sigma)^2
+ * for s < sigma, 0 beyond; sigma = 1 is eq 2.4's) is halved while the grid
+ * has folded cells, down to 3 cells; the first nodes do not move. Errors
+ * (eg2d_initialize, the grid unchanged): EG2D_ERR_ARGUMENT for a side the
+ * topology lacks (an O-grid has only JMIN and JMAX), EG2D_ERR_FOLDED when
+ * the grid still folds at the shortest reach (first cells too large for the
+ * sides' curvature or for an acute corner between two chosen sides).
+ * Measured (tests/c/test_hermite_sides.c): with h half the uniform spacing
+ * on every chosen side, the course notes' valley, almost-convex, swan, dome
+ * and antenna (all four sides) and the annulus and the rose in a circle
+ * (JMIN, JMAX) at 33 x 33 and 65 x 65 have no folded cell (the antenna's
+ * linear TFI has 102 and 408; the reach is cut to 1/4-1/8 on the single
+ * blocks, where eq 2.4's full reach folds up to 1822 cells), lines within
+ * 4e-12 degrees of normal and heights within 1e-13 relative; with h the
+ * uniform spacing the swan and the dome fold at their acute corners. A mask of 0 (the default) keeps the eta-only form
+ * above unchanged. */
+#define EG2D_PARAM_HERMITE_SIDES       401  /* [0, 15], default 0 */
+#define EG2D_PARAM_HERMITE_HEIGHT_JMIN 402  /* h of JMIN: [0, 1e30], default 0 (alpha x the uniform spacing) */
+#define EG2D_PARAM_HERMITE_HEIGHT_IMAX 403  /* the same for IMAX */
+#define EG2D_PARAM_HERMITE_HEIGHT_JMAX 404  /* JMAX */
+#define EG2D_PARAM_HERMITE_HEIGHT_IMIN 405  /* IMIN (= EG2D_PARAM_HERMITE_HEIGHT_JMIN + side) */
 EG2D_API int eg2d_set_parameter(eg2d_grid *grid, int param, double value);
 EG2D_API int eg2d_get_parameter(const eg2d_grid *grid, int param, double *value);
 /* Bounds and default of a parameter, without a grid. */

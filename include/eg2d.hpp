@@ -275,6 +275,17 @@ public:
                                                " points; the side has " + std::to_string(n));
         check(::eg2d_set_side(g_, side, x.data(), y.data()));
     }
+    /* An interior line: the column i = index (EG2D_XI, nj points) or the row
+     * j = index (EG2D_ETA, ni points), held by TFI and every solver. */
+    void set_interior_line(int direction, int index, const std::vector<double> &x, const std::vector<double> &y) {
+        const std::size_t n = direction == EG2D_XI ? side_points(EG2D_SIDE_IMIN)
+                              : direction == EG2D_ETA ? side_points(EG2D_SIDE_JMIN) : 0;
+        if (n && (x.size() != n || y.size() != n))
+            throw error(EG2D_ERR_ARGUMENT, "set_interior_line: x has " + std::to_string(x.size()) + " and y " +
+                                               std::to_string(y.size()) + " points; the line has " + std::to_string(n));
+        check(::eg2d_set_interior_line(g_, direction, index, x.data(), y.data()));
+    }
+    void clear_interior_lines() { check(::eg2d_clear_interior_lines(g_)); }
     /* Whole ni*nj arrays (Fortran order); only the boundary is read. */
     void set_boundary(const std::vector<double> &x, const std::vector<double> &y) {
         check_nodes("set_boundary", x, y);

@@ -53,6 +53,8 @@ module eg2d
     procedure :: get_topology => grid_get_topology
     procedure :: set_side => grid_set_side
     procedure :: set_boundary => grid_set_boundary
+    procedure :: set_interior_line => grid_set_interior_line
+    procedure :: clear_interior_lines => grid_clear_interior_lines
     procedure :: initialize => grid_initialize
     procedure :: set_coordinates => grid_set_coordinates
     procedure :: set_system => grid_set_system
@@ -328,14 +330,49 @@ contains
     need = -1
     if (side == EG2D_SIDE_JMIN .or. side == EG2D_SIDE_JMAX) need = ni
     if (side == EG2D_SIDE_IMIN .or. side == EG2D_SIDE_IMAX) need = nj
-    if (need >= 0 .and. (size(x) /= need .or. size(y) /= need)) then
-      write (buf, '("side ",i0,": x has ",i0," and y ",i0," points; the side has ",i0)') &
-           side, size(x), size(y), need
-      call fail(self, EG2D_ERR_ARGUMENT, 'set_side', trim(buf), status)
-      return
-    end if
+    write (buf, '("side ",i0,": ")') side
+    if (.not. points_fit(self, need, x, y, 'set_side', trim(buf) // ' ', 'side', status)) return
     call finish(self, eg2d_set_side(self%handle, int(side, c_int), x, y), status)
   end subroutine grid_set_side
+
+  ! True when x and y hold `need` points each (need < 0: the library judges);
+  ! else fails `routine` with "PREFIXx has .. and y .. points; the WHAT has NEED".
+  logical function points_fit(self, need, x, y, routine, prefix, what, status) result(ok)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: need
+    real(c_double), intent(in) :: x(:), y(:)
+    character(*), intent(in) :: routine, prefix, what
+    integer, intent(out), optional :: status
+    character(160) :: buf
+    ok = need < 0 .or. (size(x) == need .and. size(y) == need)
+    if (ok) return
+    write (buf, '("x has ",i0," and y ",i0," points; the ",a," has ",i0)') size(x), size(y), what, need
+    call fail(self, EG2D_ERR_ARGUMENT, routine, prefix // trim(buf), status)
+  end function points_fit
+
+  ! An interior line held by TFI and every solver: the column i = index
+  ! (direction EG2D_XI, nj points) or the row j = index (EG2D_ETA, ni points).
+  ! Indices are eg2d's, 0-based: the Fortran column x(index+1, :).
+  subroutine grid_set_interior_line(self, direction, index, x, y, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: direction, index
+    real(c_double), intent(in) :: x(:), y(:)
+    integer, intent(out), optional :: status
+    integer(c_int) :: ni, nj
+    integer :: need
+    if (.not. size_of(self, ni, nj, status)) return
+    need = -1
+    if (direction == EG2D_XI) need = nj
+    if (direction == EG2D_ETA) need = ni
+    if (.not. points_fit(self, need, x, y, 'set_interior_line', '', 'line', status)) return
+    call finish(self, eg2d_set_interior_line(self%handle, int(direction, c_int), int(index, c_int), x, y), status)
+  end subroutine grid_set_interior_line
+
+  subroutine grid_clear_interior_lines(self, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(out), optional :: status
+    call finish(self, eg2d_clear_interior_lines(self%handle), status)
+  end subroutine grid_clear_interior_lines
 
   ! The boundary ring from whole x(ni,nj), y(ni,nj) arrays (only the boundary is read).
   subroutine grid_set_boundary(self, x, y, status)

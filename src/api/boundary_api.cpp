@@ -36,4 +36,18 @@ EG2D_API int eg2d_set_coordinates(eg2d_grid *grid, const double *x, const double
     });
 }
 
+EG2D_API int eg2d_set_interior_line(eg2d_grid *grid, int direction, int index, const double *x, const double *y) {
+    return guard(grid, "eg2d_set_interior_line", [&] {
+        require(direction == EG2D_XI || direction == EG2D_ETA,
+                format("direction = %d: not EG2D_XI (0, a column) or EG2D_ETA (1, a row)", direction));
+        require_ptr(x, "x");
+        require_ptr(y, "y");
+        grid->gen.set_interior_line(direction == EG2D_XI, index, x, y);
+    });
+}
+
+EG2D_API int eg2d_clear_interior_lines(eg2d_grid *grid) {
+    return guard(grid, "eg2d_clear_interior_lines", [&] { grid->gen.clear_interior_lines(); });
+}
+
 }  // extern "C"

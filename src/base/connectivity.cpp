@@ -16,6 +16,25 @@ Connectivity::Connectivity(int ni, int nj, Topology topology, int wake)
     for (int i = 1; i < wake_; ++i) extra_.push_back(Node{i, 0});
 }
 
+Connectivity Connectivity::with_fixed(const std::vector<int> &columns, const std::vector<int> &rows) const {
+    Connectivity c(*this);
+    c.fixed_i_.clear();
+    c.fixed_j_.clear();
+    if (columns.empty() && rows.empty()) return c;
+    c.fixed_i_.assign(static_cast<std::size_t>(ni_), 0);
+    c.fixed_j_.assign(static_cast<std::size_t>(nj_), 0);
+    for (int i : columns) c.fixed_i_[static_cast<std::size_t>(i)] = 1;
+    for (int j : rows) c.fixed_j_[static_cast<std::size_t>(j)] = 1;
+    return c;
+}
+
+std::vector<int> Connectivity::marked(const std::vector<char> &m) {
+    std::vector<int> out;
+    for (std::size_t k = 0; k < m.size(); ++k)
+        if (m[k]) out.push_back(static_cast<int>(k));
+    return out;
+}
+
 void Connectivity::sync(double *f) const {
     for (const Node &n : extra_) sync_node(f, n.i, n.j);
     if (!periodic_i()) return;

@@ -67,8 +67,24 @@ public:
     Connectivity held_below(int rows) const {
         Connectivity c(ni_, nj_, topology_, rows > 0 ? 0 : wake_);
         c.j_first_ = rows + 1;
+        c.fixed_i_ = fixed_i_;
+        c.fixed_j_ = fixed_j_;
         return c;
     }
+    // The same grid with interior lines held fixed (eg2d_set_interior_line):
+    // whole columns i and rows j whose nodes are Dirichlet nodes inside the
+    // unknowns' rectangle. The operator gives them R = 0 with a unit
+    // diagonal and no coupling, so every point, line and ILU kernel leaves
+    // them where they are while their neighbours see them as boundary.
+    Connectivity with_fixed(const std::vector<int> &columns, const std::vector<int> &rows) const;
+    bool has_fixed() const { return !fixed_i_.empty(); }
+    bool fixed(int i, int j) const { return has_fixed() && (fixed_i_[static_cast<std::size_t>(i)] || fixed_j_[static_cast<std::size_t>(j)]); }
+    bool fixed_node(std::ptrdiff_t k) const {
+        return has_fixed() && fixed(static_cast<int>(k % ni_), static_cast<int>(k / ni_));
+    }
+    // The fixed columns and rows in increasing order.
+    std::vector<int> fixed_columns() const { return marked(fixed_i_); }
+    std::vector<int> fixed_rows() const { return marked(fixed_j_); }
     // Rows held fixed above row 0 (0: none).
     int held_rows() const { return j_first_ - 1; }
     // C-grid: is (i, 0) a wake node solved for (0 < i < wake)?
@@ -111,6 +127,8 @@ private:
     int wake_ = 0;
     int j_first_ = 1;
     std::vector<Node> extra_;
+    std::vector<char> fixed_i_, fixed_j_;  // per column / row: held fixed (both empty: none)
+    static std::vector<int> marked(const std::vector<char> &m);
 };
 
 }  // namespace eg2d

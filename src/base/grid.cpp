@@ -11,9 +11,6 @@
 namespace eg2d {
 
 namespace {
-// Relative tolerance on the domain size for corners that must coincide.
-constexpr double kCornerTolerance = 1e-8;
-
 std::vector<double> allocate(std::size_t n) {
     try {
         return std::vector<double>(n, 0.0);
@@ -66,6 +63,7 @@ void Grid::set_topology(Topology t) {
         fail(Failure::Argument, format("ni = %d: a C-grid needs at least 7 (wake, airfoil, wake)", ni_));
     base_connectivity_ = connectivity_ = Connectivity(ni_, nj_, t);
     held_rows_ = 0;
+    lines_.clear();
     sides_set_ = 0;
     patches.clear();
     for (int si = 0; si < 4; ++si) {
@@ -190,7 +188,7 @@ void Grid::set_side(Side s, const double *px, const double *py) {
             y[static_cast<std::size_t>(ni_ - 1 - i)] = y[static_cast<std::size_t>(i)];
         }
         base_connectivity_ = Connectivity(ni_, nj_, Topology::C, wake);
-        connectivity_ = held_rows_ > 0 ? base_connectivity_.held_below(held_rows_) : base_connectivity_;
+        rebuild_connectivity();
     }
     const int si = static_cast<int>(s);
     read_side(s, x.data(), y.data(), user_x_[si], user_y_[si]);  // after the cut's copies: the ring as set
@@ -255,6 +253,8 @@ void Grid::set_coordinates(const double *px, const double *py) {
     std::copy(py, py + size(), trial.y.begin());
     trial.connectivity_.sync(trial.x.data());
     trial.connectivity_.sync(trial.y.data());
+    trial.check_interior_lines();  // the lines hold their curves in a user's start grid too
+    trial.restore_interior_lines();
     trial.initialized_ = true;
     *this = std::move(trial);
 }
@@ -263,7 +263,14 @@ void Grid::hold_rows(int rows) {
     if (rows < 0 || rows > nj_ - 3)
         fail(Failure::Argument, format("held rows = %d: must be in [0, nj - 3 = %d]", rows, nj_ - 3));
     held_rows_ = rows;
-    connectivity_ = rows > 0 ? base_connectivity_.held_below(rows) : base_connectivity_;
+    rebuild_connectivity();
+}
+
+void Grid::rebuild_connectivity() {
+    const Connectivity held = held_rows_ > 0 ? base_connectivity_.held_below(held_rows_) : base_connectivity_;
+    std::vector<int> columns, rows;
+    for (const InteriorLine &l : lines_) (l.xi ? columns : rows).push_back(l.index);
+    connectivity_ = held.with_fixed(columns, rows);
 }
 
 }  // namespace eg2d

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "base/connectivity.hpp"
+#include "base/interior_lines.hpp"
 #include "base/patches.hpp"
 
 namespace eg2d {
@@ -52,6 +53,21 @@ public:
     // Rows 1..rows are held fixed by the solvers (a wall layer made before
     // the solve); 0 releases them. Throws Argument unless 0 <= rows <= nj-3.
     void hold_rows(int rows);
+
+    // Interior lines (base/interior_lines.hpp; interior_lines.cpp): a line
+    // of the same family and index is replaced. Throws Argument for an
+    // index outside [1, n-2], a column on an O- or C-grid (Unsupported), an
+    // open row of an O-grid, non-finite points, or ends or crossings that
+    // disagree with what is set (check_interior_lines). Strong guarantee.
+    void set_interior_line(bool xi, int index, const double *px, const double *py);
+    void clear_interior_lines();
+    const std::vector<InteriorLine> &interior_lines() const { return lines_; }
+    // Throws Boundary unless every line's ends lie on the boundary nodes
+    // they meet and crossing lines share their crossing node (1e-8 of the
+    // boundary's size); sides not set yet are not checked.
+    void check_interior_lines() const;
+    // Writes the lines' nodes (ends excluded: they are the boundary's).
+    void restore_interior_lines();
     int held_rows() const { return held_rows_; }
 
     bool initialized() const { return initialized_; }
@@ -84,6 +100,9 @@ private:
     Connectivity base_connectivity_;  // the topology's, no rows held
     Connectivity connectivity_;       // with the held rows
     int held_rows_ = 0;
+    std::vector<InteriorLine> lines_;
+    // connectivity_ from base_connectivity_, the held rows and the lines.
+    void rebuild_connectivity();
     unsigned sides_set_ = 0;
     std::vector<double> user_x_[4], user_y_[4];  // each set side's points as set_side wrote them
     bool initialized_ = false;
@@ -113,6 +132,10 @@ inline std::size_t side_node(int ni, int nj, Side s, int p, int depth = 0) {
 inline std::size_t side_node(const Grid &g, Side s, int p, int depth = 0) {
     return side_node(g.ni(), g.nj(), s, p, depth);
 }
+
+// Relative tolerance on the domain size for points that must coincide
+// (corners of adjacent sides, an interior line's ends).
+constexpr double kCornerTolerance = 1e-8;
 
 // Largest coordinate magnitude accepted: J^2 grows as the fourth power of the
 // coordinates, so much larger values would overflow the metric terms.

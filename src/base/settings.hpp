@@ -28,6 +28,11 @@ struct Settings {
     double wall_growth = 1.15;        // cell-to-cell growth of a marched wall layer, [1, 1.5]
     double wall_layer = 3;            // EG2D_PARAM_WALL_LAYER: 0 control, 1 normals, 2 hybrid, 3 automatic (wall.cpp)
     double hermite_spacing = 1.0;     // EG2D_INIT_HERMITE's alpha (seed 001 eq 2.6)
+    // EG2D_INIT_HERMITE at chosen sides (grid/tfi_hermite_sides.cpp): a mask
+    // of 1 << side (0: the eta-only form above) and each side's first-node
+    // height (0: alpha times the uniform spacing).
+    double hermite_sides = 0;
+    double hermite_height_jmin = 0, hermite_height_imax = 0, hermite_height_jmax = 0, hermite_height_imin = 0;
     // The hyperbolic march (src/grid/hyperbolic.cpp, docs/hyperbolic.md).
     double march_distance = 0.0;      // marching distance; 0: 10 x the JMIN curve's bounding-box diagonal
     double march_first_height = 0.0;  // first layer's height; 0: the one with constant ratio 1 + (G-1)/2

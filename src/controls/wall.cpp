@@ -122,7 +122,9 @@ public:
     // updates below.
     WallLayerShape shape_start(Grid &g, const Settings &settings, bool fill_above) override {
         hybrid_ = HybridLayer{};
-        const bool jmin_only = height_[0] > 0.0 && height_[1] < 0.0 && height_[2] < 0.0 && height_[3] < 0.0;
+        // A marched layer rewrites the rows it holds: not through interior lines.
+        const bool jmin_only = height_[0] > 0.0 && height_[1] < 0.0 && height_[2] < 0.0 && height_[3] < 0.0 &&
+                               g.interior_lines().empty();
         std::string note;
         const bool automatic = settings.wall_layer == kAutomaticLayer;
         if ((settings.wall_layer == 2.0 || automatic) && g.topology() != Topology::Single && jmin_only) {

@@ -160,9 +160,18 @@ void Generator::initialize(int method) {
     if (!m->marches && !grid_.boundary_complete())
         fail(Failure::State, format("the boundary is not complete: side %s not set", missing_sides(grid_).c_str()));
     check_extent(grid_);
+    const bool lines = !grid_.interior_lines().empty();
+    if (lines && m->marches)
+        fail(Failure::State, format("%s writes every node: it cannot pass through the interior lines set "
+                                    "(eg2d_clear_interior_lines, or a TFI method)", m->name));
     Grid next(grid_);
     next.restore_boundary();
-    m->fill(next, settings);
+    if (lines) {
+        next.check_interior_lines();
+        next.restore_interior_lines();
+    }
+    if (m->marches) m->fill(next, settings);
+    else fill_blocks(next, settings, m->fill);
     check_coordinates("initial x", next.x.data(), next.size());
     check_coordinates("initial y", next.y.data(), next.size());
     if (m->marches) {
@@ -214,6 +223,7 @@ void Generator::ensure_ready() {
         fail(Failure::State,
              format("the boundary is not complete: side %s not set", missing_sides(grid_).c_str()));
     check_extent(grid_);
+    grid_.check_interior_lines();  // a side set since may have moved a line's end
     if (!grid_.initialized()) initialize(EG2D_INIT_TFI);
 }
 

@@ -65,6 +65,17 @@ public:
         motions_.push_back(std::move(m));
     }
     void set_coordinates(const double *x, const double *y);
+    // Interior lines (Grid::set_interior_line): the solvers' unknowns
+    // change, so any cached hierarchy is dropped; an initialised grid gets
+    // the line's points at once.
+    void set_interior_line(bool xi, int index, const double *x, const double *y) {
+        grid_.set_interior_line(xi, index, x, y);
+        changed_lines();
+    }
+    void clear_interior_lines() {
+        grid_.clear_interior_lines();
+        changed_lines();
+    }
     // The boundary patches only name and type the boundary for the writers:
     // no effect on the generation.
     void set_patches(std::vector<Patch> patches) { grid_.patches = std::move(patches); }
@@ -101,6 +112,11 @@ public:
 
 private:
     void changed_boundary();
+    void changed_lines() {
+        changed_start();
+        controls_.invalidate();
+        shape_pending_ = true;
+    }
     // Lets the controls build what they fix before the solve (a wall layer).
     void shape_start(bool fill_above);
     void drop_motion(Side s);

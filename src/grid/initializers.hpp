@@ -22,6 +22,14 @@ const InitMethod *find_init_method(int id);
 
 void tfi_linear(Grid &grid, const Settings &settings);   // tfi.cpp
 void tfi_hermite(Grid &grid, const Settings &settings);  // tfi_hermite.cpp
+// At the sides settings.hermite_sides chooses (tfi_hermite_sides.cpp);
+// tfi_hermite hands over to it when the mask is not 0.
+void tfi_hermite_sides(Grid &grid, const Settings &settings);
 void hyperbolic_march(Grid &grid, const Settings &settings);  // hyperbolic.cpp
+
+// A filling method through the grid's fixed interior lines: each sub-block
+// between them filled as a grid of its own (tfi_blocks.cpp); without lines,
+// fill itself.
+void fill_blocks(Grid &grid, const Settings &settings, void (*fill)(Grid &, const Settings &));
 
 }  // namespace eg2d

@@ -62,6 +62,7 @@ std::vector<Vec> normal_derivatives(const Grid &g, int j, double alpha) {
 }  // namespace
 
 void tfi_hermite(Grid &g, const Settings &settings) {
+    if (settings.hermite_sides != 0.0) return tfi_hermite_sides(g, settings);
     const int ni = g.ni(), nj = g.nj();
     const double alpha = settings.hermite_spacing;
     auto at = [ni](int i, int j) { return static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * j; };

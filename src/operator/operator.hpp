@@ -77,6 +77,10 @@ NodeEquation variational_equation(const Level &L, const Stencil &s);
 // = 1, beta = C = 0), for line solvers that need both (not the variational
 // system, whose equation has no such form).
 inline NodeEquation node_equation(System system, const Level &L, const Stencil &s, Metrics *metrics = nullptr) {
+    if (L.conn && L.conn->fixed_node(s.c)) {  // a node of a fixed interior line: an identity row, R = 0
+        if (metrics) *metrics = Metrics{0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+        return NodeEquation{0.0, 0.0, 1.0};
+    }
     const double *x = L.x, *y = L.y;
     NodeEquation eq;
     if (system == System::Variational) {

@@ -151,6 +151,7 @@ NodeStep relax_variational(const Level &L, int i, int j, double omega) {
     static const Functional kSpacingOnly;
     const Functional &F = L.functional ? *L.functional : kSpacingOnly;
     const Connectivity &conn = *L.conn;
+    if (conn.fixed(i, j)) return NodeStep::Moved;  // a fixed interior line's node: Dirichlet
     const Stencil s = conn.stencil(i, j);
     const Ring r = ring(L.x, L.y, s);
     const NodeGradient g = node_gradient(F, r);

@@ -52,6 +52,12 @@ std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, in
         // keeps at least one row of unknowns above them.
         const int held = c.held_rows();
         if (held > 0) j_anchors = {held};
+        // Fixed interior lines stay coarse nodes and stay fixed there, so a
+        // coarse correction is exactly 0 on them (coarse_axis.hpp: an
+        // anchor's interpolation weight is 1).
+        const std::vector<int> fixed_i = c.fixed_columns(), fixed_j = c.fixed_rows();
+        anchors.insert(anchors.end(), fixed_i.begin(), fixed_i.end());
+        j_anchors.insert(j_anchors.end(), fixed_j.begin(), fixed_j.end());
         bool ci = can_coarsen(c.ni(), coarse_count(c.ni(), anchors), c.periodic_i(), coarsest);
         bool cj = can_coarsen(c.nj(), coarse_count(c.nj(), j_anchors), false, coarsest);
         // Phi and Psi double with each coarsening of their direction.
@@ -76,7 +82,11 @@ std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, in
         CoarseAxis ai = make_axis(c.ni(), c.periodic_i(), anchors, ci);
         CoarseAxis aj = make_axis(c.nj(), false, j_anchors, cj);
         const int wake = c.wake() > 0 ? ai.nearest(c.wake()) : 0;
-        const Connectivity coarse(ai.nc, aj.nc, c.topology(), wake);
+        const Connectivity plain(ai.nc, aj.nc, c.topology(), wake);
+        std::vector<int> coarse_i, coarse_j;
+        for (int i : fixed_i) coarse_i.push_back(ai.nearest(i));
+        for (int j : fixed_j) coarse_j.push_back(aj.nearest(j));
+        const Connectivity coarse = plain.with_fixed(coarse_i, coarse_j);
         levels.emplace_back(held > 0 ? coarse.held_below(aj.nearest(held)) : coarse);
         if (ci) stretch_i *= 2.0;
         if (cj) stretch_j *= 2.0;

@@ -148,6 +148,31 @@ static int r_coords_nan(eg2d_grid *g) {
     y[4 + N * 4] = NAN;
     return eg2d_set_coordinates(g, x, y);
 }
+/* The row j = 4 of the unit square, straight, with point p moved up by dy. */
+static int line_with(eg2d_grid *g, int direction, int index, int p, double dy) {
+    double x[N], y[N];
+    int k;
+    for (k = 0; k < N; ++k) {
+        x[k] = (double)k / (N - 1);
+        y[k] = 0.5;
+    }
+    y[p] += dy;
+    return eg2d_set_interior_line(g, direction, index, x, y);
+}
+static int r_line_direction(eg2d_grid *g) { return line_with(g, 2, 4, 0, 0); }
+static int r_line_index(eg2d_grid *g) { return line_with(g, EG2D_ETA, N - 1, 0, 0); }
+static int r_line_null(eg2d_grid *g) { double y[N] = {0}; return eg2d_set_interior_line(g, EG2D_ETA, 4, NULL, y); }
+static int r_line_nan(eg2d_grid *g) { return line_with(g, EG2D_ETA, 4, 2, NAN); }
+static int r_line_end(eg2d_grid *g) { return line_with(g, EG2D_ETA, 4, 0, 0.01); }
+static int r_line_ogrid_column(eg2d_grid *g) { return line_with(g, EG2D_XI, 4, 0, 0); }
+static int r_line_march(eg2d_grid *g) {  /* the line is cleared again: only the failing call is observed */
+    int rc = line_with(g, EG2D_ETA, 4, 0, 0);
+    rc = rc ? rc : eg2d_initialize(g, EG2D_INIT_HYPERBOLIC);
+    eg2d_clear_interior_lines(g);
+    return rc;
+}
+static int r_hermite_side(eg2d_grid *g) { return eg2d_set_parameter(g, EG2D_PARAM_HERMITE_SIDES, 16); }
+static int r_hermite_height(eg2d_grid *g) { return eg2d_set_parameter(g, EG2D_PARAM_HERMITE_HEIGHT_JMIN, -0.1); }
 static int r_init_no_boundary(eg2d_grid *g) { return eg2d_initialize(g, EG2D_INIT_TFI); }
 static int r_init_method(eg2d_grid *g) { return eg2d_initialize(g, 77); }
 static int r_system_3(eg2d_grid *g) { return eg2d_set_system(g, 3); }
@@ -472,6 +497,29 @@ static const bad_input rows[] = {
      EG2D_ERR_STATE, "eg2d_initialize: the boundary is not complete: side JMIN, IMAX, JMAX, IMIN not set", 0},
     {"unknown initialisation method", "eg2d_initialize(g, 77)", S_SQUARE, r_init_method, EG2D_ERR_ARGUMENT,
      "eg2d_initialize: initialisation method 77: no such method", 0},
+    {"interior line: unknown direction", "eg2d_set_interior_line(g, 2, 4, x, y)", S_SQUARE, r_line_direction,
+     EG2D_ERR_ARGUMENT, "eg2d_set_interior_line: direction = 2: not EG2D_XI (0, a column) or EG2D_ETA (1, a row)", 0},
+    {"interior line on the boundary", "eg2d_set_interior_line(g, EG2D_ETA, 8, x, y)", S_SQUARE, r_line_index,
+     EG2D_ERR_ARGUMENT, "eg2d_set_interior_line: eta line 8: the index must be in [1, 7] (an interior row)", 0},
+    {"interior line: NULL points", "eg2d_set_interior_line(g, EG2D_ETA, 4, NULL, y)", S_SQUARE, r_line_null,
+     EG2D_ERR_ARGUMENT, "eg2d_set_interior_line: x is NULL", 0},
+    {"NaN in an interior line", "eg2d_set_interior_line(g, EG2D_ETA, 4, x, y), y[2] = NaN", S_SQUARE, r_line_nan,
+     EG2D_ERR_ARGUMENT, "eg2d_set_interior_line: interior line y[2] = nan: coordinates must be finite", 0},
+    {"interior line's end off the boundary", "eg2d_set_interior_line(g, EG2D_ETA, 4, x, y), y[0] = 0.51", S_SQUARE,
+     r_line_end, EG2D_ERR_BOUNDARY,
+     "eg2d_set_interior_line: eta line 4: its first point (0, 0.51000000000000001) is not side IMIN's node 4 (0, 0.5)",
+     0},
+    {"interior column on an O-grid", "eg2d_set_interior_line(g, EG2D_XI, 4, x, y)", S_OGRID, r_line_ogrid_column,
+     EG2D_ERR_UNSUPPORTED,
+     "eg2d_set_interior_line: a xi line (column 4) on the O-grid topology: interior columns are supported on single "
+     "blocks only (rows on all three)", 0},
+    {"hyperbolic march with an interior line", "eg2d_initialize(g, EG2D_INIT_HYPERBOLIC)", S_SQUARE, r_line_march,
+     EG2D_ERR_STATE, "eg2d_initialize: hyperbolic writes every node: it cannot pass through the interior lines set "
+     "(eg2d_clear_interior_lines, or a TFI method)", 0},
+    {"Hermite sides: a mask above 15", "eg2d_set_parameter(g, EG2D_PARAM_HERMITE_SIDES, 16)", S_FRESH, r_hermite_side,
+     EG2D_ERR_ARGUMENT, "eg2d_set_parameter: hermite_sides = 16: must be in [0, 15]", 0},
+    {"Hermite sides: a negative height", "eg2d_set_parameter(g, EG2D_PARAM_HERMITE_HEIGHT_JMIN, -0.1)", S_FRESH,
+     r_hermite_height, EG2D_ERR_ARGUMENT, "eg2d_set_parameter: hermite_height_jmin = -0.1: must be in [0, 1e+30]", 0},
     {"unknown system", "eg2d_set_system(g, 3)", S_FRESH, r_system_3, EG2D_ERR_ARGUMENT,
      "eg2d_set_system: system = 3: not EG2D_SYSTEM_LAPLACE (0), EG2D_SYSTEM_WINSLOW (1) or "
      "EG2D_SYSTEM_VARIATIONAL (2)", 0},

@@ -262,34 +262,19 @@ static void test_c_grid_boundary_errors(void **state) {
     eg2d_destroy(g);
 }
 
-static void rose_fn(void *user, double t, double *x, double *y) {
-    const double th = 2 * PI * t, r = 0.3 * (2 + cos(3 * th));
-    (void)user;
-    *x = r * cos(th);
-    *y = r * sin(th);
-}
-
 /* Seed 003, B2: the three-leaved rose inside the circle r = 9. */
 static void test_rose_in_circle(void **state) {
     eg2d_grid *g;
-    eg2d_curve *rose, *circ;
-    struct circle c = {0.0, 9.0, 1.0};
     int iters;
     (void)state;
-    assert_int_equal(eg2d_curve_function(rose_fn, NULL, &rose), EG2D_OK);
-    assert_int_equal(eg2d_curve_function(circle_fn, &c, &circ), EG2D_OK);
     assert_int_equal(eg2d_create(61, 25, &g), EG2D_OK);
-    assert_int_equal(eg2d_set_topology(g, EG2D_TOPO_O), EG2D_OK);
-    assert_int_equal(eg2d_set_side_curve(g, EG2D_SIDE_JMIN, rose, EG2D_DIST_UNIFORM, 0, 0, 0), EG2D_OK);
-    assert_int_equal(eg2d_set_side_curve(g, EG2D_SIDE_JMAX, circ, EG2D_DIST_UNIFORM, 0, 0, 0), EG2D_OK);
+    assert_int_equal(domain_set_rose(g), EG2D_OK);
     assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
     assert_int_equal(eg2d_solve(g), EG2D_OK);
     check_unfolded(g);
     assert_int_equal(eg2d_get_iterations(g, &iters), EG2D_OK);
     print_message("rose in circle 61x25: %d iterations\n", iters);
     eg2d_destroy(g);
-    eg2d_curve_destroy(rose);
-    eg2d_curve_destroy(circ);
 }
 
 /* Hermite TFI on the annulus: radial lines and, along each, the cubic of

@@ -114,8 +114,10 @@ class ErrorMessages(unittest.TestCase):
     def test_unknown_key(self):
         self.check('size = [9, 9]\nsovler = "psor"\n' + self.GOOD_SIDES, 3,
                    "CASE:2:1: key 'sovler': unknown key (expected one of: title, size, topology, system, "
-                   "initial, constants, solver, sides, controls, output, patches, variational_area, "
-                   "variational_orthogonality, variational_spacing, hermite_spacing)")
+                   "initial, constants, solver, sides, controls, output, patches, interior_lines, "
+                   "variational_area, variational_orthogonality, variational_spacing, hermite_spacing, "
+                   "hermite_sides, hermite_height_jmin, hermite_height_imax, hermite_height_jmax, "
+                   "hermite_height_imin)")
 
     def test_unknown_key_in_a_side(self):
         self.check('size = [9, 9]\n' + self.GOOD_SIDES + 'z = "1"\n', 3,
@@ -1002,6 +1004,44 @@ def vts_points(path):
     root = ET.parse(path).getroot()
     text = root.find(".//{*}Points/{*}DataArray").text.split()
     return [(float(text[k]), float(text[k + 1])) for k in range(0, len(text), 3)]
+
+
+class InteriorLines(unittest.TestCase):
+    """[[interior_lines]]: the row is held on its curve by TFI and the solve."""
+
+    LINE = textwrap.dedent("""
+        [[interior_lines]]
+        direction = "eta"
+        index = 10
+        curve = { x = "s", y = "10/32 + 0.05*sin(pi*s)" }
+        """)
+
+    def test_row_held(self):
+        with tempfile.TemporaryDirectory() as d:
+            path = case_from_example(d, "valley", ("size = [65, 65]", "size = [33, 33]"),
+                                     ('formats = ["plot3d", "svg"]', 'formats = ["plot3d-ascii"]'))
+            with open(path, "a") as f:
+                f.write(self.LINE)
+            code, out, err = run("run", path, "-o", os.path.join(d, "out"))
+            self.assertEqual(code, 0, err)
+            with open(os.path.join(d, "out", "case.p3d")) as f:
+                numbers = f.read().split()
+            ni, nj = int(numbers[0]), int(numbers[1])
+            xyz = [float(v) for v in numbers[2:]]
+            x, y = xyz[:ni * nj], xyz[ni * nj:]
+            for i in range(1, ni - 1):
+                s = i / (ni - 1)
+                self.assertAlmostEqual(x[i + ni * 10], s, places=12)
+                self.assertAlmostEqual(y[i + ni * 10], 10 / 32 + 0.05 * math.sin(math.pi * s), places=12)
+
+    def test_bad_line(self):
+        with tempfile.TemporaryDirectory() as d:
+            path = case_from_example(d, "valley", ("size = [65, 65]", "size = [33, 33]"))
+            with open(path, "a") as f:
+                f.write(self.LINE.replace("index = 10", "index = 40"))
+            code, _, err = run("run", path, "-o", os.path.join(d, "out"))
+            self.assertEqual(code, 3)
+            self.assertIn("key 'interior_lines[0].index': index = 40: an interior row in [1, 31]", err)
 
 
 class Airfoil(unittest.TestCase):

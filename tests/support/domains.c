@@ -31,6 +31,50 @@ static void dome_t(double s, double *x, double *y) { *x = s; *y = -4 * (s - 0.5)
 static void dome_l(double s, double *x, double *y) { *x = 0; *y = s; }
 static void dome_r(double s, double *x, double *y) { *x = 1; *y = s; }
 /* A bilinear quadrilateral. */
+/* The grid's size and two arrays for its longest side (the caller frees them). */
+static int side_buffers(eg2d_grid *g, int *ni, int *nj, double **x, double **y) {
+    int status = eg2d_get_size(g, ni, nj);
+    if (status) return status;
+    *x = malloc(sizeof(double) * (size_t)(*ni > *nj ? *ni : *nj));
+    *y = malloc(sizeof(double) * (size_t)(*ni > *nj ? *ni : *nj));
+    if (!*x || !*y) {
+        free(*x);
+        free(*y);
+        return EG2D_ERR_MEMORY;
+    }
+    return EG2D_OK;
+}
+
+/* Seed 003, A3: the antenna, a stem [-3, 0] x [0, 1] joined to the half disc
+ * x >= 0 of radius 3 about (0, 1/2) (examples/antenna.toml): bottom and top
+ * run along the stem (70% of their intervals) and turn at the stem's mouth
+ * along the wall x = 0; the right side is the half circle. Sets the sides. */
+static int set_antenna(eg2d_grid *g) {
+    int ni, nj, k, status, side;
+    double *x, *y;
+    if ((status = side_buffers(g, &ni, &nj, &x, &y))) return status;
+    for (side = 0; side < 4 && !status; ++side) {
+        const int n = (side == EG2D_SIDE_JMIN || side == EG2D_SIDE_JMAX) ? ni : nj;
+        const int stem = (int)floor(0.7 * (n - 1) + 0.5); /* the stem's intervals: its mouth is a node */
+        for (k = 0; k < n; ++k) {
+            const double s = (double)k / (n - 1);
+            if (side == EG2D_SIDE_IMIN) { x[k] = -3; y[k] = s; }
+            else if (side == EG2D_SIDE_IMAX) {
+                x[k] = 3 * cos(EG2D_TEST_PI * (s - 0.5));
+                y[k] = 0.5 + 3 * sin(EG2D_TEST_PI * (s - 0.5));
+            } else {
+                const double y_stem = side == EG2D_SIDE_JMIN ? 0 : 1, y_wall = side == EG2D_SIDE_JMIN ? -2.5 : 3.5;
+                if (k <= stem) { x[k] = -3 + 3.0 * k / stem; y[k] = y_stem; }
+                else { x[k] = 0; y[k] = y_stem + (y_wall - y_stem) * (k - stem) / (n - 1 - stem); }
+            }
+        }
+        status = eg2d_set_side(g, side, x, y);
+    }
+    free(x);
+    free(y);
+    return status;
+}
+
 static void bil(double u, double v, double *x, double *y) {
     const double X[4] = {0, 2, 2.4, 0.3}, Y[4] = {0, 0.2, 1.6, 1};
     *x = (1 - u) * (1 - v) * X[0] + u * (1 - v) * X[1] + u * v * X[2] + (1 - u) * v * X[3];
@@ -64,6 +108,7 @@ int domain_set(eg2d_grid *g, const char *name) {
     else if (!strcmp(name, "swan")) { b = swan_b; r = swan_r; t = swan_t; l = swan_l; }
     else if (!strcmp(name, "dome")) { b = dome_b; r = dome_r; t = dome_t; l = dome_l; }
     else if (!strcmp(name, "quad")) { b = quadr_b; r = quadr_r; t = quadr_t; l = quadr_l; }
+    else if (!strcmp(name, "antenna")) return set_antenna(g);
     else return EG2D_ERR_ARGUMENT;
     status = eg2d_get_size(g, &ni, &nj);
     if (status) return status;
@@ -100,6 +145,31 @@ int domain_set_annulus(eg2d_grid *g, double ri, double ro) {
     if (!status) status = eg2d_set_side(g, EG2D_SIDE_JMAX, x, y);
     free(x);
     free(y);
+    return status;
+}
+
+static void rose_fn(void *user, double t, double *x, double *y) {
+    const double th = 2 * EG2D_TEST_PI * t, r = 0.3 * (2 + cos(3 * th));
+    (void)user;
+    *x = r * cos(th);
+    *y = r * sin(th);
+}
+
+static void circle9_fn(void *user, double t, double *x, double *y) {
+    (void)user;
+    *x = 9 * cos(2 * EG2D_TEST_PI * t);
+    *y = 9 * sin(2 * EG2D_TEST_PI * t);
+}
+
+int domain_set_rose(eg2d_grid *g) {
+    eg2d_curve *rose = NULL, *circ = NULL;
+    int status = eg2d_set_topology(g, EG2D_TOPO_O);
+    if (!status) status = eg2d_curve_function(rose_fn, NULL, &rose);
+    if (!status) status = eg2d_curve_function(circle9_fn, NULL, &circ);
+    if (!status) status = eg2d_set_side_curve(g, EG2D_SIDE_JMIN, rose, EG2D_DIST_UNIFORM, 0, 0, 0);
+    if (!status) status = eg2d_set_side_curve(g, EG2D_SIDE_JMAX, circ, EG2D_DIST_UNIFORM, 0, 0, 0);
+    eg2d_curve_destroy(rose);
+    eg2d_curve_destroy(circ);
     return status;
 }
 
@@ -256,14 +326,7 @@ int domain_set_airfoil_c_graded(eg2d_grid *g, const char *digits, int wake, doub
 int domain_set_rectangle_columns(eg2d_grid *g, const double *X, double height) {
     int ni, nj, i, status;
     double *x, *y;
-    if ((status = eg2d_get_size(g, &ni, &nj))) return status;
-    x = malloc(sizeof(double) * (size_t)(ni > nj ? ni : nj));
-    y = malloc(sizeof(double) * (size_t)(ni > nj ? ni : nj));
-    if (!x || !y) {
-        free(x);
-        free(y);
-        return EG2D_ERR_MEMORY;
-    }
+    if ((status = side_buffers(g, &ni, &nj, &x, &y))) return status;
     for (i = 0; i < ni; ++i) { x[i] = X[i]; y[i] = 0.0; }
     status = eg2d_set_side(g, EG2D_SIDE_JMIN, x, y);
     for (i = 0; i < ni; ++i) y[i] = height;

@@ -10,13 +10,19 @@ extern "C" {
 #endif
 
 /* Simply connected domains of seed 003: "valley", "almost-convex", "swan",
- * "dome"; and the bilinear quadrilateral "quad" with corners (0,0), (2,0.2),
+ * "dome", "antenna" (as examples/antenna.toml: the stem gets 70% of the
+ * intervals of bottom and top; not in domain_names); and the bilinear quadrilateral "quad" with corners (0,0), (2,0.2),
  * (2.4,1.6), (0.3,1). Sets the four sides; returns the eg2d status. */
 int domain_set(eg2d_grid *grid, const char *name);
 
 /* The annulus r_inner <= r <= r_outer as an O-grid (JMIN inner, JMAX outer,
  * counter-clockwise from theta = 0). Sets the topology and both sides. */
 int domain_set_annulus(eg2d_grid *grid, double r_inner, double r_outer);
+
+/* Seed 003, B2: the three-leaved rose r = 0.3 (2 + cos 3t) inside the circle
+ * r = 9, as an O-grid (JMIN the rose, JMAX the circle, both counter-clockwise
+ * from t = 0, points uniform in arc length). Sets the topology and both sides. */
+int domain_set_rose(eg2d_grid *grid);
 
 /* A NACA 4-digit section ("0012") with a sharp trailing edge as an O-grid:
  * JMIN the section by arc length (from the trailing edge along the lower

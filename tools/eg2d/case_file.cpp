@@ -18,7 +18,7 @@ namespace eg2dtool {
 namespace {
 
 const std::vector<std::string> top_keys = {"title", "size", "topology", "system", "initial", "constants",
-                                           "solver", "sides", "controls", "output", "patches"};
+                                           "solver", "sides", "controls", "output", "patches", "interior_lines"};
 const std::vector<std::string> controls_keys = {"orthogonality", "wall_spacing",  "line_source", "point_source",
                                                 "source_arrays", "parameter_grid", "weight"};
 
@@ -250,6 +250,31 @@ void read_patches(const Fields &top, Case &c) {
     }
 }
 
+// [[interior_lines]]: direction ("xi", a column i = index; "eta", a row
+// j = index), index, and curve: the line's curve, written as a side is
+// (formulas in s, points, a chain of pieces, a distribution).
+void read_interior_lines(const Fields &top, Case &c) {
+    if (!top.has("interior_lines")) return;
+    const toml::array &a = top.array("interior_lines");
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        const Location l = locate(top.where(), "interior_lines[" + std::to_string(k) + "]", *a.get(k));
+        if (!a.get(k)->is_table()) throw Failure(EXIT_CASE, l.str() + ": expected a table, found " + type_name(*a.get(k)));
+        Fields f(*a.get(k)->as_table(), l, {"direction", "index", "curve"});
+        f.finish();
+        const bool xi = f.choice("direction", "", {"xi", "eta"}) == "xi";
+        const long index = f.integer("index", c.constants);
+        const long limit = (xi ? c.ni : c.nj) - 2;
+        if (index < 1 || index > limit)
+            throw Failure(EXIT_CASE, f.at("index").str() + ": index = " + std::to_string(index) + ": an interior " +
+                                         (xi ? "column" : "row") + " in [1, " + std::to_string(limit) + "]");
+        if (!f.has("curve")) throw Failure(EXIT_CASE, f.at("curve").str() + ": missing (the line's curve)");
+        SideSpec curve = parse_side(*f.node("curve"), -1, "curve", f.at("curve"), c.dir, c.constants);
+        for (const SidePiece &p : curve.pieces)
+            if (p.sliding) throw Failure(EXIT_CASE, p.where.str() + ": an interior line does not slide");
+        c.interior_lines.push_back({xi ? EG2D_XI : EG2D_ETA, static_cast<int>(index), std::move(curve), l});
+    }
+}
+
 void read_output(const Fields &top, Case &c, const std::string &stem) {
     std::string name = stem;
     std::vector<std::pair<std::string, Location>> wanted;
@@ -347,6 +372,7 @@ Case read_case(const std::string &text, const std::string &file, const std::stri
     read_sides(top, c);
     read_controls(top, c);
     read_patches(top, c);
+    read_interior_lines(top, c);
     read_output(top, c, stem_of(file));
     return c;
 }

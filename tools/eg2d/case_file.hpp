@@ -40,6 +40,13 @@ struct PatchSetting {  // eg2d_set_patch
     Location where;
 };
 
+struct InteriorLineSetting {  // eg2d_set_interior_line: the line's curve, placed like a side's
+    int direction;             // EG2D_XI (a column) / EG2D_ETA (a row)
+    int index;
+    SideSpec curve;
+    Location where;
+};
+
 struct Clustering {  // Khattri's (2006) clustering map in one direction (eg2d_clustering_map)
     int kind = -1;      // EG2D_CLUSTER_*; -1: uniform
     double a = 0.5, b = 0, strength = 0;
@@ -80,6 +87,7 @@ struct Case {
     bool parameter_grid = false;  // Khattri (2006): eg2d_set_parameter_grid from two clustering maps
     Clustering cluster_i, cluster_j;
     std::vector<PatchSetting> patches;  // [[patches]]: boundary conditions of the solver formats
+    std::vector<InteriorLineSetting> interior_lines;  // [[interior_lines]]
     std::vector<OutputFile> outputs;
     int svg_quality = -1;  // EG2D_QUALITY_* the picture is coloured by; -1: none
     Location svg_quality_at;

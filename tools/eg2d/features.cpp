@@ -86,6 +86,17 @@ const std::vector<Feature> &parameters() {
 #else
         EG2D_NO_PARAM("hermite_spacing", "top"),
 #endif
+#ifdef EG2D_PARAM_HERMITE_SIDES
+        EG2D_PARAM("hermite_sides", EG2D_PARAM_HERMITE_SIDES, "top"),
+        EG2D_PARAM("hermite_height_jmin", EG2D_PARAM_HERMITE_HEIGHT_JMIN, "top"),
+        EG2D_PARAM("hermite_height_imax", EG2D_PARAM_HERMITE_HEIGHT_IMAX, "top"),
+        EG2D_PARAM("hermite_height_jmax", EG2D_PARAM_HERMITE_HEIGHT_JMAX, "top"),
+        EG2D_PARAM("hermite_height_imin", EG2D_PARAM_HERMITE_HEIGHT_IMIN, "top"),
+#else
+        EG2D_NO_PARAM("hermite_sides", "top"), EG2D_NO_PARAM("hermite_height_jmin", "top"),
+        EG2D_NO_PARAM("hermite_height_imax", "top"), EG2D_NO_PARAM("hermite_height_jmax", "top"),
+        EG2D_NO_PARAM("hermite_height_imin", "top"),
+#endif
     };
     return t;
 }

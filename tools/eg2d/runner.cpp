@@ -358,6 +358,12 @@ int run_case(const Case &c, const RunOptions &o) {
     }
     for (const auto &p : c.patches)
         check(g, eg2d_set_patch(g, p.side, p.first, p.last, p.type, p.name.c_str()), p.where);
+    for (const auto &l : c.interior_lines) {
+        std::vector<double> x, y;
+        side_nodes(l.curve, l.direction == EG2D_XI ? c.nj : c.ni,
+                   c.topology == EG2D_TOPO_O && l.direction == EG2D_ETA, c.constants, x, y);
+        check(g, eg2d_set_interior_line(g, l.direction, l.index, x.data(), y.data()), l.where);
+    }
     apply_controls(g, c);
     check(g, eg2d_initialize(g, c.initial), c.initial_at);
 

@@ -31,6 +31,8 @@ PROTOTYPES = {
     # Initial grid
     "eg2d_initialize": (c_int, [grid_p, c_int]),
     "eg2d_set_coordinates": (c_int, [grid_p, double_p, double_p]),
+    "eg2d_set_interior_line": (c_int, [grid_p, c_int, c_int, double_p, double_p]),
+    "eg2d_clear_interior_lines": (c_int, [grid_p]),
     # System, solver and run settings
     "eg2d_set_system": (c_int, [grid_p, c_int]),
     "eg2d_set_solver": (c_int, [grid_p, c_int]),

@@ -84,6 +84,19 @@ class Grid(Handle):
         x, y = _vector(x, n, "x"), _vector(y, n, "y")
         self._check(lib.eg2d_set_side(self._handle(), int(side), _ptr(x), _ptr(y)))
 
+    def set_interior_line(self, direction, index, x, y):
+        """Holds the column i = index (direction XI, nj points) or the row j = index (ETA, ni
+        points) on the given points: TFI passes through them and every solver keeps them fixed."""
+        ni, nj = self.get_size()
+        n = {C.XI: nj, C.ETA: ni}.get(direction)
+        if n is None:  # the library reports an unknown direction
+            self._check(lib.eg2d_set_interior_line(self._handle(), int(direction), int(index), None, None))
+        x, y = _vector(x, n, "x"), _vector(y, n, "y")
+        self._check(lib.eg2d_set_interior_line(self._handle(), int(direction), int(index), _ptr(x), _ptr(y)))
+
+    def clear_interior_lines(self):
+        self._check(lib.eg2d_clear_interior_lines(self._handle()))
+
     def set_boundary(self, x, y):
         """The boundary ring from whole (ni, nj) arrays; only boundary nodes are read."""
         ni, nj = self.get_size()
