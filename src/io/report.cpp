@@ -33,7 +33,7 @@ struct Range {
 };
 
 struct WallStats {
-    int nodes = 0;  // wall nodes measured (stretch ends excluded)
+    int nodes = 0;  // wall nodes measured (stretch ends and corners excluded)
     int rows = 0;   // rows of the wall layer the growth is taken over
     Range height, growth, angle;
     std::vector<std::string> stretches;  // "name: SIDE first..last"
@@ -50,10 +50,16 @@ struct Report {
 
 double metric(const Grid &g, int id) { return find_quality_metric(id)->summary(g); }
 
+// A wall node turning by more than this is a corner (a blunt base's: 90
+// degrees): the wall has no normal there, nor, by central differences, at
+// the nodes beside it.
+constexpr double kCornerTurn = kPi / 4;
+
 // The wall stretches (patches of type wall): at each node but a stretch's
-// two ends (a trailing edge, a corner, where the tangent is not defined),
-// the first-cell height normal to the wall, the growth of the spacing along
-// the line leaving it, and that line's deviation from the wall normal.
+// two ends and its corners with the nodes beside them (a trailing edge, a
+// blunt base's corners, where the tangent is not defined), the first-cell
+// height normal to the wall, the growth of the spacing along the line
+// leaving it, and that line's deviation from the wall normal.
 WallStats wall_stats(const Grid &g) {
     WallStats w;
     // The wall layer: the rows held by a marched layer, else the first third.
@@ -63,7 +69,14 @@ WallStats wall_stats(const Grid &g) {
         if (p.type != PatchType::Wall) continue;
         w.stretches.push_back(format("%s: %s %d..%d", p.name.c_str(), side_name(p.side), p.first, p.last));
         const int n = g.side_length(p.side);
+        auto corner = [&](int q) {
+            if (q <= p.first || q >= p.last) return false;
+            const std::size_t a = side_node(g, p.side, q - 1), b = side_node(g, p.side, q), c = side_node(g, p.side, q + 1);
+            const double ux = g.x[b] - g.x[a], uy = g.y[b] - g.y[a], vx = g.x[c] - g.x[b], vy = g.y[c] - g.y[b];
+            return std::fabs(std::atan2(ux * vy - uy * vx, ux * vx + uy * vy)) > kCornerTurn;
+        };
         for (int q = p.first + 1; q < p.last; ++q) {
+            if (corner(q - 1) || corner(q) || corner(q + 1)) continue;
             const std::size_t k0 = side_node(g, p.side, q), kp = side_node(g, p.side, std::min(q + 1, n - 1)),
                               km = side_node(g, p.side, std::max(q - 1, 0));
             const double tx = g.x[kp] - g.x[km], ty = g.y[kp] - g.y[km], tl = std::hypot(tx, ty);
@@ -123,7 +136,7 @@ void write_report(const WriteRequest &r, OutputFile &out) {
     } else {
         for (const std::string &s : w.stretches) out.print("wall            %s\n", s.c_str());
         out.print("first cell      height normal to the wall min %.4e, max %.4e, mean %.4e (%d nodes, stretch "
-                  "ends excluded)\n",
+                  "ends and corners excluded)\n",
                   w.height.min, w.height.max, w.height.mean(), w.nodes);
         if (w.growth.n)
             out.print("wall growth     largest ratio of consecutive spacings off the wall %.4f (rows 1..%d)\n",

@@ -1109,29 +1109,50 @@ class Airfoil(unittest.TestCase):
                         self.assertIn(f'checking BC "{bc}"', out)
                     self.assertIn('checking 1to1 connectivity "wake_lower"', out)
                     self.assertIn('checking 1to1 connectivity "wake_upper"', out)
-            checkmesh = shutil_which("checkMesh")
-            if checkmesh:  # every level: only the aspect ratio a y+ 1 layer must have fails
-                env = dict(os.environ)
-                env.setdefault("WM_PROJECT_DIR", "/usr/share/openfoam")
-                for size in ("385x97", "193x49", "97x25"):
-                    p = subprocess.run([checkmesh, "-case", os.path.join(d, f"naca0012-{size}_foam")],
-                                       capture_output=True, text=True, env=env)
-                    out = p.stdout
-                    self.assertIn("Failed 1 mesh checks.", out, size)
-                    self.assertIn("High aspect ratio cells found", out, size)
-                    nonorth = float(re.search(r"Mesh non-orthogonality Max: ([0-9.eE+-]+)", out).group(1))
-                    skew = float(re.search(r"Max skewness = ([0-9.eE+-]+)", out).group(1))
-                    self.assertLessEqual(nonorth, 70.0, size)
-                    self.assertLessEqual(skew, 4.0, size)
-                    self.assertNotIn("negative", out.lower().replace("negative volumes: 0", ""), size)
+            for size in ("385x97", "193x49", "97x25"):  # every level
+                self.check_mesh(os.path.join(d, f"naca0012-{size}_foam"))
+
+    def check_mesh(self, case):
+        """OpenFOAM's checkMesh on a case directory: no failed check but the
+        aspect ratio a y+ 1 layer must have, no negative volume,
+        non-orthogonality at most 70 degrees, skewness at most 4."""
+        checkmesh = shutil_which("checkMesh")
+        if not checkmesh:
+            return
+        env = dict(os.environ)
+        env.setdefault("WM_PROJECT_DIR", "/usr/share/openfoam")
+        out = subprocess.run([checkmesh, "-case", case], capture_output=True, text=True, env=env).stdout
+        failed = re.search(r"Failed (\d+) mesh checks", out)
+        if failed:
+            self.assertEqual(failed.group(1), "1", case)
+            self.assertIn("High aspect ratio cells found", out, case)
+        else:
+            self.assertIn("Mesh OK.", out, case)
+        nonorth = float(re.search(r"Mesh non-orthogonality Max: ([0-9.eE+-]+)", out).group(1))
+        skew = float(re.search(r"Max skewness = ([0-9.eE+-]+)", out).group(1))
+        self.assertLessEqual(nonorth, 70.0, case)
+        self.assertLessEqual(skew, 4.0, case)
+        self.assertNotIn("negative", out.lower().replace("negative volumes: 0", ""), case)
 
     def test_o_grid_and_open_trailing_edges(self):
+        import math
         with tempfile.TemporaryDirectory() as d:
             self.airfoil(d, "0012", "--topology", "o", "--size", "257x129", "--yplus", "1", "--reynolds", "6e6",
-                         "--levels", "2", "--format", "su2,vts")
+                         "--levels", "2", "--format", "su2,vts,openfoam")
             r = self.report(d, "naca0012-257x129")
             self.assertEqual(r["folded_cells"], 0)
+            cf = (2 * math.log10(6e6) - 0.65) ** -2.3
+            h = 1 / (6e6 * math.sqrt(cf / 2))
+            self.assertLess(abs(r["wall"]["first_cell_height"]["min"] / h - 1), 0.05)
+            self.assertLess(abs(r["wall"]["first_cell_height"]["max"] / h - 1), 0.05)
+            self.assertLessEqual(r["wall"]["angle_deviation_deg"]["max"], 1.0)
             self.assertTrue(os.path.isfile(os.path.join(d, "naca0012-129x65.su2")))
+            fine = vts_points(os.path.join(d, "naca0012-257x129.vts"))  # the far field 100 chords out or more
+            outer, body = fine[257 * 128:], fine[:257]
+            self.assertGreaterEqual(min(math.dist(p, q) for p in outer for q in body[::4]), 100 - 1e-6)
+            # the standard section's open trailing edge kept blunt: checkMesh passes on both levels
+            for size in ("257x129", "129x65"):
+                self.check_mesh(os.path.join(d, f"naca0012-{size}_foam"))
             selig = os.path.join(d, "open.dat")
             naca0012_selig(selig)
             out = self.airfoil(d, selig, "--topology", "o", "--size", "257x129", "--first-cell", "1e-5",

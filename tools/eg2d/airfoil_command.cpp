@@ -31,7 +31,8 @@ const char *const airfoil_help =
     "\n"
     "An O- or C-grid round an airfoil (eg2d_set_airfoil), wall-resolved, written as a\n"
     "family of nested grids in the formats flow solvers read.\n"
-    "  SOURCE         a NACA 4-digit code (0012: the section closed sharply at chord 1)\n"
+    "  SOURCE         a NACA 4-digit code (0012: closed sharply at chord 1 on C-grids and with\n"
+    "                 --te sharpen; on O-grids the standard open section, its base blunt)\n"
     "                 or a Selig or Lednicer coordinate file\n"
     "  --size         the finest grid, NI x NJ nodes (on a C-grid NI counts both cut sides)\n"
     "  --yplus, --reynolds\n"
@@ -264,7 +265,12 @@ int run_airfoil(int argc, char **argv) {
         throw Failure(EXIT_GEOMETRY, std::string("airfoil: ") + eg2d_last_error(nullptr));
     eg2d_curve *raw = nullptr;
     const bool naca = is_naca4(a.source);
-    const int st = naca ? eg2d_curve_naca4(a.source.c_str(), EG2D_NACA_CLOSED_TE, &raw)
+    // A NACA code closes sharply where the trailing edge is to be sharp (C-grids,
+    // --te sharpen); an O-grid's default is the standard open section with its
+    // base kept blunt: round a sharp edge the O-grid's cells beside the edge's
+    // line turn 90 degrees across one cell, which OpenFOAM's checkMesh fails
+    // (skewness 17 on NACA 0012 257x129), while at a blunt base it is 2.0.
+    const int st = naca ? eg2d_curve_naca4(a.source.c_str(), a.te == "sharpen" ? EG2D_NACA_CLOSED_TE : 0, &raw)
                         : eg2d_curve_read_airfoil(a.source.c_str(), &raw);
     if (st != EG2D_OK) throw Failure(st == EG2D_ERR_IO ? EXIT_IO : EXIT_GEOMETRY, std::string("airfoil: ") + eg2d_last_error(nullptr));
     std::unique_ptr<eg2d_curve, CurveDeleter> section(raw);
