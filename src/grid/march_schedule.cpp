@@ -1,6 +1,8 @@
 #include "grid/march_schedule.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "base/error.hpp"
 
@@ -25,47 +27,80 @@ double covering_ratio(int n, double first, double distance) {
     return 0.5 * (lo + hi);
 }
 
-std::vector<double> graded_cells(int n, double first, double last, double distance) {
-    const double la = std::log(first), slope = (std::log(last) - la) / (n - 1);
-    auto cells = [&](double q) {
-        std::vector<double> c(static_cast<std::size_t>(n));
-        for (int k = 0; k < n; ++k) c[static_cast<std::size_t>(k)] = std::exp(la + slope * k + q * k * (k - (n - 1)));
-        return c;
+namespace {
+
+// The x with sum_k exp(a_k + b_k x) = target, all b_k of one sign (not all
+// 0), x in [lo, hi] where the sum crosses the target: Newton on the log of
+// the sum (convex in x), kept inside the bracket, which each step narrows.
+// 5-10 steps where bisection took 100 (NACA 0012 1793x513: 3600 columns of
+// 341 cells).
+double solve_exp_sum(const std::vector<double> &a, const std::vector<double> &b, double target, double lo,
+                     double hi) {
+    const double goal = std::log(target);
+    auto eval = [&](double x, double &g, double &slope) {
+        double top = -std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < a.size(); ++k) top = std::max(top, a[k] + b[k] * x);
+        double sum = 0.0, weighted = 0.0;
+        for (std::size_t k = 0; k < a.size(); ++k) {
+            const double e = std::exp(a[k] + b[k] * x - top);
+            sum += e;
+            weighted += b[k] * e;
+        }
+        g = top + std::log(sum) - goal;
+        slope = weighted / sum;
     };
-    auto sum = [](const std::vector<double> &c) {
-        double t = 0.0;
-        for (double v : c) t += v;
-        return t;
-    };
-    // The sum falls as q rises (k (k - (n-1)) <= 0): bracket, then bisect.
-    double lo = -1.0, hi = 1.0;
-    while (sum(cells(lo)) < distance) lo *= 2.0;
-    while (sum(cells(hi)) > distance) hi *= 2.0;
+    const bool rising = b.back() + b.front() > 0.0;
+    double x = 0.5 * (lo + hi);
     for (int it = 0; it < 100; ++it) {
-        const double q = 0.5 * (lo + hi);
-        (sum(cells(q)) > distance ? lo : hi) = q;
+        double g, slope;
+        eval(x, g, slope);
+        ((g > 0.0) == rising ? hi : lo) = x;
+        double next = slope != 0.0 ? x - g / slope : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        if (std::fabs(next - x) <= 1e-15 * std::max(1.0, std::fabs(x)) || hi - lo <= 1e-15 * std::max(1.0, std::fabs(x)))
+            return next;
+        x = next;
     }
-    std::vector<double> c = cells(0.5 * (lo + hi));
-    const double scale = distance / sum(c);  // the bisection's last digits
-    for (double &v : c) v *= scale;
+    return x;
+}
+
+}  // namespace
+
+std::vector<double> graded_cells(int n, double first, double last, double distance) {
+    // cell k = exp(ln first + slope k + q k (k - (n-1))): the sum falls as q rises.
+    const double la = std::log(first), slope = (std::log(last) - la) / (n - 1);
+    std::vector<double> a(static_cast<std::size_t>(n)), b(a.size());
+    for (int k = 0; k < n; ++k) {
+        a[static_cast<std::size_t>(k)] = la + slope * k;
+        b[static_cast<std::size_t>(k)] = static_cast<double>(k) * (k - (n - 1));
+    }
+    b.front() = b.back() = -1e-300;  // 0 at both ends: the sign for solve_exp_sum
+    // A bracket: the middle cell's log can move by at most the span of the logs.
+    const double span = 2.0 * (std::fabs(std::log(distance)) + std::fabs(la) + std::fabs(std::log(last)) + 50.0);
+    const double mid = 0.25 * (n - 1.0) * (n - 1.0);
+    const double q = solve_exp_sum(a, b, distance, -span / mid, span / mid);
+    std::vector<double> c(a.size());
+    double sum = 0.0;
+    for (std::size_t k = 0; k < c.size(); ++k) sum += (c[k] = std::exp(a[k] + b[k] * q));
+    for (double &v : c) v *= distance / sum;  // the solve's last digits
     return c;
 }
 
 double largest_graded_first(int n, double last, double distance) {
-    // first exp(q k^2) with first exp(q (n-1)^2) = last: the sum rises with first.
-    auto sum = [&](double first) {
-        const double q = std::log(last / first) / ((n - 1.0) * (n - 1.0));
-        double t = 0.0;
-        for (int k = 0; k < n; ++k) t += first * std::exp(q * k * k);
-        return t;
-    };
-    double lo = 0.0, hi = std::min(last, distance / n);
-    if (sum(hi) <= distance) return hi;
-    for (int it = 0; it < 100; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        (sum(mid) < distance ? lo : hi) = mid;
+    // first exp(q k^2) with first exp(q (n-1)^2) = last, u = ln first: cell k
+    // = exp(ln last t_k + u (1 - t_k)), t_k = (k / (n-1))^2; the sum rises with u.
+    const double top = std::log(std::min(last, distance / n));
+    std::vector<double> a(static_cast<std::size_t>(n)), b(a.size());
+    for (int k = 0; k < n; ++k) {
+        const double t = (static_cast<double>(k) / (n - 1)) * (static_cast<double>(k) / (n - 1));
+        a[static_cast<std::size_t>(k)] = std::log(last) * t;
+        b[static_cast<std::size_t>(k)] = 1.0 - t;
     }
-    return lo;
+    b.back() = 1e-300;
+    double total = 0.0;
+    for (std::size_t k = 0; k < a.size(); ++k) total += std::exp(a[k] + b[k] * top);
+    if (total <= distance) return std::exp(top);
+    return std::exp(solve_exp_sum(a, b, distance, top - 800.0, top));
 }
 
 std::vector<double> march_schedule(int layers, double distance, double first_height, double growth) {
