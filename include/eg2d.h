@@ -960,8 +960,11 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   layer (Steger & Sorenson 1980). At initialisation the hyperbolic march
  *   (EG2D_INIT_HYPERBOLIC, first cell h, the ratio that reaches the least
  *   distance of JMAX from JMIN in nj-1 layers) makes a grid; its rows
- *   1..2(nj-1)/3 are put back along each grid line at geometric distances
- *   from the line's first height to the layer's top, and held; the rows
+ *   1..2(nj-1)/3 are put back along each grid line from the line's first
+ *   height to the march's own last cell below the layer's top (the log of
+ *   the cells a quadratic in the row, so the ratio of consecutive cells
+ *   changes linearly and the spacing runs on into the rows above), and
+ *   held; the rows
  *   above are solved with the controls Phi, Psi that make the marched grid
  *   an exact solution, kept within |Phi|, |Psi| <= 1 (frozen for the run),
  *   which bend it onto the JMAX set. The first cells have the height h and
@@ -972,10 +975,17 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   made (EG2D_ERR_FOLDED or EG2D_ERR_ARGUMENT of EG2D_INIT_HYPERBOLIC)
  *   leaves the control below. JMAX keeps its line, but its nodes move
  *   along it to where the march's lines reach it (the ends stay). On a
- *   C-grid the cut is held with the layer and its first cells grow
- *   downstream as h sqrt(ds / ds_te) (ds the cut's spacing, ds_te that at
- *   the trailing edge), and IMIN and IMAX move their nodes like JMAX. The run says which layer it made, the retries, the
- *   moves and any clipping (eg2d_get_run_event).
+ *   C-grid the march starts at EG2D_PARAM_MARCH_SMOOTHING 4 (the cut's
+ *   lines fan out from the trailing edge; then 8, 2, 1 and the value set),
+ *   the cut is held with the layer, and its first cells are h up to 0.03
+ *   layer thicknesses from the trailing edge, then grow as (ds / ds_0)^3
+ *   (ds the cut's spacing, ds_0 that where they start to grow) up to the
+ *   largest whose cells need not shrink, which the far wake keeps: its
+ *   lines are straightened and their cells take one shape, so the cells
+ *   of neighbouring lines stay alike (OpenFOAM's checkMesh passes the
+ *   every-other-node coarser grids). IMIN and IMAX move their nodes like
+ *   JMAX. The run says which layer it made, the retries, the moves and any
+ *   clipping (eg2d_get_run_event).
  * WALL with EG2D_PARAM_WALL_LAYER = 3 (the default): the hybrid layer of 2
  *   is made and kept on an O- or C-grid when the march's rows grow by at
  *   most 1.25 and its first cells are within 1% of h and 0.5 degrees of the
