@@ -207,7 +207,17 @@ def check_report(d, name, ni, nj, wake):
         nodes, rows = range(1, ni - 1), max(2, (nj - 1) // 3)  # "bottom" (the lid is on JMAX: checked by count)
     else:
         nodes, rows = (range(wake + 1, ni - 1 - wake) if name == "c" else range(1, ni - 1)), max(2, (nj - 1) // 3)
-    i = np.array(list(nodes))
+    # Corners (the wall turning by more than 45 degrees at an inner node) and
+    # the nodes beside them are left out: the wall has no normal there.
+    first, last = nodes[0] - 1, nodes[-1] + 1
+
+    def corner(q):
+        if q <= first or q >= last:
+            return False
+        u = (X[0, q] - X[0, q - 1], Y[0, q] - Y[0, q - 1])
+        v = (X[0, q + 1] - X[0, q], Y[0, q + 1] - Y[0, q])
+        return abs(np.arctan2(u[0] * v[1] - u[1] * v[0], u[0] * v[0] + u[1] * v[1])) > np.pi / 4
+    i = np.array([q for q in nodes if not (corner(q - 1) or corner(q) or corner(q + 1))])
     t = np.stack([X[0, i + 1] - X[0, i - 1], Y[0, i + 1] - Y[0, i - 1]])
     dvec = np.stack([X[1, i] - X[0, i], Y[1, i] - Y[0, i]])
     h = np.abs(t[0] * dvec[1] - t[1] * dvec[0]) / np.hypot(*t)
