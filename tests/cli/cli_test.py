@@ -66,9 +66,12 @@ class Example(unittest.TestCase):
         with tempfile.TemporaryDirectory() as out:
             code, stdout, stderr = run("run", case, "-o", out, "--size", self.size)
             self.assertEqual(code, 0, stdout + stderr)
-            self.assertRegex(stdout, r"converged in \d+ iterations")
             with open(case) as f:
-                checks_folds = "fold_check = false" not in f.read()
+                text = f.read()
+            checks_folds = "fold_check = false" not in text
+            # solve = false: the start grid alone (the gallery's pictures of TFI and Hermite TFI)
+            self.assertRegex(stdout, r"not solved \(solve = false\)" if "solve = false" in text
+                             else r"converged in \d+ iterations")
             if checks_folds:  # (a case that turns the check off says why in its comment)
                 self.assertIn("quality: 0 folded cells", stdout)
             written = re.findall(r"^wrote (.*)$", stdout, re.M)
@@ -114,7 +117,7 @@ class ErrorMessages(unittest.TestCase):
     def test_unknown_key(self):
         self.check('size = [9, 9]\nsovler = "psor"\n' + self.GOOD_SIDES, 3,
                    "CASE:2:1: key 'sovler': unknown key (expected one of: title, size, topology, system, "
-                   "initial, constants, solver, sides, controls, output, patches, interior_lines, "
+                   "initial, solve, constants, solver, sides, controls, output, patches, interior_lines, "
                    "variational_area, variational_orthogonality, variational_spacing, hermite_spacing, "
                    "hermite_sides, hermite_height_jmin, hermite_height_imax, hermite_height_jmax, "
                    "hermite_height_imin)")
@@ -580,6 +583,27 @@ class CommandLine(unittest.TestCase):
             self.assertRegex(err, r"^eg2d: .*: eg2d_solve: the converged grid has \d+ folded cells; .*\(no files written\)\n$")
             self.assertRegex(out, r"quality: [1-9]\d* folded cells")
             self.assertFalse(os.path.exists(os.path.join(d, "out")))
+
+    def test_start_grid_only(self):
+        # solve = false writes the start grid as it is, checked for folds like a solved one:
+        # linear TFI folds the antenna at its reflex corners (102 cells at 33 x 33)
+        with tempfile.TemporaryDirectory() as d:
+            path = case_from_example(d, "antenna", ('system = "winslow"', 'solve = false'))
+            code, out, err = run("run", path, "-o", os.path.join(d, "out"), "--quiet", "--size", "33x33")
+            self.assertEqual(code, 7, out + err)
+            self.assertRegex(out, r"tfi start grid, not solved \(solve = false\)\nquality: 102 folded cells")
+            self.assertNotIn("converged", out)
+            self.assertRegex(err, r"^eg2d: .*: the start grid has 102 folded cells \(solve = false; no files written\)\n$")
+            self.assertFalse(os.path.exists(os.path.join(d, "out")))
+            path = case_from_example(d, "antenna", ('system = "winslow"', 'solve = false'),
+                                     ("[solver]", "[solver]\nfold_check = false"))
+            code, out, err = run("run", path, "-o", os.path.join(d, "out"), "--quiet", "--size", "33x33")
+            self.assertEqual(code, 0, out + err)
+            self.assertRegex(out, r"wrote .*case\.svg")
+            path = case_from_example(d, "swan", ('system = "winslow"', 'solve = 1'))
+            code, out, err = run("run", path, "-o", os.path.join(d, "out"))
+            self.assertEqual(code, 3, out + err)
+            self.assertIn("key 'solve': expected a boolean", err)
 
     def test_diverged_exit_6(self):
         # point SOR over-relaxed far beyond Winslow's stability

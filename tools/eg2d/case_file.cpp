@@ -17,8 +17,8 @@ namespace eg2dtool {
 
 namespace {
 
-const std::vector<std::string> top_keys = {"title", "size", "topology", "system", "initial", "constants",
-                                           "solver", "sides", "controls", "output", "patches", "interior_lines"};
+const std::vector<std::string> top_keys = {"title", "size", "topology", "system", "initial", "solve",
+                                           "constants", "solver", "sides", "controls", "output", "patches", "interior_lines"};
 const std::vector<std::string> controls_keys = {"orthogonality", "wall_spacing",  "line_source", "point_source",
                                                 "source_arrays", "parameter_grid", "weight"};
 
@@ -367,6 +367,7 @@ Case read_case(const std::string &text, const std::string &file, const std::stri
     c.topology_at = top.at("topology");
     c.system_at = top.at("system");
     c.initial_at = top.at("initial");
+    c.solve = top.boolean("solve", true);
     read_parameters(top, "top", c);
     read_solver(top, c);
     read_sides(top, c);

@@ -69,6 +69,7 @@ struct Case {
     Location size_at;
     int topology = 0, system = 1, initial = 0;
     Location topology_at, system_at, initial_at;
+    bool solve = true;  // false: the start grid is the result (to show an initializer alone)
     int solver = EG2D_SOLVER_MULTIGRID;  // the library's default
     Location solver_at;
     std::vector<ParameterSetting> parameters;

@@ -1,8 +1,17 @@
 # Writes OUTPUT, a C++ file holding every case file of EXAMPLES (a ;-list) as a
 # raw string: the demo gallery is the examples, not a second copy of them.
 set(body "")
+# In the order of their names, as the gallery lists them: sorting the paths
+# would put dome-variational-area.toml before dome.toml ('-' < '.').
+set(names "")
 foreach(path IN LISTS EXAMPLES)
   get_filename_component(name "${path}" NAME_WE)
+  get_filename_component(dir "${path}" DIRECTORY)
+  list(APPEND names "${name}")
+endforeach()
+list(SORT names)
+foreach(name IN LISTS names)
+  set(path "${dir}/${name}.toml")
   file(READ "${path}" text)
   string(FIND "${text}" ")eg2d\"" clash)
   if(NOT clash EQUAL -1)

@@ -128,7 +128,9 @@ def main():
             folds = next((l for l in summary if "folded cells" in l), "")
             md += ["```", *summary, "```", ""]
             if folds:
-                md += [f"What the picture shows: the converged grid; {folds.split(',')[0].replace('quality: ', '')}.", ""]
+                # a case with solve = false shows its start grid, not a solved one
+                what = "the start grid, not solved" if "not solved" in summary[0] else "the converged grid"
+                md += [f"What the picture shows: {what}; {folds.split(',')[0].replace('quality: ', '')}.", ""]
     with open(os.path.join(src, "docs", "gallery.md"), "w") as f:
         f.write("\n".join(md))
 

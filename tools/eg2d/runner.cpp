@@ -336,6 +336,28 @@ static void print_what_ran(const eg2d_grid *g) {
     }
 }
 
+// solve = false: the start grid is the result, so an initializer (TFI,
+// Hermite TFI) can be seen, and drawn in the gallery, as it is. It is
+// checked for folds like a solved grid (fold_check), since nothing after it
+// would untangle them.
+static int write_start_grid(eg2d_grid *g, const Case &c, const RunOptions &o) {
+    std::printf("%s: %d x %d %s grid, %s start grid, not solved (solve = false)\n", c.title.c_str(), c.ni, c.nj,
+                c.topology == EG2D_TOPO_O ? "O" : c.topology == EG2D_TOPO_C ? "C" : "single-block",
+                name_of(initializers(), c.initial));
+    preflight(c, o);
+    print_quality(g, c.topology);
+    double folded = 0, fold_check = 1;
+    eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &folded);
+    eg2d_get_parameter(g, EG2D_PARAM_FOLD_CHECK, &fold_check);
+    if (folded > 0 && fold_check != 0)
+        throw Failure(EXIT_FOLDED, c.file + ": the start grid has " + fmt(folded) +
+                                       " folded cells (solve = false; no files written)");
+    double tolerance = 0;  // the history picture's dashed line (the history itself is empty)
+    eg2d_get_parameter(g, EG2D_PARAM_TOLERANCE, &tolerance);
+    write_outputs(g, c, o, tool_texts(g, c, {}, tolerance));
+    return EXIT_OK;
+}
+
 int run_case(const Case &c, const RunOptions &o) {
     eg2d_grid *raw = nullptr;
     check(nullptr, eg2d_create(c.ni, c.nj, &raw), c.size_at);
@@ -366,6 +388,7 @@ int run_case(const Case &c, const RunOptions &o) {
     }
     apply_controls(g, c);
     check(g, eg2d_initialize(g, c.initial), c.initial_at);
+    if (!c.solve) return write_start_grid(g, c, o);
 
     double tolerance = 0;
     eg2d_get_parameter(g, EG2D_PARAM_TOLERANCE, &tolerance);
