@@ -19,13 +19,12 @@ namespace {
 // far apart in shape from column to column where they are 1e4-1e6 times
 // wider than high, and OpenFOAM's non-orthogonality (measured between
 // cell centres) reached 84-89 degrees on the every-other-node coarser
-// levels of 385x97 (start 0.25-0.5, power 1-1.5) against 0 faces above
-// 70 with (0.03, 3) and 2 with (0.03, 2); a faster one tilts the held
-// rows across the narrow columns beside the trailing edge (wake skew 89
-// degrees at 769x193 to 500 chords with (0.03, 3) and no straightening,
-// see straightened_column). The first cells growing as (ds / ds_te)^(1/2)
-// all along (before): wake skew up to 51.5 degrees, non-orthogonality
-// 69.6 / 83.6 / 88.0 on 385x97's three levels.
+// levels of 385x97 (start 0.25-0.5, power 1-1.5; 71-75 with (0.06, 3))
+// against no face above 70 with (0.03, 3) and one pair at 70.6 with
+// (0.03, 2). The first cells growing as (ds / ds_te)^(1/2) all along
+// (before): the held rows tilted across the narrow columns beside the
+// trailing edge (wake skew 46-52 degrees at 385x97 and 769x193 to 500
+// chords), non-orthogonality 69.6 / 83.7 / 88.1 on 385x97's three levels.
 constexpr double kRampStart = 0.03;
 constexpr double kRampPower = 3.0;
 // Cut columns are straightened over this many layer thicknesses from the
