@@ -31,7 +31,8 @@ constexpr double kRampPower = 3.0;
 // trailing edge (1, 4 and 16 gave the same figures within 0.1 degree).
 constexpr double kStraightLength = 4.0;
 
-// Distance of each cut node from the trailing edge along the cut (0 on the body).
+}  // namespace
+
 std::vector<double> cut_distances(const Grid &m) {
     const int ni = m.ni(), wake = m.connectivity().wake();
     std::vector<double> d(static_cast<std::size_t>(ni), 0.0);
@@ -48,8 +49,6 @@ std::vector<double> cut_distances(const Grid &m) {
 double layer_thickness(const Grid &m, int rows) {
     return arc_lengths(grid_column(m, m.connectivity().wake(), rows)).back();
 }
-
-}  // namespace
 
 std::vector<double> cut_first_heights(const Grid &m, double h, int rows) {
     const int ni = m.ni(), wake = m.connectivity().wake();
@@ -69,12 +68,11 @@ std::vector<double> cut_first_heights(const Grid &m, double h, int rows) {
     return first;
 }
 
-std::vector<Vec2> straightened_column(const Grid &m, int i, int rows) {
+std::vector<Vec2> straightened_column(const Grid &m, int i, int rows, double along, double thickness) {
     std::vector<Vec2> column = grid_column(m, i, rows);
-    const double along = cut_distances(m)[static_cast<std::size_t>(i)];
     if (along <= 0.0) return column;
     const std::vector<double> arc = arc_lengths(column);
-    const double w = std::min(1.0, along / (kStraightLength * layer_thickness(m, rows)));
+    const double w = std::min(1.0, along / (kStraightLength * thickness));
     const Vec2 a = column.front(), b = column.back();
     for (std::size_t k = 1; k + 1 < column.size(); ++k) {
         const double t = arc[k] / arc.back();

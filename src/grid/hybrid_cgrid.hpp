@@ -19,8 +19,9 @@ namespace eg2d {
 // not, and the columns there have one shape.
 std::vector<double> cut_first_heights(const Grid &m, double h, int rows);
 
-// Column i of m, rows 0..rows, as the line its held rows are put back on:
-// on the cut, moved towards the straight segment between its ends, fully
+// Column i of m, rows 0..rows, as the line its held rows are put back on
+// (along: its cut distance, thickness: layer_thickness, both computed once
+// per layer by the caller): on the cut, moved towards the straight segment between its ends, fully
 // a few layer thicknesses from the trailing edge. The march's cut columns
 // bend near the outflow sides, which the march keeps straight, and rows
 // put on bent columns beside straight ones differ in shape from column to
@@ -28,7 +29,14 @@ std::vector<double> cut_first_heights(const Grid &m, double h, int rows);
 // of NACA 0012 385x97); straightened all along, the cut column beside the
 // trailing edge nearly crossed the trailing edge's (wake skew 89 degrees
 // at 385x97 to 500 chords).
-std::vector<Vec2> straightened_column(const Grid &m, int i, int rows);
+std::vector<Vec2> straightened_column(const Grid &m, int i, int rows, double along, double thickness);
+
+// Each JMIN node's distance from the trailing edge along a C-grid's cut (0
+// on the body and on other topologies): straightened_column's `along`.
+std::vector<double> cut_distances(const Grid &m);
+// The length of the trailing edge's column of m up to row `rows`: the held
+// layer's thickness there, straightened_column's `thickness`.
+double layer_thickness(const Grid &m, int rows);
 
 // Side i (0 or ni-1) of g keeps its line; its nodes move along it: rows up
 // to `rows` at the distances of the march m's column i, the rows above at

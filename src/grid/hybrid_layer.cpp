@@ -119,9 +119,11 @@ void respace_layer(Grid &m, int rows, const std::vector<double> &first) {
     for (int i = wake - 1; i >= 0; --i) order.push_back(i);
     for (int i = ni - wake; i < ni; ++i) order.push_back(i);
     std::vector<double> shape;  // cells over length of the side's first column at the largest first cell
+    const std::vector<double> along = cut_distances(m);
+    const double thickness = wake > 0 ? layer_thickness(m, rows) : 0.0;
     for (int i : order) {
         if (i == wake - 1 || i == ni - wake) shape.clear();
-        const std::vector<Vec2> column = straightened_column(m, i, rows);
+        const std::vector<Vec2> column = straightened_column(m, i, rows, along[static_cast<std::size_t>(i)], thickness);
         const std::vector<double> marched = arc_lengths(grid_column(m, i, rows));
         const double total = arc_lengths(column).back();
         const double last = (marched.back() - marched[static_cast<std::size_t>(rows - 1)]) * total / marched.back();
