@@ -167,13 +167,17 @@ private:
             system_ = p.system;
             coarsest_ = coarsest;
             started_ = false;
+            clip_noted_ = false;
         }
         const Level fine = p.level();
         levels_[0].level = fine;
         levels_[0].level.conn = &levels_[0].conn;
         attach_functional(levels_, fine.functional);
-        for (std::size_t l = 1; l < levels_.size(); ++l)
+        long clipped = 0;
+        for (std::size_t l = 1; l < levels_.size(); ++l) {
             restrict_controls(levels_[l - 1].level.controls, levels_[l - 1].conn, levels_[l]);
+            clipped += clip_coarse_stretching(levels_[l]);
+        }
         levels_[0].singular = singular_nodes(conn, fine.x, fine.y);
         for (std::size_t l = 1; l < levels_.size(); ++l) levels_[l].singular = coarse_nodes(levels_[l - 1].singular, levels_[l]);
         for (MgLevel &m : levels_) m.trailing_edge = cut_ends(m.conn);
@@ -185,6 +189,14 @@ private:
             if (levels_.size() == 1 && report_->events.empty())
                 note(format("multigrid: the %dx%d grid has no coarse level (a direction of %d nodes or fewer "
                             "stays); a cycle is its smoothing sweeps", conn.ni(), conn.nj(), coarsest));
+        }
+        // Said once per hierarchy: a dynamic control is restricted again
+        // every iteration.
+        if (clipped > 0 && !clip_noted_) {
+            clip_noted_ = true;
+            note(format("multigrid: the coarse levels' |Phi|, |Psi| clipped to %g at %ld node(s), where coarsening "
+                        "doubled them past it (the coarse corrections are less accurate there; the fine grid's "
+                        "equations are unchanged)", kMaxCoarseStretching, clipped));
         }
         pre_ = static_cast<int>(p.settings.mg_pre_smooth);
         post_ = static_cast<int>(p.settings.mg_post_smooth);
@@ -308,9 +320,10 @@ private:
     RunReport *report_ = nullptr;  // the run's, set by prepare()
     System system_ = System::Winslow;
     int coarsest_ = 0, pre_ = 1, post_ = 1, gamma_ = 1;
-    int allowed_ = -1;  // the coarsenings the controls' stretching allowed (prepare)
     double floor_ = 0.0;
     bool started_ = false;
+    int allowed_ = -1;  // the coarsenings the controls' stretching allowed (prepare)
+    bool clip_noted_ = false;  // the coarse controls' clipping was reported for this hierarchy
     bool sweeps_only_ = false;          // a guarded cycle failed: sweeps until reset()
     long folded_ = -1;                  // folded cells of the grid the guarded cycles started from
     double stall_best_ = std::numeric_limits<double>::infinity();

@@ -34,6 +34,7 @@ struct MgLevel {
     Level level;                     // the operator's view of this level
     LineWork work;
     IluWork ilu;
+    bool clip = false;               // built past the controls' stretching limit: clip_coarse_stretching applies
     std::size_t size() const { return static_cast<std::size_t>(conn.ni()) * conn.nj(); }
 };
 
@@ -42,7 +43,9 @@ struct MgLevel {
 // `coarsest`: a direction is not coarsened once it has <= coarsest nodes.
 // `stretch_i`, `stretch_j`: the largest |Phi| and |Psi| of the fine grid's
 // controls (coarse_stretch): a direction stops coarsening before either
-// would pass kMaxCoarseStretching on a coarse level.
+// would pass kMaxCoarseStretching on a coarse level, unless that level would
+// still have more than kLargeCoarsest nodes; then coarsening goes on past the
+// limit, and the levels past it are marked `clip` (clip_coarse_stretching).
 std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, int coarsest, double stretch_i = 0.0,
                                      double stretch_j = 0.0);
 
@@ -56,6 +59,28 @@ constexpr double kMaxCoarseStretching = 1.0;
 // stays below this: the annulus's -0.26 (above) must not pass, the hybrid
 // layer's 0.12 (grid/hybrid_layer.hpp) may, twice.
 constexpr double kMaxHeldStretching = 0.5;
+
+// A coarsest level this large costs more than it brings: its solve is the
+// smoother alone (up to 50 sweeps, multigrid_smoother.cpp), several times a
+// W cycle, and on a large level those sweeps barely reduce its residual.
+// The TMR-class hybrid C-grid 1793x513 (500 chords, first cell 4e-7)
+// stopped at 225x513 for the stretching (its march's controls, clipped to
+// |Psi| <= 1, at 5% of the nodes): 50 sweeps per visit took the coarse
+// residual down by 1.3-4x only, 80% of the run, 7 cycles in 12.9 CPU s.
+// Going on with the coarse controls clipped: 5 levels down to 113x34, the
+// same 7 cycles in 2.9 s. Smaller coarsest levels keep the limit, where
+// clipping cost more than it saved: the hybrid C-grid 385x97 (coarsest
+// 97x49) took more than 10 cycles instead of 4, and the marched wall layer
+// on a C-grid 129x33 folded.
+constexpr std::size_t kLargeCoarsest = 65536;
+
+// Clips a `clip` level's Phi (a_xi) and Psi (c_eta) to |.| <=
+// kMaxCoarseStretching and returns how many values it changed. Its coarse
+// equations then differ from the fine ones there; FAS still converges to the
+// fine grid's solution (the coarse right-hand side is built with the same
+// clipped operator), only the correction is less accurate. Clipping at 2
+// stalled the TMR-class grid (residual 1.4e-7); at 0.5 and 1 it did not.
+long clip_coarse_stretching(MgLevel &coarse);
 
 // The largest |Phi| (a_xi) and |Psi| (c_eta) of a control field, 0 without.
 void coarse_stretch(const ControlFields *fields, double &stretch_i, double &stretch_j);
