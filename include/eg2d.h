@@ -1158,8 +1158,8 @@ EG2D_API int eg2d_get_controls(const eg2d_grid *grid, double *P, double *Q);
 #define EG2D_PARAM_AIRFOIL_TE_SPACING    422  /* (0, 0.1] chords, 0 (default): a quarter of the
                                                  mean spacing: at the trailing edge, the spacing
                                                  along a blunt base and the C-grid cut's first
-                                                 (a C-grid's blunt base: the base's own, its
-                                                 halves split into equal cells near this) */
+                                                 (with a blunt base: the base's own, the base
+                                                 split into equal cells near this) */
 #define EG2D_PARAM_AIRFOIL_WAKE_NODES    423  /* C-grid: cut nodes a side, the trailing edge's
                                                  index i; 0 (default): about 0.21 (ni-1), a
                                                  multiple of the largest power of two up to 64
@@ -1178,7 +1178,8 @@ EG2D_API int eg2d_get_controls(const eg2d_grid *grid, double *P, double *Q);
  *   The section: re-panelled by Vinokur's distribution on each surface from
  *   EG2D_PARAM_AIRFOIL_TE_SPACING to EG2D_PARAM_AIRFOIL_LE_SPACING; an open
  *   trailing edge kept as a straight base with nodes about that spacing
- *   apart (EG2D_AIRFOIL_TE_BLUNT) or closed (EG2D_AIRFOIL_TE_SHARPEN).
+ *   apart, the section's first cells at its corners the base's spacing
+ *   (EG2D_AIRFOIL_TE_BLUNT) or closed (EG2D_AIRFOIL_TE_SHARPEN).
  *   O-grid: JMIN the section (and base), JMAX the circle of radius R + 1/2
  *   about the mid-chord (R = EG2D_PARAM_AIRFOIL_FARFIELD), uniform in angle from
  *   the trailing edge's direction.

@@ -103,14 +103,16 @@ void airfoil_boundary(const ArcLength &c, const AirfoilSpec &spec, int ni, int n
     const double le_ds = spec.le_spacing > 0 ? spec.le_spacing : kLeShare * mean;
     int base = 0;
     if (blunt) base = std::max(cgrid ? 1 : 2, static_cast<int>(std::lround((cgrid ? 0.5 : 1.0) * gap / te_ds)));
-    // A C-grid's base: the surfaces and the cut start at the base's own
+    // A base: the surfaces (and a C-grid's cut) start at the base's own
     // spacing, so that each of its corners has equal edges and the march's
     // dissipation (a second difference) pulls it along the corner's
     // bisector. With the cut's first cell 1.8 times the base's (NACA 0012
-    // 385x97) it bent the line from the base's midpoint 9 degrees off the
-    // bisector after one layer, and OpenFOAM's non-orthogonality beside it
-    // reached 83 degrees; 53.5 with the spacings equal.
-    if (blunt && cgrid) te_ds = 0.5 * gap / base;
+    // C-grid 385x97) it bent the line from the base's midpoint 9 degrees
+    // off the bisector after one layer, and OpenFOAM's non-orthogonality
+    // beside it reached 83 degrees; 53.5 with the spacings equal. O-grids
+    // 257x129: NACA 4412 thinned to a 0.03% base 70.5 -> 29.3 degrees,
+    // NACA 0012 40.1 -> 21.0.
+    if (blunt) te_ds = (cgrid ? 0.5 : 1.0) * gap / base;
     // Section nodes, corner to corner.
     const int nb = cgrid ? ni - 2 * wake - (blunt ? 2 * base : 0) : ni - base;
     if (nb < 9 || (cgrid && (wake < 2 || nj < 3)))

@@ -298,7 +298,7 @@ int run_airfoil(int argc, char **argv) {
     // with --te sharpen the section closed sharply (NASA's TMR grids): round
     // a sharp edge an O-grid's cells beside the edge's line turn 90 degrees
     // across one cell, which OpenFOAM's checkMesh fails (skewness 17 on NACA
-    // 0012 257x129), while at a blunt base it is 2.0.
+    // 0012 257x129), while at a blunt base it is 2.2.
     const int st = naca ? eg2d_curve_naca4(a.source.c_str(), a.te == "sharpen" ? EG2D_NACA_CLOSED_TE : 0, &raw)
                         : eg2d_curve_read_airfoil(a.source.c_str(), &raw);
     if (st != EG2D_OK) throw Failure(st == EG2D_ERR_IO ? EXIT_IO : EXIT_GEOMETRY, std::string("airfoil: ") + eg2d_last_error(nullptr));
