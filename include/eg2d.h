@@ -1114,7 +1114,11 @@ EG2D_API int eg2d_get_controls(const eg2d_grid *grid, double *P, double *Q);
  * its normals is its height, so the outer side lies about D from JMIN (the
  * measured figures: bench/RESULTS.md, docs/hyperbolic.md). Sharp convex edges (a trailing edge) march along the bisector
  * of their angle; dissipation, scaled by Chan & Steger's sensors, and area
- * smoothing keep concave corners and the far field from folding. Errors:
+ * smoothing keep concave corners and the far field from folding. At a
+ * convex corner of 45 to 135 degrees between straighter neighbours (a
+ * blunt base's) the explicit dissipation moves the node by at most a tenth
+ * of its step, so that the corner's cells do not fold at a large
+ * EG2D_PARAM_MARCH_SMOOTHING. Errors:
  * EG2D_ERR_FOLDED if a layer folds (the message names the layer and its
  * first folded cell; the handle keeps what it had); EG2D_ERR_STATE if JMIN is
  * not set; EG2D_ERR_ARGUMENT if h_1 cannot reach D with growth <= G in
@@ -1153,7 +1157,9 @@ EG2D_API int eg2d_get_controls(const eg2d_grid *grid, double *P, double *Q);
                                                  section at its leading edge */
 #define EG2D_PARAM_AIRFOIL_TE_SPACING    422  /* (0, 0.1] chords, 0 (default): a quarter of the
                                                  mean spacing: at the trailing edge, the spacing
-                                                 along a blunt base and the C-grid cut's first */
+                                                 along a blunt base and the C-grid cut's first
+                                                 (with a blunt base: the base's own, the base
+                                                 split into equal cells near this) */
 #define EG2D_PARAM_AIRFOIL_WAKE_NODES    423  /* C-grid: cut nodes a side, the trailing edge's
                                                  index i; 0 (default): about 0.21 (ni-1), a
                                                  multiple of the largest power of two up to 64
@@ -1172,16 +1178,21 @@ EG2D_API int eg2d_get_controls(const eg2d_grid *grid, double *P, double *Q);
  *   The section: re-panelled by Vinokur's distribution on each surface from
  *   EG2D_PARAM_AIRFOIL_TE_SPACING to EG2D_PARAM_AIRFOIL_LE_SPACING; an open
  *   trailing edge kept as a straight base with nodes about that spacing
- *   apart (EG2D_AIRFOIL_TE_BLUNT) or closed (EG2D_AIRFOIL_TE_SHARPEN).
+ *   apart, the section's first cells at its corners the base's spacing
+ *   (EG2D_AIRFOIL_TE_BLUNT) or closed (EG2D_AIRFOIL_TE_SHARPEN).
  *   O-grid: JMIN the section (and base), JMAX the circle of radius R + 1/2
  *   about the mid-chord (R = EG2D_PARAM_AIRFOIL_FARFIELD), uniform in angle from
  *   the trailing edge's direction.
  *   C-grid: JMIN the lower cut (EG2D_PARAM_AIRFOIL_WAKE_NODES nodes from the
  *   outflow), the section (a blunt base's lower half first, from its
  *   midpoint), the upper cut; the cut runs along the chord line from the
- *   trailing edge (a base's midpoint), its cells growing geometrically from
- *   the trailing-edge spacing to the outflow, R = EG2D_PARAM_AIRFOIL_FARFIELD
- *   chords downstream. JMAX: the lines R + 1 chords above and below the cut
+ *   trailing edge, or from a blunt base's midpoint along the base's normal
+ *   (the two agree on a symmetric section; a right angle on both sides of
+ *   the cut), its cells growing geometrically from the trailing-edge
+ *   spacing (a base's: the section's and the cut's first cells are the
+ *   base's) to the outflow, R = EG2D_PARAM_AIRFOIL_FARFIELD chords
+ *   downstream; the far field and outflow below are laid out along the
+ *   cut's direction. JMAX: the lines R + 1 chords above and below the cut
  *   (at the cut nodes' stations) and the half circle of that radius about
  *   the trailing edge between, its nodes by Vinokur's distribution from the
  *   trailing-edge spacing at both ends; IMIN and IMAX: the outflow lines,

@@ -99,10 +99,20 @@ void airfoil_boundary(const ArcLength &c, const AirfoilSpec &spec, int ni, int n
     const int wake = cgrid ? (spec.wake > 0 ? spec.wake : automatic_wake(ni)) : 0;
     const double perimeter = c.length() / chord;
     const double mean = perimeter / std::max(1, ni - 2 * wake);
-    const double te_ds = spec.te_spacing > 0 ? spec.te_spacing : kTeShare * mean;
+    double te_ds = spec.te_spacing > 0 ? spec.te_spacing : kTeShare * mean;
     const double le_ds = spec.le_spacing > 0 ? spec.le_spacing : kLeShare * mean;
     int base = 0;
     if (blunt) base = std::max(cgrid ? 1 : 2, static_cast<int>(std::lround((cgrid ? 0.5 : 1.0) * gap / te_ds)));
+    // A base: the surfaces (and a C-grid's cut) start at the base's own
+    // spacing, so that each of its corners has equal edges and the march's
+    // dissipation (a second difference) pulls it along the corner's
+    // bisector. With the cut's first cell 1.8 times the base's (NACA 0012
+    // C-grid 385x97) it bent the line from the base's midpoint 9 degrees
+    // off the bisector after one layer, and OpenFOAM's non-orthogonality
+    // beside it reached 83 degrees; 53.5 with the spacings equal. O-grids
+    // 257x129: NACA 4412 thinned to a 0.03% base 70.5 -> 29.3 degrees,
+    // NACA 0012 40.1 -> 21.0.
+    if (blunt) te_ds = (cgrid ? 0.5 : 1.0) * gap / base;
     // Section nodes, corner to corner.
     const int nb = cgrid ? ni - 2 * wake - (blunt ? 2 * base : 0) : ni - base;
     if (nb < 9 || (cgrid && (wake < 2 || nj < 3)))
@@ -129,15 +139,31 @@ void airfoil_boundary(const ArcLength &c, const AirfoilSpec &spec, int ni, int n
     body.insert(body.end(), up.begin() + 1, up.end());
 
     std::vector<P> jmin, jmax;
-    const P start = frame(1.0, 0.0);  // where the cut starts: the trailing edge (a base's midpoint)
+    const P start = te;  // where the cut starts: the trailing edge (a base's midpoint)
+    // A C-grid's cut, outflow and far field are laid out from the trailing
+    // edge along the chord, or along a blunt base's normal, so that the
+    // base's midpoint is a right angle on both sides of the cut: along the
+    // chord, NACA 4412's base (7.6 degrees off normal to it) made angles of
+    // 82 and 98 degrees there, and OpenFOAM's non-orthogonality across the
+    // cut's first face was 74 degrees.
+    P ax = e;
+    if (blunt && cgrid) {
+        const double bx = upper.x - lower.x, by = upper.y - lower.y, bl = std::hypot(bx, by);
+        ax = {by / bl, -bx / bl};
+        if (ax.x * e.x + ax.y * e.y < 0.0) ax = {-ax.x, -ax.y};
+    }
+    const P an{-ax.y, ax.x};
+    auto wake_frame = [&](double u, double v) {  // frame() when ax is the chord's direction
+        return P{te.x + chord * ((u - 1.0) * ax.x + v * an.x), te.y + chord * ((u - 1.0) * ax.y + v * an.y)};
+    };
     if (cgrid) {
-        // The cut along the chord line, its first cell the trailing edge's spacing.
+        // The cut along ax, its first cell the trailing edge's spacing.
         const double r = covering_ratio(wake, te_ds, spec.farfield);
         std::vector<double> u(static_cast<std::size_t>(wake));  // cut node k (0 = outflow) at 1 + u[k]
         double cell = te_ds, at = 0.0;
         for (int k = wake - 1; k >= 0; --k, cell *= r) u[static_cast<std::size_t>(k)] = (at += cell);
         u[0] = spec.farfield;
-        for (int k = 0; k < wake; ++k) jmin.push_back(frame(1.0 + u[static_cast<std::size_t>(k)], 0.0));
+        for (int k = 0; k < wake; ++k) jmin.push_back(wake_frame(1.0 + u[static_cast<std::size_t>(k)], 0.0));
         if (blunt) {  // the base's lower half, from its midpoint, is wall
             jmin.push_back(start);
             segment(jmin, start, lower, base);
@@ -146,7 +172,7 @@ void airfoil_boundary(const ArcLength &c, const AirfoilSpec &spec, int ni, int n
         } else {
             jmin.insert(jmin.end(), body.begin(), body.end());
         }
-        for (int k = wake - 1; k >= 0; --k) jmin.push_back(frame(1.0 + u[static_cast<std::size_t>(k)], 0.0));
+        for (int k = wake - 1; k >= 0; --k) jmin.push_back(wake_frame(1.0 + u[static_cast<std::size_t>(k)], 0.0));
         // The far field: lines v = -R, R above the cut, a half circle about
         // the trailing edge between, its nodes by Vinokur's distribution
         // from the trailing edge's spacing at both ends.
@@ -160,14 +186,14 @@ void airfoil_boundary(const ArcLength &c, const AirfoilSpec &spec, int ni, int n
         double widest = 0.0;
         for (int k = 1; k < na; ++k) widest = std::max(widest, kPi * (s[static_cast<std::size_t>(k)] - s[static_cast<std::size_t>(k - 1)]));
         const double far = (spec.farfield + 1.0) / std::cos(0.5 * widest);
-        for (int k = 0; k < wake; ++k) jmax.push_back(frame(1.0 + u[static_cast<std::size_t>(k)], -far));
+        for (int k = 0; k < wake; ++k) jmax.push_back(wake_frame(1.0 + u[static_cast<std::size_t>(k)], -far));
         for (int k = 0; k < na; ++k) {
             const double a = -0.5 * kPi - kPi * s[static_cast<std::size_t>(k)];
-            jmax.push_back(frame(1.0 + far * std::cos(a), far * std::sin(a)));
+            jmax.push_back(wake_frame(1.0 + far * std::cos(a), far * std::sin(a)));
         }
-        for (int k = wake - 1; k >= 0; --k) jmax.push_back(frame(1.0 + u[static_cast<std::size_t>(k)], far));
-        jmax[static_cast<std::size_t>(wake)] = frame(1.0, -far);
-        jmax[static_cast<std::size_t>(ni - 1 - wake)] = frame(1.0, far);
+        for (int k = wake - 1; k >= 0; --k) jmax.push_back(wake_frame(1.0 + u[static_cast<std::size_t>(k)], far));
+        jmax[static_cast<std::size_t>(wake)] = wake_frame(1.0, -far);
+        jmax[static_cast<std::size_t>(ni - 1 - wake)] = wake_frame(1.0, far);
     } else {
         jmin = body;
         if (blunt) segment(jmin, upper, lower, base);  // closes the loop at the lower corner
@@ -197,8 +223,8 @@ void airfoil_boundary(const ArcLength &c, const AirfoilSpec &spec, int ni, int n
     if (cgrid)
         for (int j = 1; j < nj - 1; ++j) {
             const double v = (spec.farfield + 1.0) * j / (nj - 1);
-            put(0, j, frame(1.0 + spec.farfield, -v));
-            put(ni - 1, j, frame(1.0 + spec.farfield, v));
+            put(0, j, wake_frame(1.0 + spec.farfield, -v));
+            put(ni - 1, j, wake_frame(1.0 + spec.farfield, v));
         }
 }
 

@@ -32,6 +32,18 @@ const double kMinSin2 = std::pow(std::sin(3.14159265358979323846 / 36), 2);
 constexpr double kMaxStepRatio = 1.0;
 constexpr int kMaxSubSteps = 16;
 const double kLnMin = std::log(0.1), kLnMax = std::log(100.0);  // the clamp of d
+// A convex corner of JMIN turning by 45 to 135 degrees (a blunt base's) has
+// a second difference of the order of its spacing, not of the spacing
+// squared times the curvature, so the explicit dissipation there grows with
+// the step: at EG2D_PARAM_MARCH_SMOOTHING 4 (a C-grid's start) it moved the
+// base corners of NACA 0012's open section back by their whole step by
+// layer 4, the base's cells folded (385x97; O-grids 257x129 too). On those
+// columns it moves a node by at most this share of its step. A sharp
+// trailing edge turns by more (164 degrees on an O-grid) and keeps the full
+// dissipation, which its march needs; the marches with no such corner are
+// unchanged.
+constexpr double kCornerShare = 0.1;
+const double kCornerLeast = 0.25 * 3.14159265358979323846, kCornerMost = 0.75 * 3.14159265358979323846;
 
 double len(double x, double y) { return std::sqrt(x * x + y * y); }
 
@@ -136,6 +148,7 @@ struct March {
     std::vector<NodeFrame> f;
     std::vector<double> step, edge, prev_edge, wall_edge, tmp, factor;
     std::vector<Mat2> A, B, C;
+    std::vector<char> corner;  // JMIN's convex corners (kCornerShare)
     MarchEnd ends[2];
 
     March(const Settings &settings, const Layer &layer) : s(settings), L(layer) {
@@ -210,7 +223,11 @@ struct March {
                 d = lnd <= kLnMin ? 0.1 : (lnd >= kLnMax ? 100.0 : std::exp(lnd));
             }
             // eps_e = eps_c N Sl d a, N = |r_eta| / |r_xi| (Chan & Steger 1992).
-            const double eps_e = s.march_smoothing * (step[i] / F.ds) * Sl * d * F.a;
+            double eps_e = s.march_smoothing * (step[i] / F.ds) * Sl * d * F.a;
+            if (corner[i] && w >= 0 && e >= 0) {
+                const double dxx = len(r[e].x - 2 * r[i].x + r[w].x, r[e].y - 2 * r[i].y + r[w].y);
+                if (eps_e * dxx > kCornerShare * step[i]) eps_e = kCornerShare * step[i] / dxx;
+            }
             const double eps_i = 2.0 * eps_e;
             A[i] = {-0.5 * Cm.a - eps_i, -0.5 * Cm.b, -0.5 * Cm.c, -0.5 * Cm.d - eps_i};
             B[i] = scaled_identity(1.0 + 2.0 * eps_i);
@@ -276,6 +293,28 @@ struct March {
     }
 };
 
+// 1 at the nodes of JMIN that are convex corners on the march's side:
+// turning by kCornerLeast to kCornerMost, their neighbours by less than a
+// quarter of that (a coarse leading edge turns over several nodes: the
+// gallery's NACA 0012 O-grid by 51 degrees at the edge, 29 beside it).
+std::vector<char> convex_corners(const Layer &L, const std::vector<Vec2> &r, double side) {
+    std::vector<double> turn(static_cast<std::size_t>(L.n), 0.0);  // convex > 0
+    for (int i = 0; i < L.n; ++i) {
+        const int w = L.west(i), e = L.east(i);
+        if (w < 0 || e < 0) continue;
+        const Vec2 a{r[i].x - r[w].x, r[i].y - r[w].y}, b{r[e].x - r[i].x, r[e].y - r[i].y};
+        turn[static_cast<std::size_t>(i)] = -side * std::atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y);
+    }
+    std::vector<char> corner(turn.size(), 0);
+    for (int i = 0; i < L.n; ++i) {
+        const int w = L.west(i), e = L.east(i);
+        const double t = turn[static_cast<std::size_t>(i)];
+        if (w < 0 || e < 0 || t <= kCornerLeast || t >= kCornerMost) continue;
+        corner[static_cast<std::size_t>(i)] = turn[static_cast<std::size_t>(w)] < 0.25 * t && turn[static_cast<std::size_t>(e)] < 0.25 * t;
+    }
+    return corner;
+}
+
 // +1 if the cells between rows j and j+1 have positive area in total.
 int layer_orientation(const Grid &g, int j) {
     double total = 0.0;
@@ -308,6 +347,7 @@ void hyperbolic_march(Grid &g, const Settings &s) {
     m.side = march_side(g, m.r);
     m.r.resize(static_cast<std::size_t>(L.n));
     m.prev = m.r;
+    m.corner = convex_corners(L, m.r, m.side);
 
     double distance = s.march_distance;
     if (distance == 0.0) {

@@ -77,14 +77,14 @@ static void test_c_grid_boundary(void **state) {
 }
 
 /* NACA 0012's standard trailing edge is open (0.00252 chords): kept as a
- * straight base of wall nodes on an O-grid, or sharpened; a C-grid's cut
- * starts at the base's midpoint. */
+ * straight base of wall nodes on an O- or C-grid, or sharpened; a C-grid's
+ * cut starts at the base's midpoint. */
 static void test_open_trailing_edge(void **state) {
     const int ni = 129, nj = 33;
     double *x = alloc(ni * nj), *y = alloc(ni * nj), value;
     eg2d_grid *g;
     eg2d_curve *c = naca0012(0);
-    int i, on_base = 0;
+    int i, corner, on_base = 0;
     (void)state;
     assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
     assert_int_equal(eg2d_get_parameter(g, EG2D_PARAM_AIRFOIL_TRAILING_EDGE, &value), EG2D_OK);
@@ -97,6 +97,18 @@ static void test_open_trailing_edge(void **state) {
         if (fabs(x[i] - x[0]) < 1e-12) ++on_base; /* the base: straight, at the corners' x */
     assert_true(on_base >= 4);
     assert_true(fabs(y[0] - y[ni - 1]) < 1e-15 && y[0] < -1e-3); /* the loop starts at the lower corner */
+    /* Kept on a C-grid: the cut starts at the base's midpoint; the cut's
+     * first cell and the section's at the corners are the base's spacing. */
+    assert_int_equal(eg2d_set_airfoil(g, c, EG2D_TOPO_C), EG2D_OK);
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    i = te_index(x, y, ni);
+    assert_true(fabs(x[i] - 1) < 1e-12 && fabs(y[i]) < 1e-12);
+    for (corner = i; fabs(x[corner + 1] - 1) < 1e-12; ++corner) {}
+    assert_int_equal(corner - i, 3); /* 0.00126 chords at about 5e-4: 3 cells of 4.2e-4 */
+    assert_true(fabs(dist(x, y, i - 1, i) / dist(x, y, i, i + 1) - 1) < 1e-9);
+    assert_true(fabs(dist(x, y, corner, corner + 1) / dist(x, y, i, i + 1) - 1) < 1e-6);
+    assert_true(fabs(y[i - 1]) < 1e-12 && x[i - 1] > 1); /* along the base's normal: the chord */
     assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_TRAILING_EDGE, EG2D_AIRFOIL_TE_SHARPEN), EG2D_OK);
     assert_int_equal(eg2d_set_airfoil(g, c, EG2D_TOPO_C), EG2D_OK);
     assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
@@ -132,8 +144,8 @@ static void test_refused(void **state) {
 }
 
 /* The boundary and a first cell are all a wall-resolved grid needs: the
- * default wall layer makes the hybrid one on both topologies, the blunt
- * base's O-grid included, without folds and with the height on the body. */
+ * default wall layer makes the hybrid one on both topologies, blunt bases
+ * included, without folds and with the height on the body. */
 static void solve(eg2d_curve *c, int topology, int ni, int nj, int trailing_edge) {
     double h, folded, *x = alloc(ni * nj), *y = alloc(ni * nj), least = INFINITY, most = 0;
     eg2d_grid *g;
@@ -175,6 +187,7 @@ static void test_wall_resolved(void **state) {
     solve(sharp, EG2D_TOPO_O, 257, 129, EG2D_AIRFOIL_TE_BLUNT);
     solve(open, EG2D_TOPO_O, 257, 129, EG2D_AIRFOIL_TE_BLUNT);
     solve(open, EG2D_TOPO_C, 385, 97, EG2D_AIRFOIL_TE_SHARPEN);
+    solve(open, EG2D_TOPO_C, 385, 97, EG2D_AIRFOIL_TE_BLUNT); /* folded at the base's corners before */
     eg2d_curve_destroy(sharp);
     eg2d_curve_destroy(open);
 }

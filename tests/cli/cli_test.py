@@ -995,6 +995,31 @@ def naca0012_selig(path, n=81, scale=1, at=(0, 0)):
             f.write(f"{at[0] + scale * x:.8f} {at[1] + scale * y:.8f}\n")
 
 
+def naca4_selig(path, m, p, t, base=None, n=81):
+    """NACA MPTT's standard section (its trailing edge open, 0.0021 t/0.12 chords
+    thick) as a Selig file, or with its thickness raised in proportion to x so
+    that its base is BASE chords thick; the ends' y returned."""
+    xs = [0.5 * (1 - math.cos(math.pi * k / (n - 1))) for k in range(n)]
+    yt = lambda x: 5 * t * (0.2969 * math.sqrt(x) - 0.1260 * x - 0.3516 * x**2 + 0.2843 * x**3 - 0.1015 * x**4)
+    extra = 0 if base is None else base / 2 - yt(1)
+    def camber(x):  # the camber line's height and slope
+        if m == 0:
+            return 0, 0
+        q = p if x < p else 1 - p
+        return m / q**2 * ((2 * p * x - x * x) if x < p else (1 - 2 * p + 2 * p * x - x * x)), 2 * m / q**2 * (p - x)
+    def point(x, side):
+        c, slope = camber(x)
+        h, a = yt(x) + extra * x, math.atan(slope)
+        return x - side * h * math.sin(a), c + side * h * math.cos(a)
+    points = [(round(x, 8), round(y, 8)) for x, y in
+              [point(x, 1) for x in reversed(xs)] + [point(x, -1) for x in xs[1:]]]  # as written
+    with open(path, "w") as f:
+        f.write(f"NACA {m * 100:.0f}{p * 10:.0f}{t * 100:02.0f}{'' if base is None else f' base {base}'}\n")
+        for x, y in points:
+            f.write(f"{x:.8f} {y:.8f}\n")
+    return points[0], points[-1]
+
+
 def svg_view(path):
     """An eg2d airfoil picture: (its window in the plane as xmin, ymin, xmax, ymax,
     from the viewBox with y negated back; its width and height in pixels;
@@ -1110,31 +1135,45 @@ class Airfoil(unittest.TestCase):
             outer = [fine[i + 385 * 96] for i in range(385)]
             self.assertGreaterEqual(min(math.dist(p, q) for p in outer for q in body[::8]), 100 - 1e-6)
             for size, (ni, nj, w) in {"385x97": (385, 97, 80), "193x49": (193, 49, 40), "97x25": (97, 25, 20)}.items():
-                name = os.path.join(d, f"naca0012-{size}")
-                try:
-                    import meshio
-                except ImportError:
-                    meshio = None
-                if meshio:  # every level's SU2 file with its markers, every boundary edge in one
-                    mesh = meshio.read(name + ".su2")
-                    self.assertEqual(mesh.points.shape[0], ni * nj - (w + 1))  # the cut's nodes merged, trailing edge included
-                    with open(name + ".su2") as f:
-                        tags = sorted(re.findall(r"^MARKER_TAG=\s*(\S+)", f.read(), re.M))
-                    self.assertEqual(tags, ["farfield", "outflow", "wall"])
-                    lines = sum(len(c.data) for c in mesh.cells if c.type == "line")
-                    self.assertEqual(lines, (ni - 1 - 2 * w) + (ni - 1) + 2 * (nj - 1))
-                cgnscheck = shutil_which("cgnscheck")
-                if cgnscheck:  # no errors; the boundary conditions and the wake's 1-to-1 connection
-                    p = subprocess.run([cgnscheck, "-v", name + ".cgns"], capture_output=True, text=True)
-                    out = p.stdout + p.stderr
-                    self.assertEqual([l for l in out.splitlines() if "ERROR" in l.upper()], [])
-                    self.assertIn("checking complete", out)
-                    for bc in ("wall", "farfield", "outflow"):
-                        self.assertIn(f'checking BC "{bc}"', out)
-                    self.assertIn('checking 1to1 connectivity "wake_lower"', out)
-                    self.assertIn('checking 1to1 connectivity "wake_upper"', out)
+                self.check_su2(os.path.join(d, f"naca0012-{size}"), ni, nj, w)
+                self.check_cgns(os.path.join(d, f"naca0012-{size}"), True)
             for size in ("385x97", "193x49", "97x25"):  # every level
                 self.check_mesh(os.path.join(d, f"naca0012-{size}_foam"))
+
+    def check_su2(self, name, ni, nj, w):
+        """meshio reads NAME.su2 (where installed) with its markers, every boundary
+        edge in one; W the C-grid's cut nodes a side (0: an O-grid)."""
+        try:
+            import meshio
+        except ImportError:
+            return
+        mesh = meshio.read(name + ".su2")
+        with open(name + ".su2") as f:
+            tags = sorted(re.findall(r"^MARKER_TAG=\s*(\S+)", f.read(), re.M))
+        lines = sum(len(c.data) for c in mesh.cells if c.type == "line")
+        if w:
+            self.assertEqual(mesh.points.shape[0], ni * nj - (w + 1))  # the cut's nodes merged, trailing edge included
+            self.assertEqual(tags, ["farfield", "outflow", "wall"])
+            self.assertEqual(lines, (ni - 1 - 2 * w) + (ni - 1) + 2 * (nj - 1))
+        else:
+            self.assertEqual(mesh.points.shape[0], (ni - 1) * nj)  # the periodic cut merged
+            self.assertEqual(tags, ["farfield", "wall"])
+            self.assertEqual(lines, 2 * (ni - 1))
+
+    def check_cgns(self, name, cgrid):
+        """cgnscheck (where installed) finds no errors in NAME.cgns, and it holds
+        the boundary conditions and the cut's 1-to-1 connection."""
+        cgnscheck = shutil_which("cgnscheck")
+        if not cgnscheck:
+            return
+        p = subprocess.run([cgnscheck, "-v", name + ".cgns"], capture_output=True, text=True)
+        out = p.stdout + p.stderr
+        self.assertEqual([l for l in out.splitlines() if "ERROR" in l.upper()], [])
+        self.assertIn("checking complete", out)
+        for bc in ("wall", "farfield", "outflow") if cgrid else ("wall", "farfield"):
+            self.assertIn(f'checking BC "{bc}"', out)
+        for cut in ("wake_lower", "wake_upper") if cgrid else ("cut_imin", "cut_imax"):
+            self.assertIn(f'checking 1to1 connectivity "{cut}"', out)
 
     def check_mesh(self, case):
         """OpenFOAM's checkMesh on a case directory: no failed check but the
@@ -1184,7 +1223,54 @@ class Airfoil(unittest.TestCase):
             r = self.report(d, "open-257x129")
             self.assertEqual(r["folded_cells"], 0)  # the blunt base kept: two convex corners
             self.airfoil(d, selig, "--topology", "c", "--size", "385x97", "--first-cell", "1e-5", "--format", "vts")
-            self.assertEqual(self.report(d, "open-385x97")["folded_cells"], 0)  # sharpened by default
+            self.assertEqual(self.report(d, "open-385x97")["folded_cells"], 0)  # the base kept on C-grids too
+
+    def test_selig_blunt_bases(self):
+        """Selig files with an open trailing edge (NACA 4412, 0.0025 chords) and a
+        blunt base (NACA 0012 thickened to a 1% base) on both topologies: the base
+        kept as wall, the run saying so, and every level passing the issue's
+        checks (first cells from --first-cell here, at sizes a test can afford)."""
+        with tempfile.TemporaryDirectory() as d:
+            for name, shape in (("open4412", (0.04, 0.4, 0.12)), ("flatback", (0, 0.4, 0.12, 0.01))):
+                corners = naca4_selig(os.path.join(d, name + ".dat"), *shape)
+                for topo, ni, nj in (("c", 257, 65), ("o", 129, 65)):
+                    out = os.path.join(d, topo)
+                    code, text, err = run("airfoil", os.path.join(d, name + ".dat"), "--topology", topo, "--size",
+                                          f"{ni}x{nj}", "--first-cell", "1e-4", "--farfield", "20", "--levels", "2",
+                                          "--format", "cgns,su2,openfoam,vts", "-o", out)
+                    self.assertEqual(code, 0, text + err)  # 0: the first 30 cells grow by 1.2 at most
+                    gap = math.dist(*corners)
+                    self.assertIn(f"note: the open trailing edge ({gap:.3g} chords thick) kept as a blunt base", text)
+                    r = self.report(out, f"{name}-{ni}x{nj}")
+                    self.assertEqual(r["folded_cells"], 0)
+                    for k in ("min", "max"):
+                        self.assertLess(abs(r["wall"]["first_cell_height"][k] / 1e-4 - 1), 0.05)
+                    self.assertLessEqual(r["wall"]["angle_deviation_deg"]["max"], 1.0)
+                    grid = vts_points(os.path.join(out, f"{name}-{ni}x{nj}.vts"))
+                    w = int(re.search(r"JMIN (\d+)\.\.", r["wall"]["stretches"][0]).group(1))
+                    wall = grid[w:ni - w] if topo == "c" else grid[:ni]
+                    for corner in corners:  # the base kept: the file's ends are wall nodes
+                        self.assertLess(min(math.dist(corner, q) for q in wall), 1e-7, (name, topo))
+                    if topo == "c":  # the cut leaves the base's midpoint along the base's normal
+                        cut = (grid[w - 1][0] - grid[w][0], grid[w - 1][1] - grid[w][1])
+                        base = (corners[1][0] - corners[0][0], corners[1][1] - corners[0][1])
+                        self.assertLess(abs(cut[0] * base[0] + cut[1] * base[1]) / (math.hypot(*cut) * gap), 1e-9)
+                    outer = grid[ni * (nj - 1):]
+                    self.assertGreaterEqual(min(math.dist(p, q) for p in outer for q in wall[::2]), 20 - 1e-6)
+                    for level, (li, lj) in enumerate(((ni, nj), ((ni + 1) // 2, (nj + 1) // 2))):
+                        base_name = os.path.join(out, f"{name}-{li}x{lj}")
+                        self.check_mesh(base_name + "_foam")
+                        self.check_su2(base_name, li, lj, w >> level)
+                        self.check_cgns(base_name, topo == "c")
+            # sharpened on request, and the run says so: one node at the trailing edge
+            code, text, err = run("airfoil", os.path.join(d, "open4412.dat"), "--size", "129x33", "--first-cell",
+                                  "1e-4", "--farfield", "10", "--te", "sharpen", "--format", "vts", "-o", d)
+            self.assertIn("note: the open trailing edge (0.00252 chords thick) sharpened", text)
+            grid = vts_points(os.path.join(d, "open4412-129x33.vts"))
+            r = self.report(d, "open4412-129x33")
+            w = int(re.search(r"JMIN (\d+)\.\.", r["wall"]["stretches"][0]).group(1))
+            self.assertEqual(grid[w], grid[128 - w])
+            self.assertGreater(math.dist(grid[w], grid[w + 1]), 1e-3)  # no base: the next node is on a surface
 
     VIEWS = ("domain", "airfoil", "le", "te")
 

@@ -3,6 +3,7 @@
 #include <eg2d.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -31,8 +32,8 @@ const char *const airfoil_help =
     "\n"
     "An O- or C-grid round an airfoil (eg2d_set_airfoil), wall-resolved, written as a\n"
     "family of nested grids in the formats flow solvers read.\n"
-    "  SOURCE         a NACA 4-digit code (0012: closed sharply at chord 1 on C-grids and with\n"
-    "                 --te sharpen; on O-grids the standard open section, its base blunt)\n"
+    "  SOURCE         a NACA 4-digit code (the standard open section, its base kept blunt;\n"
+    "                 with --te sharpen the section closed sharply at chord 1)\n"
     "                 or a Selig or Lednicer coordinate file\n"
     "  --size         the finest grid, NI x NJ nodes (on a C-grid NI counts both cut sides)\n"
     "  --yplus, --reynolds\n"
@@ -44,9 +45,10 @@ const char *const airfoil_help =
     "  --le-spacing, --te-spacing\n"
     "                 spacing along the section at its leading and trailing edge, chords\n"
     "                 (default: a tenth and a quarter of its mean spacing)\n"
-    "  --te           an open trailing edge: kept as a blunt base (default on O-grids) or\n"
-    "                 sharpened (default on C-grids: the march folds at a blunt base's\n"
-    "                 corners on a C-grid)\n"
+    "  --te           an open trailing edge: kept as a blunt base, part of the wall, its\n"
+    "                 cells about --te-spacing apart (default; on a C-grid the cut leaves\n"
+    "                 its midpoint along its normal) or sharpened (each surface moved\n"
+    "                 towards the base's midpoint); the run says which\n"
     "  --growth       the largest growth of the wall layer's cells accepted (default 1.2);\n"
     "                 a grid whose first 30 cells grow faster is reported and exits 4\n"
     "  --levels       N nested grids, each coarser one every other node of the next: NI-1\n"
@@ -160,7 +162,7 @@ Args parse(int argc, char **argv) {
     if (a.topology != "c" && a.topology != "o") usage("--topology expects c or o, found \"" + a.topology + "\"");
     if (a.method != "hybrid" && a.method != "elliptic" && a.method != "hyperbolic")
         usage("--method expects hybrid, elliptic or hyperbolic, found \"" + a.method + "\"");
-    if (a.te.empty()) a.te = a.topology == "c" ? "sharpen" : "blunt";
+    if (a.te.empty()) a.te = "blunt";
     if (a.te != "blunt" && a.te != "sharpen") usage("--te expects blunt or sharpen, found \"" + a.te + "\"");
     const int step = 1 << (a.levels - 1);
     if ((a.ni - 1) % step || (a.nj - 1) % step || (a.ni - 1) / step + 1 < 9 || (a.nj - 1) / step + 1 < 5) {
@@ -233,6 +235,33 @@ double wall_growth(eg2d_grid *g, int ni, int nj, int first, int last) {
     return worst;
 }
 
+// The section's trailing-edge gap in chords (open above 1e-7, as
+// eg2d_set_airfoil tests it; the chord from the ends' midpoint to the
+// farthest of 2000 points of the section).
+double trailing_edge_gap(const eg2d_curve *c) {
+    double x0, y0, x1, y1, chord = 0;
+    eg2d_curve_evaluate(c, 0.0, &x0, &y0);
+    eg2d_curve_evaluate(c, 1.0, &x1, &y1);
+    const double mx = 0.5 * (x0 + x1), my = 0.5 * (y0 + y1);
+    for (int k = 1; k < 2000; ++k) {
+        double x, y;
+        eg2d_curve_evaluate(c, k / 2000.0, &x, &y);
+        chord = std::max(chord, std::hypot(x - mx, y - my));
+    }
+    return chord > 0 ? std::hypot(x1 - x0, y1 - y0) / chord : 0;
+}
+
+// Says what becomes of an open trailing edge.
+void trailing_edge_note(double gap, bool sharpen) {
+    if (gap <= 1e-7) return;
+    if (sharpen)
+        std::printf("note: the open trailing edge (%.3g chords thick) sharpened: each surface moved towards the base's "
+                    "midpoint in proportion to its distance along the chord (--te sharpen)\n", gap);
+    else
+        std::printf("note: the open trailing edge (%.3g chords thick) kept as a blunt base, part of the wall "
+                    "(--te sharpen closes it)\n", gap);
+}
+
 // The pictures (svg, png) of one level: the same four views in each.
 void write_views(const eg2d_grid *g, const std::vector<Output> &outputs, const std::string &base, const std::string &title) {
     bool any = false;
@@ -265,11 +294,11 @@ int run_airfoil(int argc, char **argv) {
         throw Failure(EXIT_GEOMETRY, std::string("airfoil: ") + eg2d_last_error(nullptr));
     eg2d_curve *raw = nullptr;
     const bool naca = is_naca4(a.source);
-    // A NACA code closes sharply where the trailing edge is to be sharp (C-grids,
-    // --te sharpen); an O-grid's default is the standard open section with its
-    // base kept blunt: round a sharp edge the O-grid's cells beside the edge's
-    // line turn 90 degrees across one cell, which OpenFOAM's checkMesh fails
-    // (skewness 17 on NACA 0012 257x129), while at a blunt base it is 2.0.
+    // A NACA code is the standard open section with its base kept blunt, or
+    // with --te sharpen the section closed sharply (NASA's TMR grids): round
+    // a sharp edge an O-grid's cells beside the edge's line turn 90 degrees
+    // across one cell, which OpenFOAM's checkMesh fails (skewness 17 on NACA
+    // 0012 257x129), while at a blunt base it is 2.2.
     const int st = naca ? eg2d_curve_naca4(a.source.c_str(), a.te == "sharpen" ? EG2D_NACA_CLOSED_TE : 0, &raw)
                         : eg2d_curve_read_airfoil(a.source.c_str(), &raw);
     if (st != EG2D_OK) throw Failure(st == EG2D_ERR_IO ? EXIT_IO : EXIT_GEOMETRY, std::string("airfoil: ") + eg2d_last_error(nullptr));
@@ -294,10 +323,14 @@ int run_airfoil(int argc, char **argv) {
         check(g, eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_WAKE_NODES, wake), "the cut's nodes");
     }
     check(g, eg2d_set_airfoil(g, section.get(), cgrid ? EG2D_TOPO_C : EG2D_TOPO_O), "airfoil " + a.source);
-    if (!a.quiet)
+    const double gap = trailing_edge_gap(section.get());  // 0 for a NACA code closed by --te sharpen
+    if (!a.quiet) {
         std::printf("%s %s-grid %dx%d, first cell %.4g chords, far field %g chords, %s trailing edge, method %s\n",
-                    name.c_str(), cgrid ? "C" : "O", a.ni, a.nj, h, a.farfield, a.te == "blunt" ? "blunt" : "sharp",
-                    a.method.c_str());
+                    name.c_str(), cgrid ? "C" : "O", a.ni, a.nj, h, a.farfield,
+                    gap <= 1e-7 ? "sharp" : (a.te == "blunt" ? "blunt" : "sharpened"), a.method.c_str());
+        if (naca && a.te == "sharpen") std::printf("note: the NACA section closed sharply at chord 1 (--te sharpen)\n");
+        trailing_edge_note(gap, a.te == "sharpen");
+    }
     Progress progress(isatty(STDOUT_FILENO) != 0, a.quiet);
     check(g, eg2d_set_monitor(g, Progress::monitor, &progress), "monitor");
     int status;
