@@ -8,7 +8,11 @@
  *            off (EG2D_PARAM_FOLD_CHECK 0): the Amsden-Hirt grid;
  *   S, guard the same with the fold guard (the default);
  *   A        a = 10, b = 1, c = 1 ("a large");
- *   O        a = 10, b = 1, c = 5 ("c large").
+ *   O        a = 10, b = 1, c = 5 ("c large");
+ *   A3       a = 3, b = 1, c = 0: an area weight whose minimum on the swan
+ *            is unfolded and not near a fold at 65..257 (measured: a = 1
+ *            stalls at the fold guard at every size, a = 5 at 65; a = 2
+ *            converges with Winslow's area ratio).
  * Columns: how the run ended (ok, folded: converged with folded cells,
  * stalled: the fold guard's NOT_CONVERGED, capped: stopped after 20 CPU s),
  * cycles, CPU seconds of this thread (median of 3 for runs that end ok or
@@ -35,7 +39,7 @@ typedef struct {
 static const config configs[] = {
     {"winslow", EG2D_SYSTEM_WINSLOW, 1, 0, 1, 0},      {"S", EG2D_SYSTEM_VARIATIONAL, 0, 0, 1, 0},
     {"S, guard", EG2D_SYSTEM_VARIATIONAL, 1, 0, 1, 0}, {"A", EG2D_SYSTEM_VARIATIONAL, 1, 10, 1, 1},
-    {"O", EG2D_SYSTEM_VARIATIONAL, 1, 10, 1, 5},
+    {"O", EG2D_SYSTEM_VARIATIONAL, 1, 10, 1, 5},      {"A3", EG2D_SYSTEM_VARIATIONAL, 1, 3, 1, 0},
 };
 
 typedef struct {

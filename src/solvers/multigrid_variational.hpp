@@ -1,5 +1,7 @@
 // What the FAS multigrid does differently for the variational system
-// (operator/variational.hpp): the smoother is the point Newton step, and on
+// (operator/variational.hpp) on a C-grid's wake cut (single blocks and
+// O-grids get the Newton minimiser, variational_newton.hpp, which is far
+// faster: bench/RESULTS.md): the smoother is the point Newton step, and on
 // the fine grid, under the fold guard, no smoothing step and no coarse
 // correction may fold a cell; a cycle that stops making progress because of
 // that ends the run (FoldStall).

@@ -1,0 +1,481 @@
+#include "solvers/variational_newton.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "base/error.hpp"
+#include "operator/variational_cell.hpp"
+#include "solvers/multigrid_variational.hpp"
+
+namespace eg2d {
+
+namespace {
+
+// Eisenstat-Walker (1996) choice 2 for the CG tolerance ||H d + g|| <=
+// forcing ||g||: gamma (||g_k||/||g_k-1||)^2, safeguarded, in [kForcingMin, kForcingMax].
+constexpr double kForcingGamma = 0.9, kForcingMax = 0.1, kForcingMin = 1e-8;
+constexpr int kMaxCg = 200;
+// The Levenberg shift, relative to the Hessian's diagonal: first value,
+// growth on a failure, decay after a full step; a shift below kShiftFloor is 0.
+constexpr double kShiftFirst = 1e-3, kShiftGrowth = 10.0, kShiftDecay = 0.1, kShiftFloor = 1e-6;
+constexpr int kHalvings = 30;
+constexpr double kArmijo = 1e-4;
+// The fold guard's stall: the fold limit shortened the last kStallSteps
+// Newton steps, and the residual is not down by kProgress in them (a corner
+// driven towards flat comes half the way closer per step and never arrives).
+constexpr int kStallSteps = 12;
+constexpr double kProgress = 0.8;
+// No progress at all (without the fold limit) in this many steps ends the run too.
+constexpr int kNoProgressSteps = 40;
+// Grid sequencing (sequence()): coarse levels down to kCoarsestNodes a side,
+// each minimised to kCoarseTolerance in at most kCoarseSteps Newton steps.
+constexpr int kCoarsestNodes = 17;
+constexpr double kCoarseTolerance = 1e-6;
+constexpr int kCoarseSteps = 60;
+
+double dot(const std::vector<Vec2> &a, const std::vector<Vec2> &b) {
+    double s = 0.0;
+    for (std::size_t k = 0; k < a.size(); ++k) s += a[k].x * b[k].x + a[k].y * b[k].y;
+    return s;
+}
+
+// The smallest alpha > 0 at which c0 + c1 alpha + c2 alpha^2 (c0 > 0) is 0, or infinity.
+double first_root(double c0, double c1, double c2) {
+    const double inf = std::numeric_limits<double>::infinity();
+    if (c2 == 0.0) return c1 < 0.0 ? -c0 / c1 : inf;
+    const double disc = c1 * c1 - 4.0 * c2 * c0;
+    if (disc < 0.0) return inf;  // c2 > 0 and no real root: positive for every alpha
+    const double s = std::sqrt(disc);
+    // Roots without cancellation: q = -(c1 + sign(c1) s)/2, roots q/c2 and c0/q.
+    const double q = -0.5 * (c1 + (c1 >= 0.0 ? s : -s));
+    double best = inf;
+    if (q != 0.0) {
+        const double r1 = q / c2, r2 = c0 / q;
+        if (r1 > 0.0) best = std::min(best, r1);
+        if (r2 > 0.0) best = std::min(best, r2);
+    }
+    return best;
+}
+
+// The mean of the cells' signed areas (their sum is fixed by the boundary).
+double mean_area(const Connectivity &conn, const double *x, const double *y) {
+    const std::size_t ni = static_cast<std::size_t>(conn.ni()), nj = static_cast<std::size_t>(conn.nj());
+    double sum = 0.0;
+    for (std::size_t j = 0; j + 1 < nj; ++j)
+        for (std::size_t i = 0; i + 1 < ni; ++i) {
+            const std::size_t k = i + ni * j;
+            sum += 0.5 * ((x[k + ni + 1] - x[k]) * (y[k + ni] - y[k + 1]) - (y[k + ni + 1] - y[k]) * (x[k + ni] - x[k + 1]));
+        }
+    return sum / (static_cast<double>(ni - 1) * static_cast<double>(nj - 1));
+}
+
+}  // namespace
+
+void VariationalNewton::reset() {
+    started_ = false;
+    restart();
+}
+
+void VariationalNewton::restart() {
+    noted_shift_ = false;
+    convex_next_ = false;
+    shift_ = 0.0;
+    last_gradient_ = -1.0;
+    forcing_ = kForcingMax;
+    best_ = -1.0;
+    since_best_ = limited_ = 0;
+    last_limited_ = false;
+}
+
+void VariationalNewton::layout(const Connectivity &conn) {
+    ni_ = conn.ni();
+    periodic_ = conn.periodic_i();
+    nc_ = periodic_ ? ni_ - 1 : ni_;
+    nr_ = conn.nj();
+    if (H_.nc != nc_ || H_.nr != nr_ || H_.periodic != periodic_) {
+        H_.resize(nc_, nr_, periodic_);
+        C_.resize(nc_, nr_, periodic_);
+        const std::size_t n = H_.nodes();
+        for (std::vector<Vec2> *v : {&g_, &d_, &r_, &z_, &p_, &q_}) v->assign(n, Vec2{});
+        diag_.assign(n, 0.0);
+    }
+    std::fill(H_.unknown.begin(), H_.unknown.end(), 0);
+    for (int j = conn.j_begin(); j < conn.j_end(); ++j)
+        for (int i = conn.i_begin(); i < conn.i_end(); ++i)
+            H_.unknown[static_cast<std::size_t>(i) + static_cast<std::size_t>(nc_) * j] = !conn.fixed(i, j);
+    C_.unknown = H_.unknown;
+}
+
+double VariationalNewton::assemble(const double *gx, const double *gy, const Functional &F) {
+    static const int lx[4] = {0, 1, 1, 0}, ly[4] = {0, 0, 1, 1};
+    std::fill(g_.begin(), g_.end(), Vec2{});
+    std::fill(H_.a.begin(), H_.a.end(), Mat2{});
+    std::fill(C_.a.begin(), C_.a.end(), Mat2{});
+    const int cells_i = periodic_ ? nc_ : nc_ - 1;
+    double value = 0.0;
+    CellTerms t;
+    for (int j = 0; j + 1 < nr_; ++j)
+        for (int i = 0; i < cells_i; ++i) {
+            std::size_t u[4];
+            double x[4], y[4];
+            bool any = false;
+            for (int m = 0; m < 4; ++m) {
+                const int ci = periodic_ && i + lx[m] == nc_ ? 0 : i + lx[m], cj = j + ly[m];
+                u[m] = static_cast<std::size_t>(ci) + static_cast<std::size_t>(nc_) * cj;
+                const std::size_t k = static_cast<std::size_t>(ci) + static_cast<std::size_t>(ni_) * cj;
+                x[m] = gx[k];
+                y[m] = gy[k];
+                any = any || H_.unknown[u[m]];
+            }
+            if (!any) continue;  // all four corners fixed: a constant
+            cell_terms(F, mean_, x, y, true, t);
+            value += t.value;
+            for (int p = 0; p < 4; ++p) {
+                if (!H_.unknown[u[p]]) continue;
+                g_[u[p]].x += t.g[2 * p];
+                g_[u[p]].y += t.g[2 * p + 1];
+                for (int q = 0; q < 4; ++q) {
+                    if (!H_.unknown[u[q]]) continue;
+                    Mat2 &b = H_.at(u[p], lx[q] - lx[p], ly[q] - ly[p]);
+                    b.a += t.h[2 * p][2 * q];
+                    b.b += t.h[2 * p][2 * q + 1];
+                    b.c += t.h[2 * p + 1][2 * q];
+                    b.d += t.h[2 * p + 1][2 * q + 1];
+                    Mat2 &c = C_.at(u[p], lx[q] - lx[p], ly[q] - ly[p]);
+                    c.a += t.hc[2 * p][2 * q];
+                    c.b += t.hc[2 * p][2 * q + 1];
+                    c.c += t.hc[2 * p + 1][2 * q];
+                    c.d += t.hc[2 * p + 1][2 * q + 1];
+                }
+            }
+        }
+    for (std::size_t u = 0; u < H_.nodes(); ++u) {
+        if (!H_.unknown[u]) H_.at(u, 0, 0) = C_.at(u, 0, 0) = Mat2{1.0, 0.0, 0.0, 1.0};
+        diag_[u] = std::max(C_.at(u, 0, 0).a, C_.at(u, 0, 0).d);
+    }
+    return value;
+}
+
+double VariationalNewton::energy(const double *gx, const double *gy, const Functional &F, double alpha) const {
+    static const int lx[4] = {0, 1, 1, 0}, ly[4] = {0, 0, 1, 1};
+    const int cells_i = periodic_ ? nc_ : nc_ - 1;
+    double value = 0.0;
+    for (int j = 0; j + 1 < nr_; ++j)
+        for (int i = 0; i < cells_i; ++i) {
+            double x[4], y[4];
+            bool any = false;
+            for (int m = 0; m < 4; ++m) {
+                const int ci = periodic_ && i + lx[m] == nc_ ? 0 : i + lx[m], cj = j + ly[m];
+                const std::size_t u = static_cast<std::size_t>(ci) + static_cast<std::size_t>(nc_) * cj;
+                const std::size_t k = static_cast<std::size_t>(ci) + static_cast<std::size_t>(ni_) * cj;
+                x[m] = gx[k] + alpha * d_[u].x;
+                y[m] = gy[k] + alpha * d_[u].y;
+                any = any || H_.unknown[u];
+            }
+            if (any) value += cell_value(F, mean_, x, y);
+        }
+    return value;
+}
+
+double VariationalNewton::fold_limit(const double *gx, const double *gy, int orientation) const {
+    static const int lx[4] = {0, 1, 1, 0}, ly[4] = {0, 0, 1, 1};
+    const int cells_i = periodic_ ? nc_ : nc_ - 1;
+    double limit = std::numeric_limits<double>::infinity();
+    for (int j = 0; j + 1 < nr_; ++j)
+        for (int i = 0; i < cells_i; ++i) {
+            double x[4], y[4], dx[4], dy[4];
+            for (int m = 0; m < 4; ++m) {
+                const int ci = periodic_ && i + lx[m] == nc_ ? 0 : i + lx[m], cj = j + ly[m];
+                const std::size_t u = static_cast<std::size_t>(ci) + static_cast<std::size_t>(nc_) * cj;
+                const std::size_t k = static_cast<std::size_t>(ci) + static_cast<std::size_t>(ni_) * cj;
+                x[m] = gx[k];
+                y[m] = gy[k];
+                dx[m] = d_[u].x;
+                dy[m] = d_[u].y;
+            }
+            // Each corner's turn (next - m) x (prev - m) along the step is
+            // quadratic in alpha; a corner already flat or folded sets no limit.
+            for (int m = 0; m < 4; ++m) {
+                const int n = (m + 1) % 4, p = (m + 3) % 4;
+                const double ax = x[n] - x[m], ay = y[n] - y[m], bx = x[p] - x[m], by = y[p] - y[m];
+                const double dax = dx[n] - dx[m], day = dy[n] - dy[m], dbx = dx[p] - dx[m], dby = dy[p] - dy[m];
+                const double c0 = orientation * (ax * by - ay * bx);
+                if (!(c0 > 0.0)) continue;
+                const double c1 = orientation * (ax * dby - ay * dbx + dax * by - day * bx);
+                const double c2 = orientation * (dax * dby - day * dbx);
+                limit = std::min(limit, first_root(c0, c1, c2));
+            }
+        }
+    return limit;
+}
+
+// CG on K d = -g, preconditioned by one V-cycle (mg_); `negative` on a
+// direction of non-positive curvature of K, where it stops with the iterate
+// so far (the preconditioned gradient if that is still 0).
+int VariationalNewton::solve(const BlockStencil &K, double forcing, bool &negative) {
+    negative = false;
+    std::fill(d_.begin(), d_.end(), Vec2{});
+    for (std::size_t k = 0; k < g_.size(); ++k) r_[k] = Vec2{-g_[k].x, -g_[k].y};
+    const double target = forcing * std::sqrt(dot(r_, r_));
+    mg_.apply(r_.data(), z_.data());
+    p_ = z_;
+    double rz = dot(r_, z_);
+    for (int it = 1; it <= kMaxCg; ++it) {
+        K.multiply(p_.data(), q_.data());
+        for (std::size_t k = 0; k < q_.size(); ++k)
+            if (!K.unknown[k]) q_[k] = Vec2{};
+        const double pq = dot(p_, q_);
+        if (!(pq > 0.0)) {
+            negative = true;
+            if (it == 1) d_ = z_;
+            return it;
+        }
+        const double a = rz / pq;
+        for (std::size_t k = 0; k < d_.size(); ++k) {
+            d_[k].x += a * p_[k].x;
+            d_[k].y += a * p_[k].y;
+            r_[k].x -= a * q_[k].x;
+            r_[k].y -= a * q_[k].y;
+        }
+        if (std::sqrt(dot(r_, r_)) <= target) return it;
+        mg_.apply(r_.data(), z_.data());
+        const double rz1 = dot(r_, z_);
+        const double b = rz1 / rz;
+        rz = rz1;
+        for (std::size_t k = 0; k < p_.size(); ++k) p_[k] = Vec2{z_[k].x + b * p_[k].x, z_[k].y + b * p_[k].y};
+    }
+    return kMaxCg;
+}
+
+namespace {
+
+// Cells of (x, y) on conn's grid that fold against `orientation` (multigrid_variational.hpp).
+long folds(const Connectivity &conn, double *x, double *y, int orientation) {
+    Level L;
+    L.conn = &conn;
+    L.x = x;
+    L.y = y;
+    return folded_cells(L, orientation);
+}
+
+// fine += the bilinear interpolation of (coarse - base), coarse and base on
+// the grid with every other node (the boundary's correction is 0).
+void add_correction(const Connectivity &fine, double *f, const std::vector<double> &coarse,
+                    const std::vector<double> &base) {
+    const int ni = fine.ni(), nic = (ni - 1) / 2 + 1;
+    auto c = [&](int I, int J) {
+        const std::size_t k = static_cast<std::size_t>(I) + static_cast<std::size_t>(nic) * J;
+        return coarse[k] - base[k];
+    };
+    for (int j = fine.j_begin(); j < fine.j_end(); ++j)
+        for (int i = fine.i_begin(); i < fine.i_end(); ++i) {
+            const int I0 = i / 2, J0 = j / 2, I1 = i % 2 ? I0 + 1 : I0, J1 = j % 2 ? J0 + 1 : J0;
+            f[static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * j] +=
+                0.25 * (c(I0, J0) + c(I1, J0) + c(I0, J1) + c(I1, J1));
+        }
+    fine.sync(f);
+}
+
+}  // namespace
+
+bool VariationalNewton::solve_level(const Connectivity &conn, double *x, double *y, const Functional &F,
+                                    double extent) {
+    restart();
+    Level L;
+    L.conn = &conn;
+    L.x = x;
+    L.y = y;
+    L.functional = &F;
+    for (int s = 0; s < kCoarseSteps; ++s) {
+        if (residual(System::Variational, L, extent).value <= kCoarseTolerance) return true;
+        step(conn, x, y, F, nullptr);
+        if (limited_ >= kStallSteps) return false;
+    }
+    return residual(System::Variational, L, extent).value <= kCoarseTolerance;
+}
+
+// Grid sequencing: V's minimum on grids with every 2nd, 4th, ... node first
+// (each from the start grid sampled there plus the coarser minimum's change
+// of it, interpolated), so the fine grid starts close to its own minimum.
+// Only where the grid halves evenly in both directions and has no fixed
+// lines or held rows; a coarse level that stalls or a start that folds
+// ends it (noted), and the fine grid keeps the start it had.
+void VariationalNewton::sequence(Problem &p) {
+    const Connectivity &fine = p.grid.connectivity();
+    if (fine.has_fixed() || fine.held_rows() > 0) return;
+    std::vector<Connectivity> conns{fine};
+    for (;;) {
+        const Connectivity &c = conns.back();
+        const int ni = c.ni(), nj = c.nj();
+        if ((ni - 1) % 2 || (nj - 1) % 2 || (ni - 1) / 2 + 1 < kCoarsestNodes || (nj - 1) / 2 + 1 < kCoarsestNodes) break;
+        if (c.periodic_i() && (ni - 1) / 2 < 8) break;
+        conns.push_back(c.coarsened(2, 2));
+    }
+    if (conns.size() < 2) return;
+    // The start grid on every level (level 0: the grid's own).
+    const std::size_t n_levels = conns.size();
+    std::vector<std::vector<double>> wx(n_levels), wy(n_levels), vx(n_levels), vy(n_levels);
+    wx[0] = p.grid.x;
+    wy[0] = p.grid.y;
+    for (std::size_t l = 1; l < n_levels; ++l) {
+        const int ni = conns[l].ni(), nj = conns[l].nj(), nif = conns[l - 1].ni();
+        wx[l].resize(static_cast<std::size_t>(ni) * nj);
+        wy[l].resize(wx[l].size());
+        for (int j = 0; j < nj; ++j)
+            for (int i = 0; i < ni; ++i) {
+                const std::size_t k = static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * j;
+                const std::size_t kf = static_cast<std::size_t>(2 * i) + static_cast<std::size_t>(nif) * (2 * j);
+                wx[l][k] = wx[l - 1][kf];
+                wy[l][k] = wy[l - 1][kf];
+            }
+    }
+    const double extent = p.grid.extent();
+    const int orientation = p.functional.orientation;
+    for (std::size_t l = n_levels; l-- > 1;) {
+        vx[l] = wx[l];
+        vy[l] = wy[l];
+        if (l + 1 < n_levels) {
+            add_correction(conns[l], vx[l].data(), vx[l + 1], wx[l + 1]);
+            add_correction(conns[l], vy[l].data(), vy[l + 1], wy[l + 1]);
+            if (orientation != 0 && folds(conns[l], vx[l].data(), vy[l].data(), orientation) >
+                                        folds(conns[l], wx[l].data(), wy[l].data(), orientation)) {
+                vx[l] = wx[l];
+                vy[l] = wy[l];
+            }
+        }
+        // The same weights over this level's mean cell area (variational.hpp).
+        const double ratio = static_cast<double>(conns[l].ni() - 1) * (conns[l].nj() - 1) /
+                             (static_cast<double>(fine.ni() - 1) * (fine.nj() - 1));
+        Functional F = p.functional;
+        F.area *= ratio;
+        F.orthogonality *= ratio;
+        if (!solve_level(conns[l], vx[l].data(), vy[l].data(), F, extent)) {
+            p.note(format("variational: the minimisation on the %dx%d grid (grid sequencing) stalled at the fold "
+                          "guard; the %dx%d grid starts from its initial grid instead",
+                          conns[l].ni(), conns[l].nj(), fine.ni(), fine.nj()));
+            restart();
+            return;
+        }
+    }
+    std::vector<double> x = p.grid.x, y = p.grid.y;
+    add_correction(fine, x.data(), vx[1], wx[1]);
+    add_correction(fine, y.data(), vy[1], wy[1]);
+    if (orientation != 0 && folds(fine, x.data(), y.data(), orientation) >
+                                folds(fine, p.grid.x.data(), p.grid.y.data(), orientation)) {
+        p.note("variational: the coarse grids' minimum interpolated folds cells of the fine grid; it starts from "
+               "its initial grid instead");
+    } else {
+        p.grid.x = x;
+        p.grid.y = y;
+    }
+    restart();
+}
+
+void VariationalNewton::iterate(Problem &p) {
+    if (!started_ && p.fresh_start) sequence(p);
+    started_ = true;
+    step(p.grid.connectivity(), p.grid.x.data(), p.grid.y.data(), p.functional, &p);
+}
+
+void VariationalNewton::step(const Connectivity &conn, double *x, double *y, const Functional &F, Problem *p) {
+    layout(conn);
+    mean_ = mean_area(conn, x, y);
+    const double v0 = assemble(x, y, F);
+    const double gnorm = std::sqrt(dot(g_, g_));
+    last_limited_ = false;
+    if (gnorm == 0.0) return;
+    if (last_gradient_ > 0.0) {
+        const double ratio = gnorm / last_gradient_;
+        double eta = kForcingGamma * ratio * ratio;
+        const double safe = kForcingGamma * forcing_ * forcing_;
+        if (safe > 0.1) eta = std::max(eta, safe);
+        forcing_ = std::clamp(eta, kForcingMin, kForcingMax);
+    }
+    last_gradient_ = gnorm;
+    // The Newton direction: CG on the exact Hessian, preconditioned by a
+    // V-cycle on the convex one (variational_cell.hpp; positive definite),
+    // stopped at a direction of negative curvature (truncated Newton: the
+    // iterate so far, or the preconditioned gradient, still descends).
+    // A Levenberg shift (shift_ times the diagonal) on both while a step
+    // finds no descent.
+    for (std::size_t u = 0; shift_ > 0.0 && u < H_.nodes(); ++u)
+        if (H_.unknown[u]) {
+            H_.at(u, 0, 0).a += shift_ * diag_[u];
+            H_.at(u, 0, 0).d += shift_ * diag_[u];
+            C_.at(u, 0, 0).a += shift_ * diag_[u];
+            C_.at(u, 0, 0).d += shift_ * diag_[u];
+        }
+    bool negative = false;
+    if (!mg_.setup(C_))
+        fail(Failure::NotConverged, "variational: the convex Hessian's coarsest factor failed (a spacing weight of 0 "
+                                    "on a grid where A and O alone leave a node free?)");
+    solve(H_, forcing_, negative);
+    // The step: at most kToFold of the way to the first corner turning flat,
+    // then halved until V falls enough (Armijo). A decrease below V's
+    // round-off is taken as it is (near the minimum).
+    const double slope = dot(g_, d_);
+    double alpha = 1.0;
+    if (F.orientation != 0) {
+        const double limit = kToFold * fold_limit(x, y, F.orientation);
+        if (limit < 1.0) {
+            alpha = limit;
+            last_limited_ = true;
+        }
+    }
+    const bool noise = -slope <= 1e-13 * std::fabs(v0);
+    int halvings = 0;
+    while (!noise && !(energy(x, y, F, alpha) <= v0 + kArmijo * alpha * slope)) {
+        if (++halvings > kHalvings) {
+            alpha = 0.0;
+            break;
+        }
+        alpha *= 0.5;
+    }
+    if (alpha > 0.0) {
+        for (int j = 0; j < nr_; ++j)
+            for (int i = 0; i < nc_; ++i) {
+                const std::size_t u = static_cast<std::size_t>(i) + static_cast<std::size_t>(nc_) * j;
+                if (!H_.unknown[u]) continue;
+                const std::size_t k = static_cast<std::size_t>(i) + static_cast<std::size_t>(ni_) * j;
+                x[k] += alpha * d_[u].x;
+                y[k] += alpha * d_[u].y;
+            }
+        conn.sync(x);
+        conn.sync(y);
+    }
+    // A full step: the shift may shrink; no step: it must grow.
+    if (alpha == 1.0) {
+        shift_ = shift_ * kShiftDecay < kShiftFloor ? 0.0 : shift_ * kShiftDecay;
+    } else if (alpha == 0.0) {
+        shift_ = shift_ == 0.0 ? kShiftFirst : shift_ * kShiftGrowth;
+        if (!noted_shift_ && p) {
+            noted_shift_ = true;
+            p->note(format("variational: a Newton step found no descent (residual %.3g); the steps add a Levenberg "
+                          "shift (%.3g times the Hessian's diagonal, more if needed)", gnorm, shift_));
+        }
+    }
+}
+
+void VariationalNewton::observe(double residual) {
+    limited_ = last_limited_ ? limited_ + 1 : 0;
+    if (best_ < 0.0 || residual <= kProgress * best_) {
+        best_ = residual;
+        since_best_ = 0;
+        return;
+    }
+    ++since_best_;
+    if (limited_ >= kStallSteps && since_best_ >= kStallSteps)
+        fail(Failure::NotConverged,
+             format("variational: the fold guard shortened the last %d Newton steps and the residual fell by less "
+                    "than %g in them (best %.3g): the minimum of V for these weights folds or collapses cells, and "
+                    "the grid is kept unfolded short of it. Raise the area weight, or set EG2D_PARAM_FOLD_CHECK to 0 "
+                    "for the unconstrained minimum",
+                    limited_, 1.0 / kProgress, best_));
+    if (since_best_ >= kNoProgressSteps)
+        fail(Failure::NotConverged,
+             format("variational: the residual fell by less than %g in %d Newton steps (best %.3g, Levenberg shift "
+                    "%.3g)", 1.0 / kProgress, kNoProgressSteps, best_, shift_));
+}
+
+}  // namespace eg2d
