@@ -970,9 +970,11 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   which bend it onto the JMAX set. The first cells have the height h and
  *   leave the wall along the march's lines (within 0.1 degree of normal on
  *   the benchmark's airfoils); within the layer each line grows by one
- *   ratio, about the schedule's. A march that folds is made again with
- *   EG2D_PARAM_MARCH_SMOOTHING 1, 2, 4 and 8; one that still cannot be
- *   made (EG2D_ERR_FOLDED or EG2D_ERR_ARGUMENT of EG2D_INIT_HYPERBOLIC)
+ *   ratio, about the schedule's. A march that folds goes back at least 64
+ *   layers and goes on with the next larger EG2D_PARAM_MARCH_SMOOTHING of
+ *   1, 2, 4 and 8; one that folds at 8 is made again from the wall with
+ *   each of them; one that still cannot be made (EG2D_ERR_FOLDED or
+ *   EG2D_ERR_ARGUMENT of EG2D_INIT_HYPERBOLIC)
  *   leaves the control below. JMAX keeps its line, but its nodes move
  *   along it to where the march's lines reach it (the ends stay). On a
  *   C-grid the march starts at EG2D_PARAM_MARCH_SMOOTHING 4 (the cut's

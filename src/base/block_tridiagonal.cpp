@@ -3,9 +3,11 @@
 namespace eg2d {
 
 namespace {
+// One division, not four: the march's layer solves are a fifth of a large
+// C-grid's run (NACA 0012 7169x2049, perf).
 Mat2 inv(const Mat2 &m) {
-    const double det = m.a * m.d - m.b * m.c;
-    return {m.d / det, -m.b / det, -m.c / det, m.a / det};
+    const double r = 1.0 / (m.a * m.d - m.b * m.c);
+    return {m.d * r, -m.b * r, -m.c * r, m.a * r};
 }
 Mat2 mul(const Mat2 &p, const Mat2 &q) {
     return {p.a * q.a + p.b * q.c, p.a * q.b + p.b * q.d, p.c * q.a + p.d * q.c, p.c * q.b + p.d * q.d};
@@ -40,6 +42,11 @@ void thomas(std::size_t n, const Mat2 *A, const Mat2 *B, const Mat2 *C, Vec2 *r,
 void solve_block_tridiagonal2(std::size_t n, const Mat2 *A, const Mat2 *B, const Mat2 *C, Vec2 *r) {
     std::vector<Mat2> G;
     thomas(n, A, B, C, r, nullptr, G);
+}
+
+void solve_block_tridiagonal2(std::size_t n, const Mat2 *A, const Mat2 *B, const Mat2 *C, Vec2 *r,
+                              std::vector<Mat2> &scratch) {
+    thomas(n, A, B, C, r, nullptr, scratch);
 }
 
 void solve_cyclic_block_tridiagonal2(std::size_t n, const Mat2 *A, const Mat2 *B, const Mat2 *C, Vec2 *r) {

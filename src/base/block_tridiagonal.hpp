@@ -22,6 +22,10 @@ struct Vec2 {
 // (block diagonal dominance); a singular pivot gives non-finite values,
 // which callers check. n >= 1.
 void solve_block_tridiagonal2(std::size_t n, const Mat2 *A, const Mat2 *B, const Mat2 *C, Vec2 *r);
+// The same with the caller's scratch (n blocks, kept between calls): a
+// march solves one system per layer and sub-step.
+void solve_block_tridiagonal2(std::size_t n, const Mat2 *A, const Mat2 *B, const Mat2 *C, Vec2 *r,
+                              std::vector<Mat2> &scratch);
 
 // The periodic system: A[0] couples u[0] to u[n-1], C[n-1] couples u[n-1]
 // to u[0]. n >= 3. r gets the solution.

@@ -145,12 +145,14 @@ void respace_layer(Grid &m, int rows, const std::vector<double> &first) {
     }
 }
 
-// The march, retried with more dissipation while it folds (kRetrySmoothing);
-// each retry is noted.
+// The march, first resumed with more dissipation from a little before the
+// layer that folds (hyperbolic.hpp), then, while it still folds, marched
+// again from the wall with each value of kRetrySmoothing; each retry is noted.
 void march_with_retries(const Grid &g, Grid &m, Settings s, double least, std::string &note) {
     std::vector<double> tries{std::max(s.march_smoothing, least)};
     for (double r : kRetrySmoothing)
         if (r > tries.back()) tries.push_back(r);
+    const std::vector<double> raised(tries.begin() + 1, tries.end());
     // Then down to the user's, for a C-grid started at `least`: a coarse
     // leading edge folded its third layer at 4 and 8 and marched at 2
     // (tests/fortran/test_march.f90's C-grid, NACA 0012 385x97 with both
@@ -162,10 +164,17 @@ void march_with_retries(const Grid &g, Grid &m, Settings s, double least, std::s
         s.march_smoothing = tries[k];
         m = g;
         m.hold_rows(0);
+        std::string resumed;
+        auto say_resumed = [&] {
+            if (!resumed.empty()) note += format("%swall layer (hybrid): %s", note.empty() ? "" : "; ", resumed.c_str());
+        };
         try {
-            hyperbolic_march(m, s);
+            if (k == 0) hyperbolic_march(m, s, raised, resumed);
+            else hyperbolic_march(m, s);
+            say_resumed();
             return;
         } catch (const Error &e) {
+            say_resumed();
             if (e.failure() != Failure::Folded || k + 1 == tries.size()) throw;
             note += format("%swall layer (hybrid): %s; marched again with EG2D_PARAM_MARCH_SMOOTHING %g",
                            note.empty() ? "" : "; ", e.what(), tries[k + 1]);

@@ -29,8 +29,15 @@ const double kMinSin2 = std::pow(std::sin(3.14159265358979323846 / 36), 2);
 // larger than its smallest spacing is marched in up to kMaxSubSteps equal
 // parts. Measured on the NACA 0012 O-grid 257x129 to 100 chords: 1 part per
 // layer gives 88% of the cells within 5 degrees of orthogonal, 16 parts 98.5%.
+// With at most 16 the C-grid 7169x2049 to 500 chords (first cell 1e-7)
+// folded at every dissipation, and O-grids 385x97 and 897x257 to 100 chords
+// (1e-5) at the default; with 64 they march (docs/hyperbolic.md).
 constexpr double kMaxStepRatio = 1.0;
-constexpr int kMaxSubSteps = 16;
+constexpr int kMaxSubSteps = 64;
+// A march that folds and may resume (hyperbolic.hpp) saves its state every
+// kSaveEvery layers and goes back at least kResumeLayers layers: the fold
+// begins a few layers before the layer that shows it.
+constexpr int kSaveEvery = 32, kResumeLayers = 64;
 const double kLnMin = std::log(0.1), kLnMax = std::log(100.0);  // the clamp of d
 // A convex corner of JMIN turning by 45 to 135 degrees (a blunt base's) has
 // a second difference of the order of its spacing, not of the spacing
@@ -147,7 +154,7 @@ struct March {
     std::vector<Vec2> r, prev, rhs;
     std::vector<NodeFrame> f;
     std::vector<double> step, edge, prev_edge, wall_edge, tmp, factor;
-    std::vector<Mat2> A, B, C;
+    std::vector<Mat2> A, B, C, scratch;
     std::vector<char> corner;  // JMIN's convex corners (kCornerShare)
     MarchEnd ends[2];
 
@@ -242,7 +249,7 @@ struct March {
             solve_cyclic_block_tridiagonal2(static_cast<std::size_t>(L.n), A.data(), B.data(), C.data(), rhs.data());
         } else {
             open_ends(ratio);
-            solve_block_tridiagonal2(static_cast<std::size_t>(L.n), A.data(), B.data(), C.data(), rhs.data());
+            solve_block_tridiagonal2(static_cast<std::size_t>(L.n), A.data(), B.data(), C.data(), rhs.data(), scratch);
         }
         // The dissipation pulls a convex layer back towards its centre of
         // curvature (5-10% of the distance of a circle's O-grid, summed over
@@ -334,10 +341,18 @@ FoldedRow folded_cells(const Grid &g, int j, int orientation) {
     return f;
 }
 
-}  // namespace
+// The state a march goes back to when it resumes (kResumeLayers): the layer
+// about to be made and what its step reads.
+struct Resume {
+    int layer = 1;
+    std::vector<Vec2> r, prev;
+    std::vector<double> prev_edge;
+    bool first = true;
+};
 
-void hyperbolic_march(Grid &g, const Settings &s) {
+void march(Grid &g, const Settings &settings, const std::vector<double> &raised, std::string *note) {
     const int ni = g.ni(), layers = g.nj() - 1;
+    Settings s = settings;  // the smoothing rises on a resumption; March reads it through its reference
     Layer L;
     L.periodic = g.topology() == Topology::O;
     L.n = L.periodic ? ni - 1 : ni;
@@ -364,7 +379,11 @@ void hyperbolic_march(Grid &g, const Settings &s) {
     const int transition = std::max(2, (3 * layers) / 4);
     bool first = true;
     int orientation = 1;
+    std::size_t next_raise = 0;
+    std::vector<Resume> saved;  // every kSaveEvery layers, while a resumption is left
     for (int l = 1; l <= layers; ++l) {
+        if (next_raise < raised.size() && (l - 1) % kSaveEvery == 0)
+            saved.push_back({l, m.r, m.prev, m.prev_edge, first});
         const double Sl = layers > 1 ? std::sqrt(static_cast<double>(std::min(l, transition) - 1) / (layers - 1)) : 0;
         const double ratio = l > 1 ? h[l - 1] / h[l - 2] : (layers > 1 ? h[1] / h[0] : 1.0);
         frames(L, m.r, m.side, m.f, m.edge);
@@ -395,11 +414,37 @@ void hyperbolic_march(Grid &g, const Settings &s) {
         // was handed back as a grid). The first layer's turn is the sign.
         if (l == 1) orientation = layer_orientation(g, 0);
         const FoldedRow folded = folded_cells(g, l - 1, orientation);
-        if (folded.count > 0)
-            fail(Failure::Folded,
-                 format("march: layer %d folds %d cell(s), the first at i = %d: lower EG2D_PARAM_MARCH_GROWTH or "
-                        "the distance, raise nj, or raise EG2D_PARAM_MARCH_SMOOTHING", l, folded.count, folded.first));
+        if (folded.count == 0) continue;
+        const std::string what = format("march: layer %d folds %d cell(s), the first at i = %d", l, folded.count,
+                                        folded.first);
+        if (next_raise < raised.size()) {
+            auto back = saved.begin();
+            for (auto k = saved.begin(); k != saved.end(); ++k)
+                if (k->layer <= l - kResumeLayers) back = k;
+            const double from = s.march_smoothing;
+            s.march_smoothing = raised[next_raise++];
+            if (note)
+                *note += format("%s%s at EG2D_PARAM_MARCH_SMOOTHING %g; marched on from layer %d with %g",
+                                note->empty() ? "" : "; ", what.c_str(), from, back->layer, s.march_smoothing);
+            m.r = back->r;
+            m.prev = back->prev;
+            m.prev_edge = back->prev_edge;
+            first = back->first;
+            l = back->layer - 1;
+            saved.erase(std::next(back), saved.end());
+            continue;
+        }
+        fail(Failure::Folded, what + ": lower EG2D_PARAM_MARCH_GROWTH or the distance, raise nj, or raise "
+                                     "EG2D_PARAM_MARCH_SMOOTHING");
     }
+}
+
+}  // namespace
+
+void hyperbolic_march(Grid &g, const Settings &s) { march(g, s, {}, nullptr); }
+
+void hyperbolic_march(Grid &g, const Settings &s, const std::vector<double> &raised, std::string &note) {
+    march(g, s, raised, &note);
 }
 
 }  // namespace eg2d

@@ -394,12 +394,14 @@ static void test_errors(void **state) {
     assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MARCH_DISTANCE, -1), EG2D_ERR_ARGUMENT);
     eg2d_destroy(g);
 
-    /* a march that folds is an error, not a grid: NACA 0012 385x97 to 100
-     * chords from 1e-5 folds its layer 84 (before, 82 folded cells came back
-     * as EG2D_OK) */
-    g = naca_o(385, 97);
-    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MARCH_DISTANCE, 99.5), EG2D_OK);
-    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MARCH_FIRST_HEIGHT, 1e-5), EG2D_OK);
+    /* a march that folds is an error, not a grid: NACA 0012 513x25 to 500
+     * chords from 1e-7 folds its layer 2 (once 385x97 to 100 chords from
+     * 1e-5 folded its layer 84 and 82 folded cells came back as EG2D_OK; it
+     * marches since a layer takes up to 64 sub-steps) */
+    g = naca_o(513, 25);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MARCH_DISTANCE, 500), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MARCH_FIRST_HEIGHT, 1e-7), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MARCH_GROWTH, 3.0), EG2D_OK);
     assert_int_equal(eg2d_initialize(g, EG2D_INIT_HYPERBOLIC), EG2D_ERR_FOLDED);
     assert_non_null(strstr(eg2d_last_error(g), "eg2d_initialize: march: layer "));
     assert_non_null(strstr(eg2d_last_error(g), " folds "));

@@ -258,17 +258,25 @@ static void test_default_is_automatic(void **state) {
     free(y);
 }
 
-/* A march that folds at its default dissipation is made again with more
- * (NACA 0012 385x97 to 100 chords), and one that folds then too (897x257)
- * leaves the Sorenson-type control; the run says which. */
+/* A march that folds at its default dissipation goes on with more from a
+ * little before the fold (NACA 0012 513x25 to 500 chords at 1e-5: layer 22,
+ * so from the wall), and one that folds then too (at 1e-7: layer 2 at every
+ * dissipation) leaves the Sorenson-type control; the run says which. Until
+ * the march took up to 64 sub-steps a layer, NACA 0012 O-grids 385x97 and
+ * 897x257 to 100 chords at 1e-5 were these cases; they march now. */
 static void test_hybrid_retries_then_falls_back_and_says_so(void **state) {
     char msg[1024];
     (void)state;
     note_of_one_iteration(385, 97, 100.0, 1e-5, 2, msg, sizeof msg);
     assert_non_null(strstr(msg, "wall layer (hybrid): 64 rows of the hyperbolic march held"));
+    assert_null(strstr(msg, "march: layer "));
+    note_of_one_iteration(513, 25, 500.0, 1e-5, 2, msg, sizeof msg);
+    print_message("513x25 at 1e-5: %s\n", msg);
+    assert_non_null(strstr(msg, "wall layer (hybrid): 16 rows of the hyperbolic march held"));
     assert_non_null(strstr(msg, "wall layer (hybrid): march: layer "));
-    assert_non_null(strstr(msg, "marched again with EG2D_PARAM_MARCH_SMOOTHING 1"));
-    note_of_one_iteration(897, 257, 100.0, 1e-5, 2, msg, sizeof msg);
+    assert_non_null(strstr(msg, "marched on from layer 1 with 1"));
+    note_of_one_iteration(513, 25, 500.0, 1e-7, 2, msg, sizeof msg);
+    print_message("513x25 at 1e-7: %s\n", msg);
     assert_non_null(strstr(msg, "wall layer (hybrid) not made: march: layer "));
     assert_non_null(strstr(msg, "; the wall control's updates instead"));
 }

@@ -1225,6 +1225,34 @@ class Airfoil(unittest.TestCase):
             self.airfoil(d, selig, "--topology", "c", "--size", "385x97", "--first-cell", "1e-5", "--format", "vts")
             self.assertEqual(self.report(d, "open-385x97")["folded_cells"], 0)  # the base kept on C-grids too
 
+    def test_tmr_comparison(self):
+        """A C-grid of one of the TMR family's sizes (113x33, its coarsest) is compared
+        with the published figures in NAME-NIxNJ.tmr.txt, and printed; its own figures are
+        the grid's (the counts of the airfoil's and the wake's points, the first cell as
+        asked, the far field); another size (97x25) has no comparison."""
+        with tempfile.TemporaryDirectory() as d:
+            code, text, err = run("airfoil", "0012", "--topology", "c", "--size", "113x33", "--first-cell", "8e-6",
+                                  "--farfield", "500", "--te", "sharpen", "-o", d)
+            self.assertEqual(code, 4, text + err)  # 32 rows to 500 chords grow by more than 1.2: said, written
+            with open(os.path.join(d, "naca0012-113x33.tmr.txt")) as f:
+                tmr = f.read()
+            self.assertIn(tmr, text)
+            self.assertIn("its level 7 of 7 (64 times coarser than 7169x2049)", tmr)
+            rows = {line[:40].strip(): line[40:].split() for line in tmr.splitlines()[2:]}
+            self.assertEqual(rows["points on the airfoil"], ["65", "65"])
+            self.assertEqual(rows["points on each side of the wake"], ["25", "25"])
+            published, low, _, high = rows["first cell, chords"]
+            self.assertAlmostEqual(float(published), 1e-7 * (1.02 ** 64 - 1) / 0.02, delta=1e-7)
+            self.assertLess(abs(float(low) / 8e-6 - 1), 0.01)
+            self.assertLess(abs(float(high) / 8e-6 - 1), 0.01)
+            self.assertLess(abs(float(rows["far field, chords"][2]) / 500 - 1), 0.01)
+            code, text, err = run("airfoil", "0012", "--topology", "c", "--size", "97x25", "--first-cell", "1e-4",
+                                  "--farfield", "20", "-o", d)
+            self.assertIn(code, (0, 4), text + err)  # 4: 24 rows grow by more than 1.2, said, written
+            self.assertTrue(os.path.exists(os.path.join(d, "naca0012-97x25.report.txt")))
+            self.assertFalse(os.path.exists(os.path.join(d, "naca0012-97x25.tmr.txt")))
+            self.assertNotIn("TMR", text)
+
     def test_selig_blunt_bases(self):
         """Selig files with an open trailing edge (NACA 4412, 0.0025 chords) and a
         blunt base (NACA 0012 thickened to a 1% base) on both topologies: the base

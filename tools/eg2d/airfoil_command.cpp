@@ -20,6 +20,7 @@
 #include "progress.hpp"
 #include "runner.hpp"
 #include "text_output.hpp"
+#include "tmr_comparison.hpp"
 #include "view_picture.hpp"
 
 namespace eg2dtool {
@@ -65,7 +66,9 @@ const char *const airfoil_help =
     "  -o DIR         the output directory (default .)\n"
     "Files: DIR/NAME-NIxNJ.EXT per level and format (the extensions of eg2d run: .xyz, .cgns,\n"
     "  .su2, _foam/, .vts, ...; plot3d3d -3d.xyz; the pictures -domain, -airfoil, -le and\n"
-    "  -te .svg or .png), NAME the NACA code or the file's stem.\n"
+    "  -te .svg or .png), NAME the NACA code or the file's stem. A C-grid of one of the sizes of\n"
+    "  NASA's Turbulence Modeling Resource NACA 0012 family (7169x2049 ... 113x33) is compared\n"
+    "  with its published figures in DIR/NAME-NIxNJ.tmr.txt, printed for the finest level.\n"
     "\n"
     "example:\n"
     "  eg2d airfoil 0012 --topology c --size 385x97 --yplus 1 --reynolds 6e6 --levels 3 \\\n"
@@ -390,11 +393,18 @@ int run_airfoil(int argc, char **argv) {
         for (const Feature &f : formats())  // the reports, always
             if (f.id == EG2D_FORMAT_REPORT || f.id == EG2D_FORMAT_REPORT_JSON)
                 check(lg, eg2d_write(lg, (base + f.extension).c_str(), f.id), base + f.extension);
+        // A C-grid of one of the TMR family's sizes is compared with it.
+        const std::string tmr = cgrid ? tmr_comparison(lg, ci, cj, wake / s, a.farfield, a.levels - 1 - level) : std::string();
+        if (!tmr.empty()) {
+            std::ofstream file(base + ".tmr.txt");
+            file << tmr;
+            if (!file) throw Failure(EXIT_IO, "airfoil: cannot write " + base + ".tmr.txt");
+        }
         if (!a.quiet) {
             std::printf("level %d: %dx%d -> %s.*\n", level, ci, cj, base.c_str());
             if (level == 0) {
                 std::ifstream report(base + ".report.txt");
-                std::printf("%s", std::string(std::istreambuf_iterator<char>(report), {}).c_str());
+                std::printf("%s%s", std::string(std::istreambuf_iterator<char>(report), {}).c_str(), tmr.c_str());
             }
         }
     }
