@@ -52,4 +52,9 @@ void set_node(Grid &g, int i, int j, Vec2 p) {
     g.y[node(g, i, j)] = p.y;
 }
 
+bool wall_corner(const Grid &g, std::size_t a, std::size_t b, std::size_t c) {
+    const double ux = g.x[b] - g.x[a], uy = g.y[b] - g.y[a], vx = g.x[c] - g.x[b], vy = g.y[c] - g.y[b];
+    return std::fabs(std::atan2(ux * vy - uy * vx, ux * vx + uy * vy)) > 0.25 * 3.14159265358979323846;
+}
+
 }  // namespace eg2d

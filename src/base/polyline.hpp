@@ -21,4 +21,11 @@ std::vector<Vec2> grid_column(const Grid &g, int i, int last);
 std::vector<Vec2> grid_row(const Grid &g, int j);
 void set_node(Grid &g, int i, int j, Vec2 p);
 
+// A wall node whose path a -> b -> c (node indices into g.x, g.y) turns by
+// more than 45 degrees is a corner (a blunt base's:
+// 90 degrees; a sharp trailing edge's: nearly 180): the wall has no normal
+// there, nor, by central differences, at the nodes beside it. The hybrid
+// layer's first-cell figures and the grid report leave such nodes out alike.
+bool wall_corner(const Grid &g, std::size_t a, std::size_t b, std::size_t c);
+
 }  // namespace eg2d

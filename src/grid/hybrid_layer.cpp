@@ -38,11 +38,6 @@ constexpr double kCGridSmoothing = 4.0;
 // of the benchmark reaches the bound.
 constexpr double kControlBound = 1.0;
 
-// A wall node that turns by more than this is a corner (a blunt base's:
-// 90 degrees); a sharp trailing edge's turn is the section's wedge angle
-// short of 180 and is one too, with its neighbours.
-constexpr double kCornerTurn = 0.25 * 3.14159265358979323846;
-
 std::size_t at(int ni, int i, int j) { return static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * j; }
 
 // The least distance of a JMAX node from a JMIN node.
@@ -249,9 +244,7 @@ HybridLayer shape_hybrid_layer(Grid &g, const Settings &settings, double h, bool
     std::vector<char> corner(static_cast<std::size_t>(ni), 0);
     for (int i = wake; i < (cgrid ? ni - wake : ni - 1); ++i) {
         const int a = i > 0 ? i - 1 : ni - 2, b = i + 1;
-        const double ux = m.x[at(ni, i, 0)] - m.x[at(ni, a, 0)], uy = m.y[at(ni, i, 0)] - m.y[at(ni, a, 0)];
-        const double vx = m.x[at(ni, b, 0)] - m.x[at(ni, i, 0)], vy = m.y[at(ni, b, 0)] - m.y[at(ni, i, 0)];
-        if (std::fabs(std::atan2(ux * vy - uy * vx, ux * vx + uy * vy)) > kCornerTurn)
+        if (wall_corner(m, at(ni, a, 0), at(ni, i, 0), at(ni, b, 0)))
             for (int k : {a, i, b}) corner[static_cast<std::size_t>(k)] = 1;
     }
     for (int i = wake; i < (cgrid ? ni - wake : ni - 1); ++i) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "base/error.hpp"
+#include "base/polyline.hpp"
 #include "eg2d.h"
 #include "io/formats.hpp"
 #include "io/unstructured.hpp"
@@ -50,11 +51,6 @@ struct Report {
 
 double metric(const Grid &g, int id) { return find_quality_metric(id)->summary(g); }
 
-// A wall node turning by more than this is a corner (a blunt base's: 90
-// degrees): the wall has no normal there, nor, by central differences, at
-// the nodes beside it.
-constexpr double kCornerTurn = kPi / 4;
-
 // The wall stretches (patches of type wall): at each node but a stretch's
 // two ends and its corners with the nodes beside them (a trailing edge, a
 // blunt base's corners, where the tangent is not defined), the first-cell
@@ -71,9 +67,7 @@ WallStats wall_stats(const Grid &g) {
         const int n = g.side_length(p.side);
         auto corner = [&](int q) {
             if (q <= p.first || q >= p.last) return false;
-            const std::size_t a = side_node(g, p.side, q - 1), b = side_node(g, p.side, q), c = side_node(g, p.side, q + 1);
-            const double ux = g.x[b] - g.x[a], uy = g.y[b] - g.y[a], vx = g.x[c] - g.x[b], vy = g.y[c] - g.y[b];
-            return std::fabs(std::atan2(ux * vy - uy * vx, ux * vx + uy * vy)) > kCornerTurn;
+            return wall_corner(g, side_node(g, p.side, q - 1), side_node(g, p.side, q), side_node(g, p.side, q + 1));
         };
         for (int q = p.first + 1; q < p.last; ++q) {
             if (corner(q - 1) || corner(q) || corner(q + 1)) continue;
