@@ -54,7 +54,8 @@ void bench_march(void);
 void bench_walls(void);
 
 /* The variational system against Winslow on the course notes' domains
- * (--variational, variational.c). */
-void bench_variational(void);
+ * (--variational, variational.c): the domains, sizes and grids (rows) in
+ * comma-separated lists (NULL: all), runs capped at `cap` CPU seconds. */
+void bench_variational(const char *cases, const char *sizes, const char *grids, double cap);
 
 #endif

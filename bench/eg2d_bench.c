@@ -14,8 +14,9 @@
  *              1025 against the nearest 2^k+1 size (sweep.c)
  *   eg2d_bench --march       the hyperbolic march: NACA 0012 O-grid 257x129 to 100 chords
  *   eg2d_bench --wall        wall-resolved NACA 0012 O-grids: wall control, hybrid layer, march
- *   eg2d_bench --variational EG2D_SYSTEM_VARIATIONAL (V = aA + bS + cO) against Winslow on the
- *                            course notes' domains at 65, 129, 257 (variational.c)
+ *   eg2d_bench --variational [--cases LIST] [--sizes LIST] [--grids LIST] [--cap S]
+ *                            EG2D_SYSTEM_VARIATIONAL (V = aA + bS + cO + dW) against Winslow on
+ *                            the course notes' domains at 65, 129, 257 (variational.c)
  *   eg2d_bench --quick       swan, annulus, NACA 0012 O and C at 65, 129, 250, every solver
  *                            (cap 10 CPU s): the same table in about a minute
  *
@@ -322,7 +323,21 @@ int main(int argc, char **argv) {
             return 0;
         }
         if (!strcmp(opt, "--variational")) {
-            bench_variational();
+            /* --variational [--cases LIST] [--sizes LIST] [--grids LIST] [--cap S] */
+            const char *vc = NULL, *vs = NULL, *vg = NULL;
+            double vcap = 20.0;
+            int b;
+            for (b = a + 1; b + 1 < argc; b += 2) {
+                if (!strcmp(argv[b], "--cases")) vc = argv[b + 1];
+                else if (!strcmp(argv[b], "--sizes")) vs = argv[b + 1];
+                else if (!strcmp(argv[b], "--grids")) vg = argv[b + 1];
+                else if (!strcmp(argv[b], "--cap")) vcap = atof(argv[b + 1]);
+            }
+            if (!(vcap > 0)) {
+                usage();
+                return 2;
+            }
+            bench_variational(vc, vs, vg, vcap);
             return 0;
         }
         if (!strcmp(opt, "--quick")) {

@@ -246,47 +246,69 @@ EG2D_API int eg2d_clear_interior_lines(eg2d_grid *grid);
 #define EG2D_SYSTEM_WINSLOW     1  /* Winslow / Thompson-Thames-Mastin (default) */
 #define EG2D_SYSTEM_VARIATIONAL 2  /* minimise V = aA + bS + cO (below) */
 /* EG2D_SYSTEM_VARIATIONAL (the grid-generation lecture notes, "Variational
- * methods"): the interior nodes minimise, with the boundary fixed (sliding
- * sides follow as with the other systems),
- *     V = a A/Abar + b S + c O/Abar
+ * methods"; Brackbill & Saltzman 1982): the interior nodes minimise, with
+ * the boundary fixed (sliding sides follow as with the other systems),
+ *     V = a A/Abar + b S + c O/Abar + d W
  *     S = sum over the grid's edges of |r_q - r_p|^2            (spacing)
  *     A = sum over the cells of area^2                           (area)
  *     O = sum over the cells, over each cell's four corners, of the squared
- *         dot product of the two edges leaving the corner        (orthogonality)
+ *         dot product (u.v)^2 of the two edges u, v leaving the corner
+ *                                                                (orthogonality)
+ *     W = Abar/4 times the sum over the corners of (|u|^2 + |v|^2)/(u x v)
+ *                                                                (smoothness)
  * every physical edge and cell once (an O-grid's cut, a C-grid's wake).
  * Abar, the mean cell area (enclosed area / cells), makes every term a
- * length squared: the weights a, b, c (EG2D_PARAM_VARIATIONAL_*) are
+ * length squared: the weights a, b, c, d (EG2D_PARAM_VARIATIONAL_*) are
  * dimensionless, and only their ratios matter. S's minimiser is the
- * Amsden-Hirt grid (a = c = 0: exactly EG2D_SYSTEM_LAPLACE's equations);
- * A pulls the cell areas together; O pulls the corners to 90 degrees.
+ * Amsden-Hirt grid (a = c = d = 0: exactly EG2D_SYSTEM_LAPLACE's
+ * equations); A pulls the cell areas together; O pulls the corners to 90
+ * degrees. W is Brackbill & Saltzman's own smoothness integral (Winslow's
+ * functional, int (g11 + g22)/J), at the corners as Charakhch'yan &
+ * Ivanenko (1997) discretise it: it grows without bound as a corner turns
+ * flat or a cell collapses, a barrier that keeps V's minimum unfolded
+ * (d = 0 by default: the lecture notes' V). With
+ * EG2D_PARAM_VARIATIONAL_ORTHOGONALITY_FORM 1, O is instead scale-invariant:
+ *     c Abar O',  O' = sum over the corners of (u.v)^2/(u x v)^2
+ * (the squared cotangent, g12^2/g; cf. the scale-invariant orthogonality
+ * functional g12^2/(g11 g22) in Knupp & Steinberg 1993 and Farrashkhalvat &
+ * Miles 2003). The lecture notes' dot products weigh a corner by its edges'
+ * lengths to the 4th power, so O's minimum puts the turning of the grid
+ * lines into small cells and shrinks them (on the swan and the dome, A and
+ * O alone stop at the fold guard); the cotangents weigh every corner alike
+ * and grow without bound as it turns flat. Measured (bench/RESULTS.md, the
+ * course notes' domains at 65^2-257^2): a = 0, b = 1, c = 2, d = 1 with
+ * the cotangent form has a smaller mean and largest angle deviation than
+ * Winslow's on the valley, the almost-convex domain, the swan and the dome
+ * (a tie on the annulus, whose largest deviation is the boundary's own).
  * The residual is V's gradient, scaled like the other systems':
  *   residual = max over unknown nodes of max(|dV/dx|, |dV/dy|) / (tr H / 2) / L
  * with H the 2x2 block of V's (Gauss-Newton) Hessian at the node: about the
  * largest node move a pointwise Newton step would make, as a fraction of
- * L; with a = c = 0 it is EG2D_SYSTEM_LAPLACE's residual.
+ * L; with a = c = d = 0 it is EG2D_SYSTEM_LAPLACE's residual.
  * Fold guard (EG2D_PARAM_FOLD_CHECK 1, the default): no step may fold a
- * cell; a node moves at most half the way to where a corner round it would
- * turn flat, and a coarse correction that folds cells is halved (at most
- * three times, then dropped). Where V's minimum folds or collapses cells
- * the grid stays unfolded short of it and the gradient stops falling:
- * multigrid then ends the run with EG2D_ERR_NOT_CONVERGED after 10 cycles
- * that lowered it by less than 1.25x (the message says so; the other
- * solvers run to the iteration limit). S alone folds where Amsden-Hirt
- * does: on non-convex domains (the elliptic-grid course notes' swan and
- * valley) and on the annulus 1 <= r <= 3 with n x (n/2+1) nodes; with
- * a = 10 b (and c = b) V's minimum there is unfolded. With FOLD_CHECK 0 V
- * is minimised without the guard (then eg2d_solve does not check folds
- * either).
- * Solvers: EG2D_SOLVER_MULTIGRID (FAS cycles smoothed by symmetric point
- * Gauss-Seidel with the node's 2x2 Newton step, halved until it lowers V
- * when O is on), PSOR and NESTED (the same point step, over-relaxed);
- * LSOR and AF fail with EG2D_ERR_STATE (their line systems are Winslow's
- * form). Control terms need EG2D_SYSTEM_WINSLOW (EG2D_ERR_STATE).
+ * cell; a step goes at most half the way to where a cell corner would turn
+ * flat. Where V's minimum folds or collapses cells (possible with d = 0)
+ * the grid stays unfolded short of it and the gradient stops falling: the
+ * run ends with EG2D_ERR_NOT_CONVERGED when the guard shortened the last
+ * steps and they lowered the residual by less than 1.25x (the message says
+ * so; PSOR and NESTED run to the iteration limit). S alone folds where
+ * Amsden-Hirt does: on non-convex domains (the elliptic-grid course notes'
+ * swan and valley) and on the annulus 1 <= r <= 3 with n x (n/2+1) nodes.
+ * With FOLD_CHECK 0 V is minimised without the guard (then eg2d_solve does
+ * not check folds either; W, if on, still keeps cells unfolded).
+ * Solvers: EG2D_SOLVER_MULTIGRID runs, where V is not S alone and the grid
+ * has no C-grid wake cut, a global Newton minimiser (one iteration = one
+ * Newton step; grid sequencing from the coarser grids first, the linear
+ * systems solved by conjugate gradients preconditioned with a Galerkin
+ * multigrid V-cycle); S alone and C-grids: FAS cycles of point Newton
+ * steps. PSOR and NESTED: the same point step, over-relaxed. LSOR and AF
+ * fail with EG2D_ERR_STATE (their line systems are Winslow's form).
+ * Control terms need EG2D_SYSTEM_WINSLOW (EG2D_ERR_STATE).
  * Cost (bench/RESULTS.md, eg2d_bench --variational): S alone takes the
- * cycles of Laplace (2-3); so do A and O on the annulus (3-7). On the
- * course notes' single blocks A and O take hundreds to thousands of cycles
- * from 65 x 65 nodes on: point smoothing barely damps their near-null
- * directions (moves that keep the cells' areas or angles). */
+ * cycles of Laplace (2-3); a = 3, b = 1 converges in 4 Newton steps at
+ * 257 x 257 on the swan (0.7 s); larger area or orthogonality weights take
+ * tens of steps there (the Newton steps are shortened near the fold
+ * barrier and where V is far from convex). */
 EG2D_API int eg2d_set_system(eg2d_grid *grid, int system);
 
 #define EG2D_SOLVER_PSOR      0  /* point SOR (Gauss-Seidel at omega = 1) */
@@ -348,7 +370,7 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
                                             the converged grid has folded cells; 0: it does not.
                                             EG2D_SYSTEM_VARIATIONAL: 1 also guards every step
                                             against folding a cell; 0 minimises without it */
-/* The weights a, b, c of EG2D_SYSTEM_VARIATIONAL (system parameters 10-19),
+/* The weights a, b, c, d of EG2D_SYSTEM_VARIATIONAL (system parameters 10-19),
  * dimensionless: each in [0, 1e6], not all 0 (a setting that would make
  * them all 0 fails with EG2D_ERR_ARGUMENT: set the new weight before zeroing
  * the old). The defaults are S alone (the Amsden-Hirt grid, which folds on
@@ -356,12 +378,16 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
  * notes' domains (tests/c/test_variational.c at 33 x 33, bench/RESULTS.md
  * to 257 x 257): a = 10, b = 1, c = 1 gives a smaller ratio of the largest
  * to the smallest cell area than Winslow's; a = 10, b = 1, c = 5 a smaller
- * mean deviation of the corner angles from 90 degrees (at 33 x 33 the
- * largest too), and it stalls at the fold guard near the swan's and the
- * dome's non-right corners from 129 x 129 and 65 x 65 nodes. */
+ * mean deviation of the corner angles from 90 degrees, but it stalls at the
+ * fold guard near the swan's and the dome's non-right corners; a = 0,
+ * b = 1, c = 2, d = 1 with ORTHOGONALITY_FORM 1 a smaller mean and largest
+ * deviation than Winslow's on all four single-block domains. */
 #define EG2D_PARAM_VARIATIONAL_AREA          10  /* a, default 0 */
 #define EG2D_PARAM_VARIATIONAL_SPACING       11  /* b, default 1 */
 #define EG2D_PARAM_VARIATIONAL_ORTHOGONALITY 12  /* c, default 0 */
+#define EG2D_PARAM_VARIATIONAL_SMOOTHNESS    13  /* d, default 0 */
+#define EG2D_PARAM_VARIATIONAL_ORTHOGONALITY_FORM 14  /* 0 (default): O as dot products;
+                                                     1: as squared cotangents (above) */
 /* Multigrid (EG2D_SOLVER_MULTIGRID): FAS cycles smoothed by incomplete-LU
  * sweeps of the nine-point operator (two orderings) on a single block, by
  * alternating line Gauss-Seidel on O- and C-grids. One iteration is one

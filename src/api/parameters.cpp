@@ -24,6 +24,10 @@ const ParameterInfo kParameters[] = {
      &Settings::variational_spacing},
     {EG2D_PARAM_VARIATIONAL_ORTHOGONALITY, "variational_orthogonality", 0.0, 1e6, false, false, false, false,
      &Settings::variational_orthogonality},
+    {EG2D_PARAM_VARIATIONAL_SMOOTHNESS, "variational_smoothness", 0.0, 1e6, false, false, false, false,
+     &Settings::variational_smoothness},
+    {EG2D_PARAM_VARIATIONAL_ORTHOGONALITY_FORM, "variational_orthogonality_form", 0.0, 1.0, false, false, true,
+     false, &Settings::variational_orthogonality_form},
     {EG2D_PARAM_MG_CYCLE, "mg_cycle", 1.0, 2.0, false, false, true, false, &Settings::mg_cycle},
     {EG2D_PARAM_MG_PRE_SMOOTH, "mg_pre_smooth", 0.0, 20.0, false, false, true, false, &Settings::mg_pre_smooth},
     {EG2D_PARAM_MG_POST_SMOOTH, "mg_post_smooth", 0.0, 20.0, false, false, true, false,
@@ -103,9 +107,11 @@ void check_settings(const Settings &s) {
     if (s.af_dtau_max > 0.0 && s.af_dtau_min > s.af_dtau_max)
         fail(Failure::Argument, format("af_dtau_min = %g > af_dtau_max = %g: the cycle needs min <= max",
                                        s.af_dtau_min, s.af_dtau_max));
-    if (s.variational_area == 0.0 && s.variational_spacing == 0.0 && s.variational_orthogonality == 0.0)
-        fail(Failure::Argument, "variational_area, variational_spacing and variational_orthogonality would all "
-                                "be 0: V = 0 has no minimiser (set the new weight before zeroing the old one)");
+    if (s.variational_area == 0.0 && s.variational_spacing == 0.0 && s.variational_orthogonality == 0.0 &&
+        s.variational_smoothness == 0.0)
+        fail(Failure::Argument, "variational_area, variational_spacing, variational_orthogonality and "
+                                "variational_smoothness would all be 0: V = 0 has no minimiser (set the new weight "
+                                "before zeroing the old one)");
 }
 
 }  // namespace api

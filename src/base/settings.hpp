@@ -16,6 +16,8 @@ struct Settings {
     double variational_area = 0.0;
     double variational_spacing = 1.0;
     double variational_orthogonality = 0.0;
+    double variational_smoothness = 0.0;  // d: Brackbill & Saltzman's smoothness (Winslow's) functional
+    double variational_orthogonality_form = 0;  // 0: O as dot products, 1: as squared cotangents
     // Multigrid (src/solvers/multigrid*.cpp).
     double mg_cycle = 2;              // cycle index: 1 = V, 2 = W
     double mg_pre_smooth = 2;         // alternating line sweeps before the coarse correction

@@ -233,8 +233,11 @@ Functional Generator::functional() const {
     double mean = boundary_area(grid_) / cells;
     if (!(mean > 0.0)) mean = grid_.extent() * grid_.extent() / cells;  // a flat boundary: any scale
     const int orientation = settings.fold_check != 0.0 ? boundary_orientation(grid_) : 0;
-    return make_functional(settings.variational_area, settings.variational_spacing,
-                           settings.variational_orthogonality, mean, orientation);
+    Functional f = make_functional(settings.variational_area, settings.variational_spacing,
+                                   settings.variational_orthogonality, settings.variational_smoothness,
+                                   settings.variational_orthogonality_form != 0.0, mean, orientation);
+    f.sense = boundary_orientation(grid_) < 0 ? -1 : 1;
+    return f;
 }
 
 ResidualInfo Generator::residual() const {

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "operator/operator.hpp"
+#include "operator/smoothness_cell.hpp"
 
 namespace eg2d {
 
@@ -62,12 +63,44 @@ struct NodeGradient {
     }
 };
 
+// Cell k round the node, (node, q[k], d[k], q[k+1]), with the node moved by
+// (dx, dy), in coordinates relative to the node's old place.
+void ring_cell(const Ring &r, int k, double dx, double dy, double x[4], double y[4]) {
+    x[0] = dx, y[0] = dy;
+    x[1] = r.ex[k], y[1] = r.ey[k];
+    x[2] = r.fx[k], y[2] = r.fy[k];
+    x[3] = r.ex[k + 1], y[3] = r.ey[k + 1];
+}
+
+// The corner terms (W and O's cotangent form, not quadratic in the node:
+// smoothness_cell.hpp) from the four cells round it: their convex block into
+// h, the rest into o.
+void add_corners(const Functional &F, const Ring &r, NodeGradient &g) {
+    CellTerms t;
+    double x[4], y[4];
+    for (int k = 0; k < 4; ++k) {
+        ring_cell(r, k, 0.0, 0.0, x, y);
+        t = CellTerms{};
+        add_corner_terms(F, x, y, true, t);
+        g.gx += t.g[0];
+        g.gy += t.g[1];
+        g.hxx += t.hc[0][0];
+        g.hxy += t.hc[0][1];
+        g.hyy += t.hc[1][1];
+        g.oxx += t.h[0][0] - t.hc[0][0];
+        g.oxy += t.h[0][1] - t.hc[0][1];
+        g.oyy += t.h[1][1] - t.hc[1][1];
+    }
+}
+
 NodeGradient node_gradient(const Functional &F, const Ring &r) {
     NodeGradient g;
+    if (has_corner_terms(F)) add_corners(F, r, g);
     const double b2 = 2.0 * F.spacing;  // S: sum over the four edges of |q - r|^2
-    g.gx = -b2 * (r.ex[0] + r.ex[1] + r.ex[2] + r.ex[3]);
-    g.gy = -b2 * (r.ey[0] + r.ey[1] + r.ey[2] + r.ey[3]);
-    g.hxx = g.hyy = 4.0 * b2;
+    g.gx -= b2 * (r.ex[0] + r.ex[1] + r.ex[2] + r.ex[3]);
+    g.gy -= b2 * (r.ey[0] + r.ey[1] + r.ey[2] + r.ey[3]);
+    g.hxx += 4.0 * b2;
+    g.hyy += 4.0 * b2;
     const double wa = F.area, wc = F.orthogonality;
     if (wa == 0.0 && wc == 0.0) return g;
     for (int k = 0; k < 4; ++k) {
@@ -134,7 +167,17 @@ double node_energy(const Functional &F, const Ring &r, double dx, double dy) {
             ortho += sq(e1x * e3x + e1y * e3y) + sq(f1x * e1x + f1y * e1y) + sq(f3x * e3x + f3y * e3y);
         }
     }
-    return F.spacing * spacing + F.area * area + F.orthogonality * ortho;
+    double smooth = 0.0;
+    if (has_corner_terms(F)) {
+        CellTerms t;
+        double x[4], y[4];
+        for (int k = 0; k < 4; ++k) {
+            ring_cell(r, k, dx, dy, x, y);
+            add_corner_terms(F, x, y, false, t);
+        }
+        smooth = t.value;
+    }
+    return F.spacing * spacing + F.area * area + F.orthogonality * ortho + smooth;
 }
 
 }  // namespace
@@ -196,7 +239,7 @@ NodeStep relax_variational(const Level &L, int i, int j, double omega) {
             result = NodeStep::Limited;
         }
     }
-    if (F.orthogonality != 0.0) {
+    if (F.orthogonality != 0.0 || has_corner_terms(F)) {
         const double e0 = node_energy(F, r, 0.0, 0.0);
         for (int halvings = 0; !(node_energy(F, r, dx, dy) + 2.0 * (fx * dx + fy * dy) <= e0); ++halvings) {
             if (halvings == kStepHalvings) return NodeStep::NoDescent;

@@ -2,6 +2,8 @@
 // relative to corner 0: every term depends on differences only.
 #include "operator/variational_cell.hpp"
 
+#include "operator/smoothness_cell.hpp"
+
 #include <cmath>
 #include <initializer_list>
 
@@ -112,6 +114,7 @@ void cell_terms(const Functional &F, double mean, const double x[4], const doubl
             add_square(t, hessians, F.orthogonality, f, df, hf, id, 0.5);
         }
     }
+    if (has_corner_terms(F)) add_corner_terms(F, rx, ry, hessians, t);
 }
 
 double cell_value(const Functional &F, double mean, const double x[4], const double y[4]) {
@@ -124,7 +127,13 @@ double cell_value(const Functional &F, double mean, const double x[4], const dou
         o += f * f;
     }
     const double area = 0.5 * ((x[2] - x[0]) * (y[3] - y[1]) - (y[2] - y[0]) * (x[3] - x[1])) - mean;
-    return 0.5 * F.spacing * s + F.area * area * area + F.orthogonality * o;
+    double smooth = 0.0;
+    if (has_corner_terms(F)) {
+        CellTerms t;
+        add_corner_terms(F, x, y, false, t);
+        smooth = t.value;
+    }
+    return 0.5 * F.spacing * s + F.area * area * area + F.orthogonality * o + smooth;
 }
 
 }  // namespace eg2d

@@ -22,6 +22,8 @@
 // its positive part, f K/2 + |f| I/4 (area) or f K/2 + |f| I/2 (corner), I
 // the identity on (d1, d2) or (u, v): the nearest positive semidefinite
 // term, equal to the exact one where f = 0 (even areas, right angles).
+// The smoothness term W and O's cotangent form are not quadratic in the
+// coordinates: their terms are worked out apart (smoothness_cell.hpp).
 #pragma once
 
 #include "operator/variational.hpp"

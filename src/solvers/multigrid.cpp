@@ -69,7 +69,8 @@ public:
         // V is not S alone. S alone is Laplace (linear): the FAS point cycles
         // solve it in 2-3 cycles, 3-4x faster than the Newton minimiser at
         // 257^2 (bench --variational).
-        const bool spacing_only = p.functional.area == 0.0 && p.functional.orthogonality == 0.0;
+        const bool spacing_only = p.functional.area == 0.0 && p.functional.orthogonality == 0.0 &&
+                                  p.functional.smoothness == 0.0 && p.functional.cotangent == 0.0;
         if (p.system == System::Variational && !spacing_only && VariationalNewton::handles(p.grid.connectivity())) {
             newton_used_ = true;
             newton_.iterate(p);

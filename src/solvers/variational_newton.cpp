@@ -348,8 +348,7 @@ void VariationalNewton::sequence(Problem &p) {
         const double ratio = static_cast<double>(conns[l].ni() - 1) * (conns[l].nj() - 1) /
                              (static_cast<double>(fine.ni() - 1) * (fine.nj() - 1));
         Functional F = p.functional;
-        F.area *= ratio;
-        F.orthogonality *= ratio;
+        scale_weights(F, ratio);
         if (!solve_level(conns[l], vx[l].data(), vy[l].data(), F, extent)) {
             p.note(format("variational: the minimisation on the %dx%d grid (grid sequencing) stalled at the fold "
                           "guard; the %dx%d grid starts from its initial grid instead",

@@ -525,8 +525,9 @@ static const bad_input rows[] = {
      "EG2D_SYSTEM_VARIATIONAL (2)", 0},
     {"variational weights all 0", "eg2d_set_parameter(g, EG2D_PARAM_VARIATIONAL_SPACING, 0)", S_FRESH,
      r_weights_zero, EG2D_ERR_ARGUMENT,
-     "eg2d_set_parameter: variational_area, variational_spacing and variational_orthogonality would all be 0: "
-     "V = 0 has no minimiser (set the new weight before zeroing the old one)", 0},
+     "eg2d_set_parameter: variational_area, variational_spacing, variational_orthogonality and "
+     "variational_smoothness would all be 0: V = 0 has no minimiser (set the new weight before zeroing the old "
+     "one)", 0},
     {"negative variational weight", "eg2d_set_parameter(g, EG2D_PARAM_VARIATIONAL_AREA, -1)", S_FRESH,
      r_weight_neg, EG2D_ERR_ARGUMENT, "eg2d_set_parameter: variational_area = -1: must be in [0, 1e+06]", 0},
     {"variational system with a line solver", "eg2d_solve(g), EG2D_SYSTEM_VARIATIONAL, EG2D_SOLVER_LSOR",

@@ -44,8 +44,10 @@ static double smallest_form(const double h[8][8]) {
     return worst;
 }
 
-static void test_cell() {
-    const eg2d::Functional F = eg2d::make_functional(10.0, 1.0, 5.0, 0.02, 1);
+// With the smoothness term's weight d, O as dot products or as squared cotangents.
+static void test_cell(double d, bool cotangents) {
+    std::printf("a = 10, b = 1, c = 5, d = %g, O as %s:\n", d, cotangents ? "cotangents" : "dot products");
+    const eg2d::Functional F = eg2d::make_functional(10.0, 1.0, 5.0, d, cotangents, 0.02, 1);
     // A skewed, uneven cell, its area far from the mean 0.02.
     const double z0[8] = {0.0, 0.0, 0.31, 0.05, 0.42, 0.37, -0.08, 0.21};
     const double mean = 0.02, eps = 1e-6;
@@ -82,6 +84,37 @@ static void test_cell() {
     for (int p = 0; p < 8; ++p)
         for (int q = 0; q < 8; ++q) diff = std::fmax(diff, std::fabs(t.h[p][q] - t.hc[p][q]));
     check(diff < 1e-12, "exact = convex Hessian where areas and angles are right", diff);
+}
+
+// The smoothness term alone, (|u|^2 + |v|^2)/(u x v) at each corner: its
+// Hessian is indefinite on some unfolded cells, the convex one positive
+// semidefinite on all (and equal to it on a square: test_cell); the value
+// is infinite on a folded cell.
+static void test_smoothness_convex() {
+    eg2d::Functional F = eg2d::make_functional(0.0, 0.0, 0.0, 1.0, false, 0.02, 1);
+    F.spacing = 0.0;
+    double worst = 1e300, exact = 1e300;
+    for (int s = 0; s < 200; ++s) {
+        // Convex cells: corners on a circle at increasing angles, jittered radii.
+        double x[4], y[4];
+        for (int m = 0; m < 4; ++m) {
+            const double t = 1.5707963 * m + 0.6 * std::sin(3.1 * s + m), r = 1.0 + 0.4 * std::cos(1.7 * s * m + 0.3);
+            x[m] = r * std::cos(t), y[m] = r * std::sin(t);
+        }
+        eg2d::CellTerms t;
+        eg2d::cell_terms(F, 0.0, x, y, true, t);
+        if (!std::isfinite(t.value)) continue;  // a corner flat or reflex: not in the term's domain
+        double scale = 0.0;
+        for (int p = 0; p < 8; ++p) scale = std::fmax(scale, std::fabs(t.h[p][p]));
+        exact = std::fmin(exact, smallest_form(t.h) / scale);
+        worst = std::fmin(worst, smallest_form(t.hc) / scale);
+    }
+    check(exact < -1e-3, "smoothness term's exact Hessian indefinite somewhere (200 cells)", exact);
+    check(worst > -1e-12, "smoothness term's convex Hessian positive semidefinite (200 cells)", worst);
+    const double xf[4] = {0.0, 1.0, 0.2, 0.0}, yf[4] = {0.0, 0.0, -0.3, 1.0};  // corner 2 reflex
+    eg2d::CellTerms t;
+    eg2d::cell_terms(F, 0.0, xf, yf, false, t);
+    check(std::isinf(t.value), "smoothness term infinite on a folded cell", t.value);
 }
 
 // S's Hessian (b = 1) on an n x n block plus an x-y coupling, as the
@@ -138,7 +171,10 @@ static void test_multigrid() {
 }
 
 int main() {
-    test_cell();
+    test_cell(0.0, false);
+    test_cell(1.0, false);
+    test_cell(1.0, true);
+    test_smoothness_convex();
     test_multigrid();
     return failures == 0 ? 0 : 1;
 }

@@ -118,7 +118,8 @@ class ErrorMessages(unittest.TestCase):
         self.check('size = [9, 9]\nsovler = "psor"\n' + self.GOOD_SIDES, 3,
                    "CASE:2:1: key 'sovler': unknown key (expected one of: title, size, topology, system, "
                    "initial, solve, constants, solver, sides, controls, output, patches, interior_lines, "
-                   "variational_area, variational_orthogonality, variational_spacing, hermite_spacing, "
+                   "variational_smoothness, variational_orthogonality_form, variational_area, "
+                   "variational_orthogonality, variational_spacing, hermite_spacing, "
                    "hermite_sides, hermite_height_jmin, hermite_height_imax, hermite_height_jmax, "
                    "hermite_height_imin)")
 

@@ -71,9 +71,15 @@ const std::vector<Feature> &parameters() {
 #else
         EG2D_NO_PARAM("wall_layer", "controls"), EG2D_NO_PARAM("wall_growth", "controls"),
 #endif
+#ifdef EG2D_PARAM_VARIATIONAL_SMOOTHNESS
+        EG2D_PARAM("variational_smoothness", EG2D_PARAM_VARIATIONAL_SMOOTHNESS, "top"),
+        EG2D_PARAM("variational_orthogonality_form", EG2D_PARAM_VARIATIONAL_ORTHOGONALITY_FORM, "top"),
+#else
+        EG2D_NO_PARAM("variational_smoothness", "top"), EG2D_NO_PARAM("variational_orthogonality_form", "top"),
+#endif
 #ifdef EG2D_PARAM_VARIATIONAL_AREA
         // spacing last: the only weight not 0 by default, so a case may zero it
-        // (the library refuses a setting that leaves all three 0)
+        // (the library refuses a setting that leaves all the weights 0)
         EG2D_PARAM("variational_area", EG2D_PARAM_VARIATIONAL_AREA, "top"),
         EG2D_PARAM("variational_orthogonality", EG2D_PARAM_VARIATIONAL_ORTHOGONALITY, "top"),
         EG2D_PARAM("variational_spacing", EG2D_PARAM_VARIATIONAL_SPACING, "top"),
