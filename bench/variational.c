@@ -1,6 +1,7 @@
 /* The variational system against Winslow (eg2d_bench --variational): the
- * elliptic-grid course notes' domains (valley, almost-convex, swan, dome as
- * single blocks; the annulus 1 <= r <= 3 as an n x (n/2+1) O-grid) at 65,
+ * elliptic-grid course notes' domains (valley, almost-convex, antenna, swan,
+ * dome as single blocks; the annulus 1 <= r <= 3 and the three-leaved rose
+ * in its circle as n x (n/2+1) O-grids) at 65,
  * 129 and 257 nodes a side, each grid from TFI to the residual 1e-8 with
  * multigrid (the default solver):
  *   winslow  EG2D_SYSTEM_WINSLOW;
@@ -60,12 +61,12 @@ static int past_cap(void *start, int iteration, double residual) {
 }
 
 static outcome run_once(const char *domain, int n, const config *k) {
-    const int annulus = !strcmp(domain, "annulus"), nj = annulus ? n / 2 + 1 : n;
+    const int rose = !strcmp(domain, "rose"), annulus = rose || !strcmp(domain, "annulus"), nj = annulus ? n / 2 + 1 : n;
     outcome o = {"error", 0, NAN, NAN, NAN, NAN, NAN};
     double start, *x = malloc(sizeof(double) * 2 * (size_t)n * (size_t)nj), *y = x + (size_t)n * nj;
     eg2d_grid *g = NULL;
     int status;
-    if (eg2d_create(n, nj, &g) || (annulus ? domain_set_annulus(g, 1.0, 3.0) : domain_set(g, domain)) ||
+    if (eg2d_create(n, nj, &g) || (rose ? domain_set_rose(g) : annulus ? domain_set_annulus(g, 1.0, 3.0) : domain_set(g, domain)) ||
         eg2d_set_system(g, k->system) || eg2d_set_parameter(g, EG2D_PARAM_VARIATIONAL_AREA, k->a) ||
         eg2d_set_parameter(g, EG2D_PARAM_VARIATIONAL_ORTHOGONALITY, k->c) ||
         eg2d_set_parameter(g, EG2D_PARAM_VARIATIONAL_SPACING, k->b) ||
@@ -113,7 +114,7 @@ static int listed(const char *list, const char *name) {
 }
 
 void bench_variational(const char *cases, const char *sizes_list, const char *grids, double cap) {
-    static const char *const domains[] = {"valley", "almost-convex", "swan", "dome", "annulus"};
+    static const char *const domains[] = {"valley", "almost-convex", "antenna", "swan", "dome", "annulus", "rose"};
     static const int sizes[] = {65, 129, 257};
     size_t d, s, k;
     cap_seconds = cap;
@@ -128,7 +129,8 @@ void bench_variational(const char *cases, const char *sizes_list, const char *gr
                 char size_name[16];
                 snprintf(size_name, sizeof size_name, "%d", sizes[s]);
                 if (!listed(cases, domains[d]) || !listed(sizes_list, size_name) || !listed(grids, c->name)) continue;
-                const int n = sizes[s], nj = strcmp(domains[d], "annulus") ? n : n / 2 + 1;
+                const int n = sizes[s],
+                          nj = strcmp(domains[d], "annulus") && strcmp(domains[d], "rose") ? n : n / 2 + 1;
                 outcome o = run_once(domains[d], n, c);
                 if ((!strcmp(o.status, "ok") || !strcmp(o.status, "folded")) && o.cpu < 5.0) {
                     double cpu[3] = {o.cpu, run_once(domains[d], n, c).cpu, run_once(domains[d], n, c).cpu};

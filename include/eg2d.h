@@ -294,6 +294,11 @@ EG2D_API int eg2d_clear_interior_lines(eg2d_grid *grid);
  * so; PSOR and NESTED run to the iteration limit). S alone folds where
  * Amsden-Hirt does: on non-convex domains (the elliptic-grid course notes'
  * swan and valley) and on the annulus 1 <= r <= 3 with n x (n/2+1) nodes.
+ * The guard keeps unfolded cells unfolded but cannot unfold a start that
+ * is folded (the course notes' antenna: its TFI start folds): such a start
+ * (an initial grid no iteration has touched) is first solved with
+ * Winslow's equations by multigrid (at most 50 cycles, to the tolerance),
+ * and the run's note says so with the folded cells before and after.
  * With FOLD_CHECK 0 V is minimised without the guard (then eg2d_solve does
  * not check folds either; W, if on, still keeps cells unfolded).
  * Solvers: EG2D_SOLVER_MULTIGRID runs, where V is not S alone and the grid

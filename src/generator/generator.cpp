@@ -54,6 +54,8 @@ constexpr double kMinAreaShare = 1e-12;
 // iteration (ControlPace; measured in the loop of run()).
 constexpr double kCyclePaceRelaxation = 3.0;
 constexpr double kCyclePaceStep = 5.0;
+// Winslow cycles at most for a folded variational start (untangle_start).
+constexpr int kUntangleCycles = 50;
 
 // The residual of a grid before any iteration. Coordinates are bounded, so a
 // non-finite value can only come from a control value too large for the
@@ -260,6 +262,33 @@ void Generator::control_sources(double *P, double *Q) const {
     equivalent_sources(p.level(), P, Q);
 }
 
+// V's fold guard and its smoothness barrier keep unfolded cells unfolded;
+// they cannot unfold a start that is folded already (the course notes'
+// antenna: its TFI start folds, and V's minimisation from it ended with
+// 141-6279 folded cells at 65^2-257^2). Winslow's equations untangle such
+// starts (the antenna converges unfolded in 2 cycles), so with the fold
+// guard on the variational run starts from the Winslow grid there, and says
+// so (with the guard off V's minimum is sought from wherever it starts).
+void Generator::untangle_start(const ControlFields &fields, const Settings &run_settings) {
+    const long folded = fold_summary(grid_).folded;
+    if (folded == 0) return;
+    std::unique_ptr<Solver> winslow = find_solver(EG2D_SOLVER_MULTIGRID)->make();
+    Problem p{grid_, System::Winslow, fields, run_settings, false, grid_.held_rows() == 0, nullptr, Functional{}};
+    const double extent = grid_.extent();
+    double r = eg2d::residual(System::Winslow, p.level(), extent).value;
+    int cycles = 0;
+    for (; cycles < kUntangleCycles && std::isfinite(r) && r > settings.tolerance; ++cycles) {
+        winslow->iterate(p);
+        p.fresh_start = false;
+        r = eg2d::residual(System::Winslow, p.level(), extent).value;
+    }
+    const long left = std::isfinite(r) ? fold_summary(grid_).folded : -1;
+    report_.note(format("variational: the start grid has %ld folded cell(s), which V's fold guard cannot unfold; "
+                        "it starts from the Winslow grid instead (%d multigrid cycle(s), residual %.3g, %ld folded)",
+                        folded, cycles, r, left));
+    fresh_start_ = false;
+}
+
 Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
     // The control terms are coefficients of the quasi-linear (Winslow/TTM)
     // equation; Laplace has no place for them, and silently dropping the
@@ -302,6 +331,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
     // distribution on straight lines), better than an FMG start from
     // coarse rings a few cells round (annulus 129x65 at a 1e-4 wall, far
     // field 30: the FMG start went non-finite).
+    if (system_ == System::Variational && fresh_start_ && settings.fold_check != 0.0) untangle_start(fields, run_settings);
     Problem problem{grid_, system_, fields, run_settings, controls_.has_dynamic(),
                     fresh_start_ && grid_.held_rows() == 0, &report_, functional()};
     const double extent = grid_.extent();

@@ -127,6 +127,8 @@ private:
     void ensure_ready();
     enum class RunEnd { Done, Converged, Limit };
     RunEnd run(long max_iterations, bool stop_at_tolerance);
+    // A folded start of the variational system solved with Winslow's first.
+    void untangle_start(const ControlFields &fields, const Settings &run_settings);
     // One update of the dynamic controls before an iteration; true (and r
     // the residual after it) when the solver converges each iteration.
     bool advance_dynamic_controls(Problem &problem, double extent, double &r);

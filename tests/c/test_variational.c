@@ -210,6 +210,39 @@ static void test_cotangent_form_beats_winslow(void **state) {
         }
 }
 
+/* The antenna's TFI start folds; V's fold guard cannot unfold it (the
+ * minimisation from it ended with 141 folded cells at 65^2), so the run
+ * starts from the Winslow grid, says so, and ends unfolded with smaller
+ * angle deviations than Winslow's. With the guard off it is left alone. */
+static void test_folded_start_untangled(void **state) {
+    char text[512];
+    int at, events;
+    double folded;
+    figures fw, fv;
+    eg2d_grid *g = make("antenna", 65, EG2D_SYSTEM_WINSLOW, NULL);
+    (void)state;
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
+    assert_int_equal(eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &folded), EG2D_OK);
+    assert_true(folded > 0);
+    assert_int_equal(eg2d_set_tolerance(g, 1e-8), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    fw = measure(g, "antenna, winslow");
+    eg2d_destroy(g);
+    g = make("antenna", 65, EG2D_SYSTEM_VARIATIONAL, &kCotangents);
+    assert_int_equal(eg2d_set_tolerance(g, 1e-8), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    assert_int_equal(eg2d_get_run_info(g, EG2D_RUN_EVENTS, &events), EG2D_OK);
+    assert_true(events >= 1);
+    assert_int_equal(eg2d_get_run_event(g, 0, &at, text, sizeof text), EG2D_OK);
+    print_message("  %s\n", text);
+    assert_non_null(strstr(text, "folded cell(s), which V's fold guard cannot unfold; it starts from the Winslow grid"));
+    assert_non_null(strstr(text, ", 0 folded)"));
+    fv = measure(g, "antenna, Oc");
+    assert_true(fv.folded == 0);
+    assert_true(fv.mean < fw.mean && fv.largest < fw.largest);
+    eg2d_destroy(g);
+}
+
 /* O- and C-grids with the area weight: converged, unfolded, and the O-grid's
  * cut columns still the same points. */
 static void test_o_and_c_grids(void **state) {
@@ -292,6 +325,7 @@ int main(void) {
         cmocka_unit_test(test_area_weight_evens_cells),
         cmocka_unit_test(test_orthogonality_weight_straightens_corners),
         cmocka_unit_test(test_cotangent_form_beats_winslow),
+        cmocka_unit_test(test_folded_start_untangled),
         cmocka_unit_test(test_o_and_c_grids),
         cmocka_unit_test(test_point_solvers_agree),
         cmocka_unit_test(test_settings_and_refusals),
