@@ -16,7 +16,11 @@
  *            converges with Winslow's area ratio);
  *   Oc       a = 0, b = 1, c = 2, d = 1 with O as squared cotangents
  *            (EG2D_PARAM_VARIATIONAL_ORTHOGONALITY_FORM 1) and the
- *            smoothness barrier (EG2D_PARAM_VARIATIONAL_SMOOTHNESS): "c large".
+ *            smoothness barrier (EG2D_PARAM_VARIATIONAL_SMOOTHNESS): "c large";
+ *   Ab       a = 10, b = 1, c = 1, d = 1, O as cotangents: "a large" with
+ *            both barriers, whose minimum is unfolded on the antenna too
+ *            (A and A3 fold there: their unconstrained minima have 56 and
+ *            70 folded cells at 65^2, so the guard stops them).
  * Columns: how the run ended (ok, folded: converged with folded cells,
  * stalled: the fold guard's NOT_CONVERGED, capped: stopped after 20 CPU s),
  * cycles, CPU seconds of this thread (median of 3 for runs that end ok or
@@ -45,7 +49,7 @@ static const config configs[] = {
     {"winslow", EG2D_SYSTEM_WINSLOW, 1, 0, 1, 0, 0, 0},      {"S", EG2D_SYSTEM_VARIATIONAL, 0, 0, 1, 0, 0, 0},
     {"S, guard", EG2D_SYSTEM_VARIATIONAL, 1, 0, 1, 0, 0, 0}, {"A", EG2D_SYSTEM_VARIATIONAL, 1, 10, 1, 1, 0, 0},
     {"O", EG2D_SYSTEM_VARIATIONAL, 1, 10, 1, 5, 0, 0},      {"A3", EG2D_SYSTEM_VARIATIONAL, 1, 3, 1, 0, 0, 0},
-    {"Oc", EG2D_SYSTEM_VARIATIONAL, 1, 0, 1, 2, 1, 1},
+    {"Oc", EG2D_SYSTEM_VARIATIONAL, 1, 0, 1, 2, 1, 1},     {"Ab", EG2D_SYSTEM_VARIATIONAL, 1, 10, 1, 1, 1, 1},
 };
 
 typedef struct {

@@ -45,7 +45,8 @@ public:
     // One Newton step (the first after a reset of a fresh start: grid sequencing first).
     void iterate(Problem &p);
     // After the run computed the residual of the step: the fold guard's stall
-    // test (throws NotConverged when V's minimum lies beyond a fold).
+    // test (throws NotConverged when V's minimum lies beyond a fold; not with
+    // a barrier in V, whose minimum is unfolded) and the no-progress tests.
     void observe(double residual);
     void reset();
 
@@ -75,6 +76,7 @@ private:
     double best_ = -1.0;
     int since_best_ = 0, limited_ = 0;
     bool last_limited_ = false;
+    bool barrier_ = false;  // V has W or O's cotangents: infinite on a flat corner, its minimum unfolded
 };
 
 }  // namespace eg2d

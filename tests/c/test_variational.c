@@ -23,7 +23,7 @@ typedef struct {
 } weights;
 
 static const weights kSpacing = {0, 1, 0, 0, 0}, kArea = {10, 1, 1, 0, 0}, kOrthogonality = {10, 1, 5, 0, 0},
-                     kCotangents = {0, 1, 2, 1, 1};
+                     kCotangents = {0, 1, 2, 1, 1}, kAreaBarriers = {10, 1, 1, 1, 1};
 
 /* A grid of `domain` ("annulus": 1 <= r <= 3, n x (n/2+1); "naca-c": the
  * NACA 0012 C-grid, n x (n/4+1)) with `system` and, for the variational
@@ -243,6 +243,35 @@ static void test_folded_start_untangled(void **state) {
     eg2d_destroy(g);
 }
 
+/* "a large" on the antenna: with a = 10, b = 1, c = 1, d = 0 (kArea) V's
+ * minimum folds cells at the stem's reflex corners, so the fold guard stops
+ * the run short of it; with both barriers (W, d = 1, and O as cotangents,
+ * c = 1) the minimum is unfolded, the run converges although the fold limit
+ * shortens its first Newton steps (bench/RESULTS.md: 46 steps at 65^2), and
+ * the ratio of the largest to the smallest cell area is below Winslow's
+ * (measured 40.1 against 62.1). */
+static void test_area_barriers_antenna(void **state) {
+    figures fw, fv;
+    eg2d_grid *gw = make("antenna", 65, EG2D_SYSTEM_WINSLOW, NULL),
+              *ga = make("antenna", 65, EG2D_SYSTEM_VARIATIONAL, &kArea),
+              *gv = make("antenna", 65, EG2D_SYSTEM_VARIATIONAL, &kAreaBarriers);
+    (void)state;
+    assert_int_equal(eg2d_set_tolerance(gw, 1e-8), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(ga, 1e-8), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(gv, 1e-8), EG2D_OK);
+    assert_int_equal(eg2d_solve(gw), EG2D_OK);
+    assert_int_equal(eg2d_solve(ga), EG2D_ERR_NOT_CONVERGED);
+    assert_non_null(strstr(eg2d_last_error(ga), "the fold guard shortened the last"));
+    assert_int_equal(eg2d_solve(gv), EG2D_OK);
+    fw = measure(gw, "antenna, winslow");
+    fv = measure(gv, "antenna, Ab");
+    assert_true(fv.folded == 0);
+    assert_true(fv.area_ratio < fw.area_ratio);
+    eg2d_destroy(gw);
+    eg2d_destroy(ga);
+    eg2d_destroy(gv);
+}
+
 /* O- and C-grids with the area weight: converged, unfolded, and the O-grid's
  * cut columns still the same points. */
 static void test_o_and_c_grids(void **state) {
@@ -326,6 +355,7 @@ int main(void) {
         cmocka_unit_test(test_orthogonality_weight_straightens_corners),
         cmocka_unit_test(test_cotangent_form_beats_winslow),
         cmocka_unit_test(test_folded_start_untangled),
+        cmocka_unit_test(test_area_barriers_antenna),
         cmocka_unit_test(test_o_and_c_grids),
         cmocka_unit_test(test_point_solvers_agree),
         cmocka_unit_test(test_settings_and_refusals),
