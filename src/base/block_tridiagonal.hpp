@@ -20,10 +20,8 @@ struct Vec2 {
 // Solves A[k] u[k-1] + B[k] u[k] + C[k] u[k+1] = r[k], k = 0..n-1 (A[0] and
 // C[n-1] unused); r gets the solution. Needs every pivot block invertible
 // (block diagonal dominance); a singular pivot gives non-finite values,
-// which callers check. n >= 1.
-void solve_block_tridiagonal2(std::size_t n, const Mat2 *A, const Mat2 *B, const Mat2 *C, Vec2 *r);
-// The same with the caller's scratch (n blocks, kept between calls): a
-// march solves one system per layer and sub-step.
+// which callers check. n >= 1. scratch: n blocks, the caller's, kept
+// between calls (a march solves one system per layer and sub-step).
 void solve_block_tridiagonal2(std::size_t n, const Mat2 *A, const Mat2 *B, const Mat2 *C, Vec2 *r,
                               std::vector<Mat2> &scratch);
 

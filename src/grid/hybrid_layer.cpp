@@ -116,18 +116,20 @@ void respace_layer(Grid &m, int rows, const std::vector<double> &first) {
     std::vector<double> shape;  // cells over length of the side's first column at the largest first cell
     const std::vector<double> along = cut_distances(m);
     const double thickness = wake > 0 ? layer_thickness(m, rows) : 0.0;
+    double most_guess = std::numeric_limits<double>::quiet_NaN(), q_guess = most_guess;  // the previous column's
     for (int i : order) {
         if (i == wake - 1 || i == ni - wake) shape.clear();
         const std::vector<Vec2> column = straightened_column(m, i, rows, along[static_cast<std::size_t>(i)], thickness);
         const std::vector<double> marched = arc_lengths(grid_column(m, i, rows));
         const double total = arc_lengths(column).back();
         const double last = (marched.back() - marched[static_cast<std::size_t>(rows - 1)]) * total / marched.back();
-        const double h1 = first[static_cast<std::size_t>(i)], most = largest_graded_first(rows, last, total);
+        const double h1 = first[static_cast<std::size_t>(i)];
         std::vector<double> cells;
         if (!shape.empty()) {
             for (double c : shape) cells.push_back(c * total);
         } else {
-            cells = graded_cells(rows, std::min(h1, most), last, total);
+            const double most = largest_graded_first(rows, last, total, &most_guess);
+            cells = graded_cells(rows, std::min(h1, most), last, total, &q_guess);
             if (h1 >= most && (i < wake || i > ni - 1 - wake))
                 for (double c : cells) shape.push_back(c / total);
         }

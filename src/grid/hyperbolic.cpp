@@ -103,8 +103,14 @@ void frames(const Layer &L, const std::vector<Vec2> &r, double side, std::vector
         NodeFrame &F = f[i];
         const double lw = w >= 0 ? edge[w] : 0.0, le = e >= 0 ? edge[i] : 0.0;
         Vec2 tw{0, 0}, te{0, 0};
-        if (w >= 0) tw = {(r[i].x - r[w].x) / lw, (r[i].y - r[w].y) / lw};
-        if (e >= 0) te = {(r[e].x - r[i].x) / le, (r[e].y - r[i].y) / le};
+        if (w >= 0) {
+            const double k = 1.0 / lw;
+            tw = {(r[i].x - r[w].x) * k, (r[i].y - r[w].y) * k};
+        }
+        if (e >= 0) {
+            const double k = 1.0 / le;
+            te = {(r[e].x - r[i].x) * k, (r[e].y - r[i].y) * k};
+        }
         if (w < 0) tw = te;
         if (e < 0) te = tw;
         F.edges = lw + le;
@@ -112,7 +118,7 @@ void frames(const Layer &L, const std::vector<Vec2> &r, double side, std::vector
         const double tx = tw.x + te.x, ty = tw.y + te.y, tl = len(tx, ty);
         // A cusp (the edges fold back on each other): march straight past
         // the tip, along the incoming edge.
-        F.t = tl < 1e-10 ? Vec2{side * tw.y, -side * tw.x} : Vec2{tx / tl, ty / tl};
+        F.t = tl < 1e-10 ? Vec2{side * tw.y, -side * tw.x} : Vec2{tx * (1.0 / tl), ty * (1.0 / tl)};
         F.n = {-side * F.t.y, side * F.t.x};
         // The curve turns towards the march (concave) when the cross product
         // of its edges has the march side's sign; the interior angle on the
@@ -153,14 +159,14 @@ struct March {
     int layers = 0;
     std::vector<Vec2> r, prev, rhs;
     std::vector<NodeFrame> f;
-    std::vector<double> step, edge, prev_edge, wall_edge, tmp, factor;
+    std::vector<double> step, edge, prev_edge, wall_edge, tmp, factor, sensor;
     std::vector<Mat2> A, B, C, scratch;
     std::vector<char> corner;  // JMIN's convex corners (kCornerShare)
     MarchEnd ends[2];
 
     March(const Settings &settings, const Layer &layer) : s(settings), L(layer) {
         const std::size_t n = static_cast<std::size_t>(L.n);
-        rhs.resize(n); f.resize(n); step.resize(n); edge.resize(n); prev_edge.resize(n);
+        rhs.resize(n); f.resize(n); step.resize(n); edge.resize(n); prev_edge.resize(n); sensor.resize(n);
         A.resize(n); B.resize(n); C.resize(n);
         ends[0] = static_cast<MarchEnd>(static_cast<int>(s.march_end_imin));
         ends[1] = static_cast<MarchEnd>(static_cast<int>(s.march_end_imax));
@@ -196,7 +202,10 @@ struct March {
     // The sub-steps after a layer's first (same_layer) reuse its step
     // factors: the area smoothing was most of the cost, and redoing it per
     // sub-step changed no measured figure by more than 0.01% (NACA 0012
-    // 257x129: 25 -> 15-18 ms).
+    // 257x129: 25 -> 15-18 ms). They reuse its sensor d too: Chan & Steger
+    // compare a layer with the one before, not a sub-step with the last
+    // (whose d is 1 to within the sub-step's change), and its log and exp
+    // per node and sub-step were a quarter of the march of 7169x2049.
     void advance(double hl, double Sl, double ratio, bool first, bool same_layer) {
         if (!same_layer) step_factors(hl);
         for (int i = 0; i < L.n; ++i) step[i] = factor[i] * hl;
@@ -208,9 +217,9 @@ struct March {
             // A0 = [[x_eta, y_eta], [y_eta, -x_eta]], B0 = [[x_xi, y_xi],
             // [-y_xi, x_xi]] (Steger & Chaussee eq 7; the march side enters
             // through r_eta0); C = B0^-1 A0.
-            const double q = rx.x * rx.x + rx.y * rx.y;
-            const Mat2 Cm{(rx.x * re.x - rx.y * re.y) / q, (rx.x * re.y + rx.y * re.x) / q,
-                          (rx.y * re.x + rx.x * re.y) / q, (rx.y * re.y - rx.x * re.x) / q};
+            const double iq = 1.0 / (rx.x * rx.x + rx.y * rx.y);
+            const Mat2 Cm{(rx.x * re.x - rx.y * re.y) * iq, (rx.x * re.y + rx.y * re.x) * iq,
+                          (rx.y * re.x + rx.x * re.y) * iq, (rx.y * re.y - rx.x * re.x) * iq};
             // Chan & Steger's grid-convergence sensor D: the spacing of the
             // layer before over this one's, > 1 where lines converge; it
             // enters as d = D^(2/Sl), kept within [0.1, 100]. eg2d takes the
@@ -221,8 +230,12 @@ struct March {
             // (L-shaped body, 129x65 and 257x129); the wall ratio is < 1
             // wherever the march spreads, so it changes nothing there.
             const int w = L.west(i), e = L.east(i);
-            double d = 1.0;
-            if (!first && w >= 0 && e >= 0 && Sl > 0) {
+            double &d = sensor[i];
+            if (same_layer) {
+                // as the layer's first sub-step
+            } else if (first || w < 0 || e < 0 || !(Sl > 0)) {
+                d = 1.0;
+            } else {
                 const double D = std::max(prev_edge[w] + prev_edge[i], wall_edge[w] + wall_edge[i]) / F.edges;
                 // d = D^(2/Sl) clamped: compare the exponent with ln 0.1 and
                 // ln 100 first, so exp runs only when the clamp does not decide.
@@ -382,8 +395,16 @@ void march(Grid &g, const Settings &settings, const std::vector<double> &raised,
     std::size_t next_raise = 0;
     std::vector<Resume> saved;  // every kSaveEvery layers, while a resumption is left
     for (int l = 1; l <= layers; ++l) {
-        if (next_raise < raised.size() && (l - 1) % kSaveEvery == 0)
+        if (next_raise < raised.size() && (l - 1) % kSaveEvery == 0) {
             saved.push_back({l, m.r, m.prev, m.prev_edge, first});
+            // A fold from here on goes back to the newest state at least
+            // kResumeLayers before it: the states older than that one are
+            // never read (7169x2049 kept 64 of them, 18 MB).
+            auto keep = saved.begin();
+            for (auto k = saved.begin(); k != saved.end(); ++k)
+                if (k->layer <= l - kResumeLayers) keep = k;
+            saved.erase(saved.begin(), keep);
+        }
         const double Sl = layers > 1 ? std::sqrt(static_cast<double>(std::min(l, transition) - 1) / (layers - 1)) : 0;
         const double ratio = l > 1 ? h[l - 1] / h[l - 2] : (layers > 1 ? h[1] / h[0] : 1.0);
         frames(L, m.r, m.side, m.f, m.edge);

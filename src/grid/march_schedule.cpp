@@ -35,7 +35,7 @@ namespace {
 // 5-10 steps where bisection took 100 (NACA 0012 1793x513: 3600 columns of
 // 341 cells).
 double solve_exp_sum(const std::vector<double> &a, const std::vector<double> &b, double target, double lo,
-                     double hi) {
+                     double hi, const double *guess) {
     const double goal = std::log(target);
     auto eval = [&](double x, double &g, double &slope) {
         double top = -std::numeric_limits<double>::infinity();
@@ -50,7 +50,7 @@ double solve_exp_sum(const std::vector<double> &a, const std::vector<double> &b,
         slope = weighted / sum;
     };
     const bool rising = b.back() + b.front() > 0.0;
-    double x = 0.5 * (lo + hi);
+    double x = guess && *guess > lo && *guess < hi ? *guess : 0.5 * (lo + hi);
     for (int it = 0; it < 100; ++it) {
         double g, slope;
         eval(x, g, slope);
@@ -66,7 +66,7 @@ double solve_exp_sum(const std::vector<double> &a, const std::vector<double> &b,
 
 }  // namespace
 
-std::vector<double> graded_cells(int n, double first, double last, double distance) {
+std::vector<double> graded_cells(int n, double first, double last, double distance, double *guess) {
     // cell k = exp(ln first + slope k + q k (k - (n-1))): the sum falls as q rises.
     const double la = std::log(first), slope = (std::log(last) - la) / (n - 1);
     std::vector<double> a(static_cast<std::size_t>(n)), b(a.size());
@@ -78,7 +78,8 @@ std::vector<double> graded_cells(int n, double first, double last, double distan
     // A bracket: the middle cell's log can move by at most the span of the logs.
     const double span = 2.0 * (std::fabs(std::log(distance)) + std::fabs(la) + std::fabs(std::log(last)) + 50.0);
     const double mid = 0.25 * (n - 1.0) * (n - 1.0);
-    const double q = solve_exp_sum(a, b, distance, -span / mid, span / mid);
+    const double q = solve_exp_sum(a, b, distance, -span / mid, span / mid, guess);
+    if (guess) *guess = q;
     std::vector<double> c(a.size());
     double sum = 0.0;
     for (std::size_t k = 0; k < c.size(); ++k) sum += (c[k] = std::exp(a[k] + b[k] * q));
@@ -86,7 +87,7 @@ std::vector<double> graded_cells(int n, double first, double last, double distan
     return c;
 }
 
-double largest_graded_first(int n, double last, double distance) {
+double largest_graded_first(int n, double last, double distance, double *guess) {
     // first exp(q k^2) with first exp(q (n-1)^2) = last, u = ln first: cell k
     // = exp(ln last t_k + u (1 - t_k)), t_k = (k / (n-1))^2; the sum rises with u.
     const double top = std::log(std::min(last, distance / n));
@@ -100,7 +101,9 @@ double largest_graded_first(int n, double last, double distance) {
     double total = 0.0;
     for (std::size_t k = 0; k < a.size(); ++k) total += std::exp(a[k] + b[k] * top);
     if (total <= distance) return std::exp(top);
-    return std::exp(solve_exp_sum(a, b, distance, top - 800.0, top));
+    const double u = solve_exp_sum(a, b, distance, top - 800.0, top, guess);
+    if (guess) *guess = u;
+    return std::exp(u);
 }
 
 std::vector<double> march_schedule(int layers, double distance, double first_height, double growth) {

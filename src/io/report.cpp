@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "base/error.hpp"
+#include "base/folds.hpp"
 #include "base/polyline.hpp"
 #include "eg2d.h"
 #include "io/formats.hpp"
@@ -96,10 +97,12 @@ WallStats wall_stats(const Grid &g) {
 Report make_report(const WriteRequest &r) {
     const Grid &g = r.grid;
     const UnstructuredMesh m = unstructured_mesh(g);
+    // One fold summary for the smallest area and the folded cells (the
+    // metrics' each make their own).
+    const FoldSummary folds = fold_summary(g);
     Report rep{g.ni(), g.nj(), static_cast<int>(m.cells()), static_cast<int>(m.points()),
                topology_name(g.topology()), wall_stats(g), metric(g, EG2D_QUALITY_SKEWNESS),
-               metric(g, EG2D_QUALITY_ASPECT_RATIO), metric(g, EG2D_QUALITY_MIN_AREA),
-               std::lround(metric(g, EG2D_QUALITY_FOLDED_CELLS)), r.run};
+               metric(g, EG2D_QUALITY_ASPECT_RATIO), folds.min_area, folds.folded, r.run};
     return rep;
 }
 

@@ -29,7 +29,7 @@ const QualityMetric kMetrics[] = {
     {EG2D_QUALITY_FOLDED_CELLS, "folded", folded_cells, cell_folded},
     {EG2D_QUALITY_MIN_AREA, "area", min_area, cell_area},
     {EG2D_QUALITY_MAX_AREA, "area", largest<cell_area>, cell_area},
-    {EG2D_QUALITY_SKEWNESS, "skewness", largest<cell_skewness>, cell_skewness},
+    {EG2D_QUALITY_SKEWNESS, "skewness", largest_skewness, cell_skewness},
     {EG2D_QUALITY_ASPECT_RATIO, "aspect_ratio", largest<cell_aspect_ratio>, cell_aspect_ratio},
     {EG2D_QUALITY_SMOOTHNESS_I, "smoothness_i", largest<cell_smoothness_i>, cell_smoothness_i},
     {EG2D_QUALITY_SMOOTHNESS_J, "smoothness_j", largest<cell_smoothness_j>, cell_smoothness_j},

@@ -15,6 +15,7 @@ namespace eg2d {
 void cell_folded(const Grid &grid, double *out);        // folding.cpp: 1 folded, 0 not
 void cell_area(const Grid &grid, double *out);          // area.cpp: signed by the orientation
 void cell_skewness(const Grid &grid, double *out);      // skewness.cpp: degrees
+double largest_skewness(const Grid &grid);              // skewness.cpp: the largest of cell_skewness
 void cell_aspect_ratio(const Grid &grid, double *out);  // aspect_ratio.cpp
 void cell_smoothness_i(const Grid &grid, double *out);  // smoothness.cpp
 void cell_smoothness_j(const Grid &grid, double *out);

@@ -96,6 +96,51 @@ static void test_straight_corner(void **state) {
     }
 }
 
+/* The skewness summary (found from cosines, without an atan2 per corner)
+ * is the largest of the per-cell field, to the last bit: on a 17 x 13 grid whose nodes
+ * are moved by up to 0.15 of the spacing (no fold) and by up to 0.7 (some
+ * cells folded, corners past 90 either way), each also mirrored
+ * (left-handed). */
+static void test_skewness_summary_is_largest_cell(void **state) {
+    enum { NI = 17, NJ = 13 };
+    double x[NI * NJ], y[NI * NJ], v[(NI - 1) * (NJ - 1)], most;
+    unsigned seed = 12345u;
+    int k, mirror, folded, m;
+    (void)state;
+    for (m = 0; m < 4; ++m) {
+        const double amp = m < 2 ? 0.3 : 1.4;
+        eg2d_grid *g;
+        mirror = m % 2;
+        seed = 12345u;
+        for (k = 0; k < NI * NJ; ++k) {
+            const int i = k % NI, j = k / NI, inner = i > 0 && j > 0 && i < NI - 1 && j < NJ - 1;
+            double dx, dy;
+            seed = seed * 1103515245u + 12345u;
+            dx = ((seed >> 8) % 1000) / 1000.0 - 0.5;
+            seed = seed * 1103515245u + 12345u;
+            dy = ((seed >> 8) % 1000) / 1000.0 - 0.5;
+            x[k] = i + (inner ? amp * dx : 0.0);
+            y[k] = (mirror ? -1.0 : 1.0) * (j + (inner ? amp * dy : 0.0));
+        }
+        assert_int_equal(eg2d_create(NI, NJ, &g), EG2D_OK);
+        assert_int_equal(eg2d_set_coordinates(g, x, y), EG2D_OK);
+        assert_int_equal(eg2d_get_cell_quality(g, EG2D_QUALITY_SKEWNESS, v), EG2D_OK);
+        most = 0;
+        for (k = 0; k < (NI - 1) * (NJ - 1); ++k)
+            if (v[k] > most) most = v[k];
+        folded = (int)quality(g, EG2D_QUALITY_FOLDED_CELLS);
+        if (amp > 1) {
+            assert_true(folded > 0); /* the folded corners' branch */
+            assert_true(most > 90);
+        } else {
+            assert_int_equal(folded, 0); /* the cosines' branch decides */
+            assert_true(most > 5 && most < 90);
+        }
+        assert_true(quality(g, EG2D_QUALITY_SKEWNESS) == most); /* to the last bit */
+        eg2d_destroy(g);
+    }
+}
+
 /* Node (i, j) at i (1, 0) + j (cos 30, sin 30): every cell a rhombus of unit
  * sides with corners of 30 and 150 degrees, area sin 30 = 1/2. */
 static void test_rhombus_30(void **state) {
@@ -321,7 +366,7 @@ static void test_cell_quality_errors(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_unit_square),        cmocka_unit_test(test_rhombus_30),
-        cmocka_unit_test(test_straight_corner),
+        cmocka_unit_test(test_straight_corner),    cmocka_unit_test(test_skewness_summary_is_largest_cell),
         cmocka_unit_test(test_stretched_row),      cmocka_unit_test(test_bow_tie),
         cmocka_unit_test(test_converged_dome),     cmocka_unit_test(test_annulus_orthogonal),
         cmocka_unit_test(test_solve_reports_folds), cmocka_unit_test(test_cell_quality_errors),

@@ -1254,6 +1254,33 @@ class Airfoil(unittest.TestCase):
             self.assertFalse(os.path.exists(os.path.join(d, "naca0012-97x25.tmr.txt")))
             self.assertNotIn("TMR", text)
 
+    @unittest.skipUnless(sys.platform.startswith("linux"), "glibc's tunables")
+    def test_huge_pages_rerun(self):
+        """From 2^18 nodes, or with EG2D_HUGE_PAGES=1, eg2d airfoil runs itself again with
+        glibc's transparent huge pages (GLIBC_TUNABLES=glibc.malloc.hugetlb=1) and says so
+        once; the files are those of a run without (EG2D_HUGE_PAGES=0); a GLIBC_TUNABLES
+        that names hugetlb is the user's choice and is left alone."""
+        base = {k: v for k, v in os.environ.items() if k not in ("GLIBC_TUNABLES", "EG2D_HUGE_PAGES")}
+        note = "note: running again with GLIBC_TUNABLES=glibc.malloc.hugetlb=1"
+        with tempfile.TemporaryDirectory() as d:
+            def airfoil(out, **env):
+                p = subprocess.run([TOOL, "airfoil", "0012", "--topology", "c", "--size", "97x25", "--first-cell",
+                                    "1e-4", "--farfield", "20", "-o", os.path.join(d, out)],
+                                   capture_output=True, text=True, timeout=600, env={**base, **env})
+                self.assertIn(p.returncode, (0, 4), p.stdout + p.stderr)  # 4: 24 rows grow by more than 1.2
+                with open(os.path.join(d, out, "naca0012-97x25.xyz"), "rb") as f:
+                    return p.stdout, f.read()
+            text, on = airfoil("on", EG2D_HUGE_PAGES="1")
+            self.assertEqual(text.count(note), 1, text)
+            self.assertEqual(text.count("naca0012 C-grid 97x25"), 1, text)  # the run itself once, after the note
+            text, off = airfoil("off", EG2D_HUGE_PAGES="0")
+            self.assertNotIn("running again", text)
+            self.assertEqual(on, off)
+            text, _ = airfoil("user", EG2D_HUGE_PAGES="1", GLIBC_TUNABLES="glibc.malloc.hugetlb=0")
+            self.assertNotIn("running again", text)
+            text, _ = airfoil("small")  # 2425 nodes: not asked
+            self.assertNotIn("running again", text)
+
     def test_selig_blunt_bases(self):
         """Selig files with an open trailing edge (NACA 4412, 0.0025 chords) and a
         blunt base (NACA 0012 thickened to a 1% base) on both topologies: the base

@@ -7,7 +7,9 @@ namespace eg2dtool {
 
 extern const char *const airfoil_help;
 
-// argv[0] is "airfoil". Returns the exit code; throws Failure.
-int run_airfoil(int argc, char **argv);
+// argv[0] is "airfoil"; whole_argv is main's (the command runs itself
+// again with it for huge pages, huge_pages.hpp). Returns the exit code;
+// throws Failure.
+int run_airfoil(int argc, char **argv, char **whole_argv);
 
 }  // namespace eg2dtool
