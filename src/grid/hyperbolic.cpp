@@ -202,10 +202,10 @@ struct March {
     // The sub-steps after a layer's first (same_layer) reuse its step
     // factors: the area smoothing was most of the cost, and redoing it per
     // sub-step changed no measured figure by more than 0.01% (NACA 0012
-    // 257x129: 25 -> 15-18 ms). They reuse its sensor d too: Chan & Steger
-    // compare a layer with the one before, not a sub-step with the last
-    // (whose d is 1 to within the sub-step's change), and its log and exp
-    // per node and sub-step were a quarter of the march of 7169x2049.
+    // 257x129: 25 -> 15-18 ms). They reuse its sensor d too, taken once per
+    // layer at its first sub-step: its log and exp per node and sub-step
+    // were a quarter of the march of 7169x2049, and between sub-steps of a
+    // layer its convergence ratio moves only by the sub-step's change.
     void advance(double hl, double Sl, double ratio, bool first, bool same_layer) {
         if (!same_layer) step_factors(hl);
         for (int i = 0; i < L.n; ++i) step[i] = factor[i] * hl;
@@ -397,13 +397,18 @@ void march(Grid &g, const Settings &settings, const std::vector<double> &raised,
     for (int l = 1; l <= layers; ++l) {
         if (next_raise < raised.size() && (l - 1) % kSaveEvery == 0) {
             saved.push_back({l, m.r, m.prev, m.prev_edge, first});
-            // A fold from here on goes back to the newest state at least
-            // kResumeLayers before it: the states older than that one are
-            // never read (7169x2049 kept 64 of them, 18 MB).
-            auto keep = saved.begin();
-            for (auto k = saved.begin(); k != saved.end(); ++k)
-                if (k->layer <= l - kResumeLayers) keep = k;
-            saved.erase(saved.begin(), keep);
+            // With one resumption left, the next fold is at this layer or
+            // above and goes back to the newest state at least kResumeLayers
+            // before it: older states are never read (a C-grid's, which has
+            // one, kept 64 of them at 7169x2049, 18 MB). With more left a
+            // resumption moves the march back below this layer, and a later
+            // fold may need them.
+            if (raised.size() - next_raise == 1) {
+                auto keep = saved.begin();
+                for (auto k = saved.begin(); k != saved.end(); ++k)
+                    if (k->layer <= l - kResumeLayers) keep = k;
+                saved.erase(saved.begin(), keep);
+            }
         }
         const double Sl = layers > 1 ? std::sqrt(static_cast<double>(std::min(l, transition) - 1) / (layers - 1)) : 0;
         const double ratio = l > 1 ? h[l - 1] / h[l - 2] : (layers > 1 ? h[1] / h[0] : 1.0);

@@ -141,6 +141,36 @@ static void test_skewness_summary_is_largest_cell(void **state) {
     }
 }
 
+/* The same on a Cartesian grid turned by 0.3 rad (every corner's cos^2 at
+ * rounding level, so every corner is measured in the second pass) and on
+ * one with a column of cells 1e-170 wide (the product of their edges'
+ * squared lengths underflows to 0; read as a zero edge it would give 90):
+ * the summary is the largest per-cell value to the last bit. */
+static void test_skewness_summary_degenerate(void **state) {
+    enum { N = 5 };
+    double x[N * N], y[N * N], v[(N - 1) * (N - 1)], most;
+    int k, m;
+    (void)state;
+    for (m = 0; m < 2; ++m) {
+        eg2d_grid *g;
+        for (k = 0; k < N * N; ++k) {
+            const double i = k % N, j = k / N;
+            x[k] = cos(0.3) * i - sin(0.3) * j;
+            y[k] = sin(0.3) * i + cos(0.3) * j;
+            if (m == 1) x[k] = (k % N == 0) ? 0.0 : (k % N == 1 ? 1e-170 : k % N), y[k] = k / N;
+        }
+        assert_int_equal(eg2d_create(N, N, &g), EG2D_OK);
+        assert_int_equal(eg2d_set_coordinates(g, x, y), EG2D_OK);
+        assert_int_equal(eg2d_get_cell_quality(g, EG2D_QUALITY_SKEWNESS, v), EG2D_OK);
+        most = 0;
+        for (k = 0; k < (N - 1) * (N - 1); ++k)
+            if (v[k] > most) most = v[k];
+        assert_true(most < 1e-12); /* right angles, to rounding */
+        assert_true(quality(g, EG2D_QUALITY_SKEWNESS) == most);
+        eg2d_destroy(g);
+    }
+}
+
 /* Node (i, j) at i (1, 0) + j (cos 30, sin 30): every cell a rhombus of unit
  * sides with corners of 30 and 150 degrees, area sin 30 = 1/2. */
 static void test_rhombus_30(void **state) {
@@ -367,6 +397,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_unit_square),        cmocka_unit_test(test_rhombus_30),
         cmocka_unit_test(test_straight_corner),    cmocka_unit_test(test_skewness_summary_is_largest_cell),
+        cmocka_unit_test(test_skewness_summary_degenerate),
         cmocka_unit_test(test_stretched_row),      cmocka_unit_test(test_bow_tie),
         cmocka_unit_test(test_converged_dome),     cmocka_unit_test(test_annulus_orthogonal),
         cmocka_unit_test(test_solve_reports_folds), cmocka_unit_test(test_cell_quality_errors),

@@ -1269,16 +1269,17 @@ class Airfoil(unittest.TestCase):
                                    capture_output=True, text=True, timeout=600, env={**base, **env})
                 self.assertIn(p.returncode, (0, 4), p.stdout + p.stderr)  # 4: 24 rows grow by more than 1.2
                 with open(os.path.join(d, out, "naca0012-97x25.xyz"), "rb") as f:
-                    return p.stdout, f.read()
-            text, on = airfoil("on", EG2D_HUGE_PAGES="1")
+                    return p.stdout, f.read(), p.stderr
+            text, on, err = airfoil("on", EG2D_HUGE_PAGES="1")
             self.assertEqual(text.count(note), 1, text)
+            self.assertNotIn("could not run again", text + err)
             self.assertEqual(text.count("naca0012 C-grid 97x25"), 1, text)  # the run itself once, after the note
-            text, off = airfoil("off", EG2D_HUGE_PAGES="0")
+            text, off, _ = airfoil("off", EG2D_HUGE_PAGES="0")
             self.assertNotIn("running again", text)
             self.assertEqual(on, off)
-            text, _ = airfoil("user", EG2D_HUGE_PAGES="1", GLIBC_TUNABLES="glibc.malloc.hugetlb=0")
+            text, _, _ = airfoil("user", EG2D_HUGE_PAGES="1", GLIBC_TUNABLES="glibc.malloc.hugetlb=0")
             self.assertNotIn("running again", text)
-            text, _ = airfoil("small")  # 2425 nodes: not asked
+            text, _, _ = airfoil("small")  # 2425 nodes: not asked
             self.assertNotIn("running again", text)
 
     def test_selig_blunt_bases(self):

@@ -70,6 +70,9 @@ const char *const airfoil_help =
     "  -te .svg or .png), NAME the NACA code or the file's stem. A C-grid of one of the sizes of\n"
     "  NASA's Turbulence Modeling Resource NACA 0012 family (7169x2049 ... 113x33) is compared\n"
     "  with its published figures in DIR/NAME-NIxNJ.tmr.txt, printed for the finest level.\n"
+    "From 2^18 nodes the command runs itself again with glibc's transparent huge pages\n"
+    "  (GLIBC_TUNABLES=glibc.malloc.hugetlb=1) and says so; EG2D_HUGE_PAGES=0 runs without,\n"
+    "  EG2D_HUGE_PAGES=1 with them at any size.\n"
     "\n"
     "example:\n"
     "  eg2d airfoil 0012 --topology c --size 385x97 --yplus 1 --reynolds 6e6 --levels 3 \\\n"
@@ -351,9 +354,9 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
         check(g, eg2d_set_tolerance(g, 1e-10), "tolerance");
         // The hybrid C-grids' cycle: V with one sweep before the coarse
         // correction and two after. On the C-grids (385x97 to
-        // 7169x2049) V(2,1) took the cycles W(2,1), the library's default,
-        // took, in 20-35% less time; V(1,2) as many or fewer for the same
-        // time, and 6 where V(2,1) took 9 on 7169x2049 (bench/RESULTS.md).
+        // 3585x1025) V(2,1) needed as many cycles as the library's default
+        // W(2,1) in 20-35% less time, and V(1,2) as many again; on 7169x2049
+        // V(1,2) took 6 cycles where V(2,1) took 9 (bench/RESULTS.md).
         if (a.method == "hybrid" && cgrid) {
             check(g, eg2d_set_parameter(g, EG2D_PARAM_MG_CYCLE, 1), "the cycle");
             check(g, eg2d_set_parameter(g, EG2D_PARAM_MG_PRE_SMOOTH, 1), "the cycle");
