@@ -32,17 +32,26 @@ struct Cell {
     // Mean length of the two edges along i (0-1 and 3-2) and along j (0-3 and 1-2).
     double width_i() const { return 0.5 * (edge(0) + edge(2)); }
     double width_j() const { return 0.5 * (edge(1) + edge(3)); }
+    // The edges from corner m to the next and the previous corner: their
+    // cross product (signed by the grid's orientation), dot product and
+    // product of squared lengths.
+    struct Corner {
+        double cross, dot, lengths2;
+    };
+    Corner corner(int m, int orientation) const {
+        const int n = (m + 1) % 4, p = (m + 3) % 4;
+        const double ax = x[n] - x[m], ay = y[n] - y[m], bx = x[p] - x[m], by = y[p] - y[m];
+        return {(ax * by - ay * bx) * orientation, ax * bx + ay * by, (ax * ax + ay * ay) * (bx * bx + by * by)};
+    }
     // The angle at corner m between the edges to the next and the previous
     // corner, in degrees, signed by the grid's orientation: in (0, 180) at a
     // corner that turns with the grid, negative at a folded corner.
     double corner_angle(int m, int orientation) const {
-        const int n = (m + 1) % 4, p = (m + 3) % 4;
-        const double ax = x[n] - x[m], ay = y[n] - y[m], bx = x[p] - x[m], by = y[p] - y[m];
-        const double cross = (ax * by - ay * bx) * orientation, dot = ax * bx + ay * by;
+        const Corner k = corner(m, orientation);
         // Collinear edges (a straight-through corner, 180 degrees) give a zero
         // cross product that may carry a sign: atan2(-0, -1) is -180, which
         // would read as a folded corner (skewness 270). A zero turn is no fold.
-        return std::atan2(cross == 0.0 ? 0.0 : cross, dot) * (180.0 / 3.14159265358979323846);
+        return std::atan2(k.cross == 0.0 ? 0.0 : k.cross, k.dot) * (180.0 / 3.14159265358979323846);
     }
 };
 

@@ -363,6 +363,15 @@ struct Resume {
     bool first = true;
 };
 
+// The state a fold at `layer` goes back to: the newest at least
+// kResumeLayers before it, else the oldest.
+std::vector<Resume>::iterator resume_point(std::vector<Resume> &saved, int layer) {
+    auto back = saved.begin();
+    for (auto k = saved.begin(); k != saved.end(); ++k)
+        if (k->layer <= layer - kResumeLayers) back = k;
+    return back;
+}
+
 void march(Grid &g, const Settings &settings, const std::vector<double> &raised, std::string *note) {
     const int ni = g.ni(), layers = g.nj() - 1;
     Settings s = settings;  // the smoothing rises on a resumption; March reads it through its reference
@@ -403,12 +412,7 @@ void march(Grid &g, const Settings &settings, const std::vector<double> &raised,
             // one, kept 64 of them at 7169x2049, 18 MB). With more left a
             // resumption moves the march back below this layer, and a later
             // fold may need them.
-            if (raised.size() - next_raise == 1) {
-                auto keep = saved.begin();
-                for (auto k = saved.begin(); k != saved.end(); ++k)
-                    if (k->layer <= l - kResumeLayers) keep = k;
-                saved.erase(saved.begin(), keep);
-            }
+            if (raised.size() - next_raise == 1) saved.erase(saved.begin(), resume_point(saved, l));
         }
         const double Sl = layers > 1 ? std::sqrt(static_cast<double>(std::min(l, transition) - 1) / (layers - 1)) : 0;
         const double ratio = l > 1 ? h[l - 1] / h[l - 2] : (layers > 1 ? h[1] / h[0] : 1.0);
@@ -444,9 +448,7 @@ void march(Grid &g, const Settings &settings, const std::vector<double> &raised,
         const std::string what = format("march: layer %d folds %d cell(s), the first at i = %d", l, folded.count,
                                         folded.first);
         if (next_raise < raised.size()) {
-            auto back = saved.begin();
-            for (auto k = saved.begin(); k != saved.end(); ++k)
-                if (k->layer <= l - kResumeLayers) back = k;
+            const auto back = resume_point(saved, l);
             const double from = s.march_smoothing;
             s.march_smoothing = raised[next_raise++];
             if (note)

@@ -26,23 +26,20 @@ void cell_skewness(const Grid &g, double *out) {
 // degrees is asin |cos|, which grows with cos^2, so a first pass finds the
 // largest cos^2 and a second measures, as cell_skewness does, only the
 // corners within rounding of it; folded corners (cross product against the
-// orientation) and degenerate ones are measured as they come. The result is cell_skewness's
-// largest value to the last bit.
+// orientation) and degenerate ones are measured as they come. The result is
+// cell_skewness's largest value to the last bit.
 double largest_skewness(const Grid &g) {
     const int o = grid_orientation(g);
     // cos^2 of corner m of c, or -1 for a corner measured at once into
     // `exact`: a folded one, and one whose edge lengths' product is zero or
     // below the normal range (cos^2 would be 0/0 or inexact there).
     auto cos2 = [o](const Cell &c, int m, double *exact) {
-        const int n = (m + 1) % 4, p = (m + 3) % 4;
-        const double ax = c.x[n] - c.x[m], ay = c.y[n] - c.y[m], bx = c.x[p] - c.x[m], by = c.y[p] - c.y[m];
-        const double cross = (ax * by - ay * bx) * o, dot = ax * bx + ay * by;
-        const double l2 = (ax * ax + ay * ay) * (bx * bx + by * by);
-        if (cross < 0.0 || !(l2 >= std::numeric_limits<double>::min())) {
+        const Cell::Corner k = c.corner(m, o);
+        if (k.cross < 0.0 || !(k.lengths2 >= std::numeric_limits<double>::min())) {
             if (exact) *exact = std::max(*exact, std::fabs(c.corner_angle(m, o) - 90.0));
             return -1.0;
         }
-        return dot * dot / l2;
+        return k.dot * k.dot / k.lengths2;
     };
     double most = -1.0, exact = 0.0;
     for (int j = 0; j < g.nj() - 1; ++j)

@@ -96,6 +96,23 @@ static void test_straight_corner(void **state) {
     }
 }
 
+/* A grid ni x nj from x, y (its creator's), and the largest per-cell
+ * skewness in *most. */
+static eg2d_grid *grid_and_largest_skewness(int ni, int nj, const double *x, const double *y, double *most) {
+    eg2d_grid *g;
+    double *v = malloc(sizeof(double) * (size_t)(ni - 1) * (size_t)(nj - 1));
+    int k;
+    assert_non_null(v);
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    assert_int_equal(eg2d_set_coordinates(g, x, y), EG2D_OK);
+    assert_int_equal(eg2d_get_cell_quality(g, EG2D_QUALITY_SKEWNESS, v), EG2D_OK);
+    *most = 0;
+    for (k = 0; k < (ni - 1) * (nj - 1); ++k)
+        if (v[k] > *most) *most = v[k];
+    free(v);
+    return g;
+}
+
 /* The skewness summary (found from cosines, without an atan2 per corner)
  * is the largest of the per-cell field, to the last bit: on a 17 x 13 grid whose nodes
  * are moved by up to 0.15 of the spacing (no fold) and by up to 0.7 (some
@@ -103,7 +120,7 @@ static void test_straight_corner(void **state) {
  * (left-handed). */
 static void test_skewness_summary_is_largest_cell(void **state) {
     enum { NI = 17, NJ = 13 };
-    double x[NI * NJ], y[NI * NJ], v[(NI - 1) * (NJ - 1)], most;
+    double x[NI * NJ], y[NI * NJ], most;
     unsigned seed = 12345u;
     int k, mirror, folded, m;
     (void)state;
@@ -122,12 +139,7 @@ static void test_skewness_summary_is_largest_cell(void **state) {
             x[k] = i + (inner ? amp * dx : 0.0);
             y[k] = (mirror ? -1.0 : 1.0) * (j + (inner ? amp * dy : 0.0));
         }
-        assert_int_equal(eg2d_create(NI, NJ, &g), EG2D_OK);
-        assert_int_equal(eg2d_set_coordinates(g, x, y), EG2D_OK);
-        assert_int_equal(eg2d_get_cell_quality(g, EG2D_QUALITY_SKEWNESS, v), EG2D_OK);
-        most = 0;
-        for (k = 0; k < (NI - 1) * (NJ - 1); ++k)
-            if (v[k] > most) most = v[k];
+        g = grid_and_largest_skewness(NI, NJ, x, y, &most);
         folded = (int)quality(g, EG2D_QUALITY_FOLDED_CELLS);
         if (amp > 1) {
             assert_true(folded > 0); /* the folded corners' branch */
@@ -149,7 +161,7 @@ static void test_skewness_summary_is_largest_cell(void **state) {
  * per-cell value to the last bit. */
 static void test_skewness_summary_degenerate(void **state) {
     enum { N = 5 };
-    double x[N * N], y[N * N], v[(N - 1) * (N - 1)], most;
+    double x[N * N], y[N * N], most;
     int k, m;
     (void)state;
     for (m = 0; m < 2; ++m) {
@@ -161,12 +173,7 @@ static void test_skewness_summary_degenerate(void **state) {
             if (m == 1) x[k] = (k % N == 0) ? 0.0 : (k % N == 1 ? 1e-170 : k % N), y[k] = k / N;
             if (m == 1 && k == 3 + 2 * N) x[k] += 0.1; /* node (3, 2): four cells skewed by 5.7 degrees */
         }
-        assert_int_equal(eg2d_create(N, N, &g), EG2D_OK);
-        assert_int_equal(eg2d_set_coordinates(g, x, y), EG2D_OK);
-        assert_int_equal(eg2d_get_cell_quality(g, EG2D_QUALITY_SKEWNESS, v), EG2D_OK);
-        most = 0;
-        for (k = 0; k < (N - 1) * (N - 1); ++k)
-            if (v[k] > most) most = v[k];
+        g = grid_and_largest_skewness(N, N, x, y, &most);
         if (m == 0) assert_true(most < 1e-12); /* right angles, to rounding */
         else assert_true(most > 5 && most < 6);
         assert_true(quality(g, EG2D_QUALITY_SKEWNESS) == most);
