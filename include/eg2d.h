@@ -278,8 +278,10 @@ EG2D_API int eg2d_clear_interior_lines(eg2d_grid *grid);
  * and grow without bound as it turns flat. Measured (bench/RESULTS.md, the
  * course notes' domains at 65^2-257^2): a = 0, b = 1, c = 2, d = 1 with
  * the cotangent form has a smaller mean and largest angle deviation than
- * Winslow's on the valley, the almost-convex domain, the swan and the dome
- * (a tie on the annulus, whose largest deviation is the boundary's own).
+ * Winslow's on the valley, the almost-convex domain, the swan, the dome,
+ * the antenna and the rose; on the annulus 1 <= r <= 3 both grids are the
+ * polar one, whose deviation, 180/(ni-1) degrees at every corner, is the
+ * least any grid on those boundary points can have.
  * The residual is V's gradient, scaled like the other systems':
  *   residual = max over unknown nodes of max(|dV/dx|, |dV/dy|) / (tr H / 2) / L
  * with H the 2x2 block of V's (Gauss-Newton) Hessian at the node: about the
@@ -294,7 +296,11 @@ EG2D_API int eg2d_clear_interior_lines(eg2d_grid *grid);
  * so; PSOR and NESTED run to the iteration limit). With d > 0 or
  * ORTHOGONALITY_FORM 1 (c > 0) V is infinite on a flat corner, its minimum
  * unfolded, and shortened steps are the way to it: the multigrid run then
- * goes on through them (up to 500 in a row, then EG2D_ERR_NOT_CONVERGED). S alone folds where
+ * goes on through them (up to 500 in a row, then EG2D_ERR_NOT_CONVERGED).
+ * V need not be convex, and on the way from a saddle to its minimum the
+ * residual can wander while V falls: a run ends with
+ * EG2D_ERR_NOT_CONVERGED for want of progress only after 40 Newton steps in
+ * which neither the residual fell by 1.25x nor V by 1e-9 of itself. S alone folds where
  * Amsden-Hirt does: on non-convex domains (the elliptic-grid course notes'
  * swan and valley) and on the annulus 1 <= r <= 3 with n x (n/2+1) nodes.
  * The guard keeps unfolded cells unfolded but cannot unfold a start that
@@ -315,8 +321,8 @@ EG2D_API int eg2d_clear_interior_lines(eg2d_grid *grid);
  * Cost (bench/RESULTS.md, eg2d_bench --variational): S alone takes the
  * cycles of Laplace (2-3); a = 3, b = 1 converges in 4 Newton steps at
  * 257 x 257 on the swan (0.7 s); larger area or orthogonality weights take
- * tens of steps there (the Newton steps are shortened near the fold
- * barrier and where V is far from convex). */
+ * tens to hundreds of steps there (the Newton steps are shortened near the
+ * fold barrier and where V is far from convex; bench/RESULTS.md). */
 EG2D_API int eg2d_set_system(eg2d_grid *grid, int system);
 
 #define EG2D_SOLVER_PSOR      0  /* point SOR (Gauss-Seidel at omega = 1) */

@@ -22,21 +22,6 @@ constexpr int kMaxCg = 200;
 constexpr double kShiftFirst = 1e-3, kShiftGrowth = 10.0, kShiftDecay = 0.1, kShiftFloor = 1e-6;
 constexpr int kHalvings = 30;
 constexpr double kArmijo = 1e-4;
-// The fold guard's stall: the fold limit shortened the last kStallSteps
-// Newton steps, and the residual is not down by kProgress in them (a corner
-// driven towards flat comes half the way closer per step and never arrives).
-// Not with a barrier in V (the smoothness term W or O's cotangent form, both
-// infinite on a flat corner): V's minimum is then unfolded, and steps the
-// fold limit shortens are the way there (the antenna with a = 10, b = 1,
-// c = 1 as cotangents, d = 1: at 129^2 all but the last 5 or so of its 81
-// Newton steps are shortened; bench/RESULTS.md). The residual (a max
-// norm) need not fall on that way, so there a shortened step is not counted
-// against progress either; kBarrierSteps shortened steps in a row end the run.
-constexpr int kStallSteps = 12;
-constexpr double kProgress = 0.8;
-// No progress at all (without the fold limit) in this many steps ends the run too.
-constexpr int kNoProgressSteps = 40;
-constexpr int kBarrierSteps = 500;
 // Grid sequencing (sequence()): coarse levels down to kCoarsestNodes a side,
 // each minimised to kCoarseTolerance in at most kCoarseSteps Newton steps.
 constexpr int kCoarsestNodes = 17;
@@ -88,13 +73,11 @@ void VariationalNewton::reset() {
 
 void VariationalNewton::restart() {
     noted_shift_ = false;
-    convex_next_ = false;
     shift_ = 0.0;
     last_gradient_ = -1.0;
     forcing_ = kForcingMax;
-    best_ = -1.0;
-    since_best_ = limited_ = 0;
     last_limited_ = false;
+    progress_.restart();
 }
 
 void VariationalNewton::layout(const Connectivity &conn) {
@@ -288,21 +271,25 @@ void add_correction(const Connectivity &fine, double *f, const std::vector<doubl
 
 }  // namespace
 
-bool VariationalNewton::solve_level(const Connectivity &conn, double *x, double *y, const Functional &F,
-                                    double extent) {
+std::string VariationalNewton::solve_level(const Connectivity &conn, double *x, double *y, const Functional &F,
+                                           double extent) {
     restart();
     Level L;
     L.conn = &conn;
     L.x = x;
     L.y = y;
     L.functional = &F;
+    int limited = 0;
     for (int s = 0; s < kCoarseSteps; ++s) {
-        if (residual(System::Variational, L, extent).value <= kCoarseTolerance) return true;
+        if (residual(System::Variational, L, extent).value <= kCoarseTolerance) return {};
         step(conn, x, y, F, nullptr);
         // Here also with a barrier: a hard coarse level is given up cheaply (the fine grid keeps its start).
-        if (limited_ >= kStallSteps) return false;
+        limited = last_limited_ ? limited + 1 : 0;
+        if (limited >= NewtonProgress::kStallSteps)
+            return format("stalled at the fold guard (%d shortened Newton steps in a row)", limited);
     }
-    return residual(System::Variational, L, extent).value <= kCoarseTolerance;
+    if (residual(System::Variational, L, extent).value <= kCoarseTolerance) return {};
+    return format("did not reach the residual %g in %d Newton steps", kCoarseTolerance, kCoarseSteps);
 }
 
 // Grid sequencing: V's minimum on grids with every 2nd, 4th, ... node first
@@ -359,10 +346,11 @@ void VariationalNewton::sequence(Problem &p) {
                              (static_cast<double>(fine.ni() - 1) * (fine.nj() - 1));
         Functional F = p.functional;
         scale_weights(F, ratio);
-        if (!solve_level(conns[l], vx[l].data(), vy[l].data(), F, extent)) {
-            p.note(format("variational: the minimisation on the %dx%d grid (grid sequencing) stalled at the fold "
-                          "guard; the %dx%d grid starts from its initial grid instead",
-                          conns[l].ni(), conns[l].nj(), fine.ni(), fine.nj()));
+        const std::string why = solve_level(conns[l], vx[l].data(), vy[l].data(), F, extent);
+        if (!why.empty()) {
+            p.note(format("variational: the minimisation on the %dx%d grid (grid sequencing) %s; the %dx%d grid "
+                          "starts from its initial grid instead",
+                          conns[l].ni(), conns[l].nj(), why.c_str(), fine.ni(), fine.nj()));
             restart();
             return;
         }
@@ -393,6 +381,7 @@ void VariationalNewton::step(const Connectivity &conn, double *x, double *y, con
     const double v0 = assemble(x, y, F);
     const double gnorm = std::sqrt(dot(g_, g_));
     last_limited_ = false;
+    v_last_ = v0;
     barrier_ = has_corner_terms(F);
     if (gnorm == 0.0) return;
     if (last_gradient_ > 0.0) {
@@ -468,29 +457,7 @@ void VariationalNewton::step(const Connectivity &conn, double *x, double *y, con
 }
 
 void VariationalNewton::observe(double residual) {
-    limited_ = last_limited_ ? limited_ + 1 : 0;
-    if (best_ < 0.0 || residual <= kProgress * best_) {
-        best_ = residual;
-        since_best_ = 0;
-        return;
-    }
-    if (!(barrier_ && last_limited_)) ++since_best_;
-    if (limited_ >= kStallSteps && since_best_ >= kStallSteps && !barrier_)
-        fail(Failure::NotConverged,
-             format("variational: the fold guard shortened the last %d Newton steps and the residual fell by less "
-                    "than %g in them (best %.3g): the minimum of V for these weights folds or collapses cells, and "
-                    "the grid is kept unfolded short of it. Raise the area weight, or set EG2D_PARAM_FOLD_CHECK to 0 "
-                    "for the unconstrained minimum",
-                    limited_, 1.0 / kProgress, best_));
-    if (barrier_ && limited_ >= kBarrierSteps)
-        fail(Failure::NotConverged,
-             format("variational: the fold limit shortened the last %d Newton steps (residual best %.3g): V's "
-                    "minimum lies near flat corners that the steps approach slowly",
-                    limited_, best_));
-    if (since_best_ >= kNoProgressSteps)
-        fail(Failure::NotConverged,
-             format("variational: the residual fell by less than %g in %d Newton steps (best %.3g, Levenberg shift "
-                    "%.3g)", 1.0 / kProgress, kNoProgressSteps, best_, shift_));
+    progress_.observe(residual, v_last_, last_limited_, barrier_, shift_);
 }
 
 }  // namespace eg2d

@@ -29,10 +29,12 @@
 // solve, where the Galerkin hierarchy carries them to the coarse levels.
 #pragma once
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "operator/variational_cell.hpp"
 #include "solvers/block_multigrid.hpp"
+#include "solvers/newton_progress.hpp"
 #include "solvers/solver.hpp"
 
 namespace eg2d {
@@ -46,7 +48,8 @@ public:
     void iterate(Problem &p);
     // After the run computed the residual of the step: the fold guard's stall
     // test (throws NotConverged when V's minimum lies beyond a fold; not with
-    // a barrier in V, whose minimum is unfolded) and the no-progress tests.
+    // a barrier in V, whose minimum is unfolded) and the no-progress tests
+    // (neither the residual nor V falling).
     void observe(double residual);
     void reset();
 
@@ -55,7 +58,8 @@ private:
     void step(const Connectivity &conn, double *x, double *y, const Functional &F, Problem *p);
     void restart();  // a new minimisation: forcing, shift and stall test afresh
     void sequence(Problem &p);
-    bool solve_level(const Connectivity &conn, double *x, double *y, const Functional &F, double extent);
+    // V's minimum on a grid sequencing level: empty, or why it was given up.
+    std::string solve_level(const Connectivity &conn, double *x, double *y, const Functional &F, double extent);
     void layout(const Connectivity &conn);
     double assemble(const double *x, const double *y, const Functional &F);
     double energy(const double *x, const double *y, const Functional &F, double alpha) const;
@@ -71,11 +75,10 @@ private:
     double shift_ = 0.0;
     double mean_ = 0.0;           // the mean cell area (variational_cell.hpp)
     double last_gradient_ = -1.0, forcing_ = 0.5;
-    bool started_ = false, noted_shift_ = false, convex_next_ = false;
-    // The fold guard's stall test.
-    double best_ = -1.0;
-    int since_best_ = 0, limited_ = 0;
+    bool started_ = false, noted_shift_ = false;
+    NewtonProgress progress_;  // the stop tests
     bool last_limited_ = false;
+    double v_last_ = 0.0;      // V where the last step began
     bool barrier_ = false;  // V has W or O's cotangents: infinite on a flat corner, its minimum unfolded
 };
 
