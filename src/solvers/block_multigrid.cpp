@@ -51,6 +51,23 @@ BlockMultigrid::Axis make_axis(int n, bool periodic) {
     return a;
 }
 
+// The coarse nodes that fine node (i, j) interpolates from (bilinear, per
+// axis; those with weight and an unknown of C): f(U, I, J, weight) for each,
+// U = I + C.nc J.
+template <class Visit>
+void for_each_weight(const BlockMultigrid::Axis &ai, const BlockMultigrid::Axis &aj, const BlockStencil &C, int i,
+                     int j, Visit &&f) {
+    const std::size_t si = static_cast<std::size_t>(i), sj = static_cast<std::size_t>(j);
+    const int ci[2] = {ai.i0[si], ai.i1[si]}, cj[2] = {aj.i0[sj], aj.i1[sj]};
+    const double wi[2] = {ai.w0[si], ai.w1[si]}, wj[2] = {aj.w0[sj], aj.w1[sj]};
+    for (int b = 0; b < 2; ++b)
+        for (int a = 0; a < 2; ++a) {
+            if (wi[a] == 0.0 || wj[b] == 0.0) continue;
+            const std::size_t U = static_cast<std::size_t>(ci[a]) + static_cast<std::size_t>(C.nc) * cj[b];
+            if (C.unknown[U]) f(U, ci[a], cj[b], wi[a] * wj[b]);
+        }
+}
+
 void gauss_seidel(const BlockStencil &A, const std::vector<Vec2> &b, std::vector<Vec2> &x, bool backward) {
     const int nc = A.nc, nr = A.nr;
     auto relax = [&](int i, int j) {
@@ -134,16 +151,10 @@ bool BlockMultigrid::setup(const BlockStencil &A) {
         // nodes p and q interpolate from.
         auto weights = [&](int i, int j, int *I, int *J, double *w) {
             int n = 0;
-            const std::size_t si = static_cast<std::size_t>(i), sj = static_cast<std::size_t>(j);
-            const int ci[2] = {c.ai.i0[si], c.ai.i1[si]}, cj[2] = {c.aj.i0[sj], c.aj.i1[sj]};
-            const double wi[2] = {c.ai.w0[si], c.ai.w1[si]}, wj[2] = {c.aj.w0[sj], c.aj.w1[sj]};
-            for (int b = 0; b < 2; ++b)
-                for (int a = 0; a < 2; ++a) {
-                    if (wi[a] == 0.0 || wj[b] == 0.0) continue;
-                    if (!C.unknown[static_cast<std::size_t>(ci[a]) + static_cast<std::size_t>(C.nc) * cj[b]]) continue;
-                    I[n] = ci[a], J[n] = cj[b], w[n] = wi[a] * wj[b];
-                    ++n;
-                }
+            for_each_weight(c.ai, c.aj, C, i, j, [&](std::size_t, int ci, int cj, double wij) {
+                I[n] = ci, J[n] = cj, w[n] = wij;
+                ++n;
+            });
             return n;
         };
         for (int j = 1; j < F.nr - 1; ++j)
@@ -275,23 +286,12 @@ void BlockMultigrid::cycle(std::size_t l) {
     // b_c = P^T r, then x += P x_c.
     std::fill(C.b.begin(), C.b.end(), Vec2{});
     const BlockStencil &Cm = matrix(l + 1);
-    auto each_weight = [&](int i, int j, auto &&f) {
-        const std::size_t si = static_cast<std::size_t>(i), sj = static_cast<std::size_t>(j);
-        const int ci[2] = {C.ai.i0[si], C.ai.i1[si]}, cj[2] = {C.aj.i0[sj], C.aj.i1[sj]};
-        const double wi[2] = {C.ai.w0[si], C.ai.w1[si]}, wj[2] = {C.aj.w0[sj], C.aj.w1[sj]};
-        for (int b = 0; b < 2; ++b)
-            for (int a = 0; a < 2; ++a) {
-                if (wi[a] == 0.0 || wj[b] == 0.0) continue;
-                const std::size_t U = static_cast<std::size_t>(ci[a]) + static_cast<std::size_t>(Cm.nc) * cj[b];
-                if (Cm.unknown[U]) f(U, wi[a] * wj[b]);
-            }
-    };
     for (int j = 1; j < A.nr - 1; ++j)
         for (int i = 0; i < A.nc; ++i) {
             const std::size_t u = static_cast<std::size_t>(i) + static_cast<std::size_t>(A.nc) * j;
             if (!A.unknown[u]) continue;
             const Vec2 r = F.r[u];
-            each_weight(i, j, [&](std::size_t U, double w) {
+            for_each_weight(C.ai, C.aj, Cm, i, j, [&](std::size_t U, int, int, double w) {
                 C.b[U].x += w * r.x;
                 C.b[U].y += w * r.y;
             });
@@ -301,7 +301,7 @@ void BlockMultigrid::cycle(std::size_t l) {
         for (int i = 0; i < A.nc; ++i) {
             const std::size_t u = static_cast<std::size_t>(i) + static_cast<std::size_t>(A.nc) * j;
             if (!A.unknown[u]) continue;
-            each_weight(i, j, [&](std::size_t U, double w) {
+            for_each_weight(C.ai, C.aj, Cm, i, j, [&](std::size_t U, int, int, double w) {
                 F.x[u].x += w * C.x[U].x;
                 F.x[u].y += w * C.x[U].y;
             });
