@@ -47,14 +47,17 @@ std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, in
         const Connectivity &c = levels.back().conn;
         // A C-grid's trailing edges stay coarse nodes: the cut ends there.
         std::vector<int> anchors, j_anchors;
-        if (c.wake() > 0) anchors = {c.wake(), c.ni() - 1 - c.wake()};
+        if (c.wake() > 0) {  // push_back, not = {...}: GCC 12's -O3 warns (-Wnonnull) on assigning a list to an empty vector
+            anchors.push_back(c.wake());
+            anchors.push_back(c.ni() - 1 - c.wake());
+        }
         // Held rows (a wall layer) end at a coarse node too, and each level
         // keeps at least two rows of unknowns above them: with one (the
         // hybrid C-grid 1793x513 to 500 chords, a 15x6 level over 3 held
         // rows) the cycles stalled at a residual of 5e-8; down to 15x10 they
         // converge in 7.
         const int held = c.held_rows();
-        if (held > 0) j_anchors = {held};
+        if (held > 0) j_anchors.push_back(held);
         // Fixed interior lines stay coarse nodes and stay fixed there, so a
         // coarse correction is exactly 0 on them (coarse_axis.hpp: an
         // anchor's interpolation weight is 1).
