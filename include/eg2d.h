@@ -279,9 +279,10 @@ EG2D_API int eg2d_clear_interior_lines(eg2d_grid *grid);
  * course notes' domains at 65^2-257^2): a = 0, b = 1, c = 2, d = 1 with
  * the cotangent form has a smaller mean and largest angle deviation than
  * Winslow's on the valley, the almost-convex domain, the swan, the dome,
- * the antenna and the rose; on the annulus 1 <= r <= 3 both grids are the
- * polar one, whose deviation, 180/(ni-1) degrees at every corner, is the
- * least any grid on those boundary points can have.
+ * the antenna and the rose; on the annulus 1 <= r <= 3 (equally spaced
+ * boundary points) both grids are the polar one, whose deviation,
+ * 180/(ni-1) degrees at every corner, is the least any unfolded grid on
+ * those boundary points can have.
  * The residual is V's gradient, scaled like the other systems':
  *   residual = max over unknown nodes of max(|dV/dx|, |dV/dy|) / (tr H / 2) / L
  * with H the 2x2 block of V's (Gauss-Newton) Hessian at the node: about the
@@ -298,10 +299,10 @@ EG2D_API int eg2d_clear_interior_lines(eg2d_grid *grid);
  * unfolded, and shortened steps are the way to it: the multigrid run then
  * goes on through them (up to 500 in a row, then EG2D_ERR_NOT_CONVERGED).
  * V need not be convex, and on the way from a saddle to its minimum the
- * residual can wander while V falls: a run ends with
- * EG2D_ERR_NOT_CONVERGED for want of progress only after 40 Newton steps in
- * which neither the residual fell by 1.25x nor V by 1e-9 of itself. S alone folds where
- * Amsden-Hirt does: on non-convex domains (the elliptic-grid course notes'
+ * residual can wander while V falls: the Newton minimiser (below) ends a
+ * run with EG2D_ERR_NOT_CONVERGED for want of progress only after 40
+ * Newton steps in which neither the residual fell by 1.25x nor V by 1e-9
+ * of itself. S alone folds where Amsden-Hirt does: on non-convex domains (the elliptic-grid course notes'
  * swan and valley) and on the annulus 1 <= r <= 3 with n x (n/2+1) nodes.
  * The guard keeps unfolded cells unfolded but cannot unfold a start that
  * is folded (the course notes' antenna: its TFI start folds): such a start

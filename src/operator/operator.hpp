@@ -79,13 +79,11 @@ NodeEquation variational_equation(const Level &L, const Stencil &s);
 // Forced inline: the sweeps call it once per node, and since the variational
 // branch (a call) GCC keeps it out of line even at -O3 (ilu_sweep then pays a
 // call, a Metrics through memory and no scheduling across it: swan 1025x1025
-// multigrid about 20% slower).
-#if defined(__GNUC__) || defined(__clang__)
-#  define EG2D_HOT_INLINE inline __attribute__((always_inline))
-#else
-#  define EG2D_HOT_INLINE inline
+// multigrid about 20% slower; bench/RESULTS.md).
+#if defined(__GNUC__)
+__attribute__((always_inline))
 #endif
-EG2D_HOT_INLINE NodeEquation node_equation(System system, const Level &L, const Stencil &s, Metrics *metrics = nullptr) {
+inline NodeEquation node_equation(System system, const Level &L, const Stencil &s, Metrics *metrics = nullptr) {
     if (L.conn && L.conn->fixed_node(s.c)) {  // a node of a fixed interior line: an identity row, R = 0
         if (metrics) *metrics = Metrics{0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
         return NodeEquation{0.0, 0.0, 1.0};

@@ -47,7 +47,8 @@ std::vector<MgLevel> build_hierarchy(const Connectivity &fine, System system, in
         const Connectivity &c = levels.back().conn;
         // A C-grid's trailing edges stay coarse nodes: the cut ends there.
         std::vector<int> anchors, j_anchors;
-        if (c.wake() > 0) {  // push_back, not = {...}: GCC 12's -O3 warns (-Wnonnull) on assigning a list to an empty vector
+        // push_back, not = {...}: GCC 12 at -O3 warns (-Wnonnull, falsely) on a list assigned to an empty vector.
+        if (c.wake() > 0) {
             anchors.push_back(c.wake());
             anchors.push_back(c.ni() - 1 - c.wake());
         }

@@ -10,11 +10,11 @@ void NewtonProgress::restart() { *this = NewtonProgress{}; }
 
 void NewtonProgress::observe(double residual, double energy, bool limited, bool barrier, double shift) {
     limited_ = limited ? limited_ + 1 : 0;
-    const bool lower = !marked_ || energy < mark_ - kEnergyProgress * std::fabs(mark_);
-    if (lower) {
-        mark_ = energy;
-        marked_ = true;
-    }
+    // V is infinite on a folded corner with a barrier in it: an infinite mark
+    // (the first, or V at a step from a folded grid) gives NaN here, and any
+    // finite V counts as lower; an infinite or NaN V never does.
+    const bool lower = std::isfinite(energy) && !(energy >= mark_ - kEnergyProgress * std::fabs(mark_));
+    if (lower) mark_ = energy;
     if (best_ < 0.0 || residual <= kProgress * best_) {
         best_ = residual;
         since_best_ = since_progress_ = 0;

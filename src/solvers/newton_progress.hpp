@@ -3,6 +3,8 @@
 // apart from the steps so that they can be tested on given sequences.
 #pragma once
 
+#include <limits>
+
 namespace eg2d {
 
 class NewtonProgress {
@@ -31,15 +33,15 @@ public:
     static constexpr double kEnergyProgress = 1e-9;
 
     void restart();
-    // After a step: the residual after it, V where it began, whether the
-    // fold limit shortened it, whether V has a barrier, the Levenberg shift
-    // (for the message). Throws Failure::NotConverged saying which test ended the run.
+    // After a step: the residual after it, V where it began (so a fall in V
+    // is seen one step late), whether the fold limit shortened it, whether V
+    // has a barrier, the Levenberg shift (for the message). Throws
+    // Failure::NotConverged saying which test ended the run.
     void observe(double residual, double energy, bool limited, bool barrier, double shift);
 
 private:
-    double best_ = -1.0;   // the best residual so far
-    double mark_ = 0.0;    // V when the run last made progress
-    bool marked_ = false;
+    double best_ = -1.0;  // the best residual so far
+    double mark_ = std::numeric_limits<double>::infinity();  // V when the run last made progress
     int since_best_ = 0;      // steps since the residual fell by kProgress (not counting barrier-limited ones)
     int since_progress_ = 0;  // steps since the residual or V fell enough
     int limited_ = 0;         // fold-limited steps in a row

@@ -4,7 +4,6 @@
 // keeps falling is not stopped while its residual wanders.
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <functional>
 #include <string>
 
@@ -70,6 +69,21 @@ int main() {
     at = run(800, true, [](int k) { return Step{k == 1 ? 1e-6 : 2e-6, 9.0 - 1e-5 * k, k > 1}; }, m);
     check(at == 501 && says(m, "the fold limit shortened the last 500 Newton steps"),
           "fold-limited steps with a barrier: stop after 500 in a row (step 501)", at);
+    // V infinite where the run begins (a step from a folded grid, with a
+    // barrier in V), then falling: the finite V counts as progress.
+    at = run(300, true, [](int k) {
+        return Step{k == 1 ? 1e-6 : (k % 2 ? 2e-6 : 4e-5), k == 1 ? HUGE_VAL : 9.0 - 1e-5 * k, false};
+    }, m);
+    check(at == 0, "V infinite at step 1, then falling: runs on (300 steps)", at);
+    // An infinite or NaN V is never progress.
+    at = run(300, false, [](int k) { return Step{k == 1 ? 1e-6 : 2e-6, k % 2 ? HUGE_VAL : NAN, false}; }, m);
+    check(at == 41, "V infinite or NaN throughout: stops at step 41", at);
+    // Every other step shortened by the fold limit with a barrier, V flat:
+    // the shortened steps do not count against the residual, so 40 others
+    // (steps 3, 5, ..., 81) end the run, as before V was read.
+    at = run(300, true, [](int k) { return Step{k == 1 ? 1e-6 : 2e-6, 9.0, k % 2 == 0}; }, m);
+    check(at == 81 && says(m, "in 40 Newton steps"), "every other step fold-limited, barrier, V flat: stops at step 81",
+          at);
     // A residual falling by 1.25 every step never stops, whatever V does.
     at = run(300, false, [](int k) { return Step{std::pow(0.79, k), 9.0, false}; }, m);
     check(at == 0, "residual falling 0.79 per step, V flat: runs on (300 steps)", at);

@@ -175,12 +175,15 @@ static void test_area_weight_evens_cells(void **state) {
  * outer line to (N - 2) 180 (the angles outside and inside a simple
  * polygon), so the mean deviation from 90 over the ring's corners is at
  * least 180/N, and so are the grid's mean and largest deviations. The polar
- * grid has 180/N at every corner, whatever its radial spacing: Winslow's
- * grid and the variational one both sit at the floor (to the solve's
- * tolerance), where "smaller" cannot be had. */
+ * grid (equally spaced boundary points) has 180/N at every corner, whatever
+ * its radial spacing: Winslow's grid and the variational one both sit at
+ * the floor, where "smaller" cannot be had by any unfolded grid. The mean
+ * is at the floor for any grid near the polar one (measured 1e-14 above
+ * it); the largest moves with the solve's residual (2.4e-6 to 3.5e-5
+ * degrees above at 33 and 65 for a residual of 1e-8). */
 static void assert_annulus_floor(const figures *f, int n) {
     const double bound = 180.0 / (n - 1);
-    assert_true(fabs(f->mean - bound) < 1e-4 && fabs(f->largest - bound) < 1e-4);
+    assert_true(fabs(f->mean - bound) < 1e-9 && fabs(f->largest - bound) < 1e-3);
 }
 
 /* a = 10, b = 1, c = 5: smaller mean and largest deviation of the corner
