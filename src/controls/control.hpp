@@ -68,6 +68,9 @@ public:
     // initialisation and after any change of grid, boundary or controls.
     // Default: nothing.
     virtual WallLayerShape shape_start(Grid &, const Settings &, bool /*fill_above*/) { return {}; }
+    // True when shape_start re-spaces the start's lines (the graded wall
+    // layer): the run then gives it the Winslow grid without controls.
+    virtual bool grades(const Grid &, const Settings &) const { return false; }
 };
 
 // The controls of a grid and the fields they add up to.

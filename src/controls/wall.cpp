@@ -39,6 +39,7 @@
 #include "base/error.hpp"
 #include "controls/anderson.hpp"
 #include "controls/controls.hpp"
+#include "grid/graded_layer.hpp"
 #include "grid/hybrid_layer.hpp"
 #include "operator/operator.hpp"
 
@@ -114,6 +115,7 @@ public:
             return;
         }
         if (layer_growth_ > 0.0) return add_wall_layer_fields(g, layer_growth_, fields);
+        add_background(g, fields);
         for (int side = 0; side < 4; ++side) add_side(g, side, fields);
     }
 
@@ -149,6 +151,17 @@ public:
                        "; the wall control's updates instead";
             }
         }
+        graded_ = GradedLayer{};
+        if (automatic && note.empty() && graded_applies(g)) {
+            Grid trial = g;
+            graded_ = shape_graded_layer(trial, height_);
+            g = std::move(trial);
+            layer_growth_ = 0.0;
+            if (g.held_rows() > 0) g.hold_rows(0);
+            WallLayerShape shape = graded_.shape;
+            shape.note = graded_note(g) + (shape.note.empty() ? "" : "; " + shape.note);
+            return shape;
+        }
         const bool layer = settings.wall_layer != 0.0 && !automatic &&
                            (g.topology() == Topology::C || (g.topology() == Topology::O && !wall_has_sharp_corner(g))) &&
                            jmin_only;
@@ -163,7 +176,10 @@ public:
         layer_growth_ = shape.rows > 0 ? shape.growth : 0.0;
         return shape;
     }
-    double mismatch() const override { return mismatch_; }
+    bool grades(const Grid &g, const Settings &settings) const override {
+        return settings.wall_layer == kAutomaticLayer && graded_applies(g) && !hybrid_candidate(g, settings);
+    }
+    double mismatch() const override { return std::max(mismatch_, graded_gap_); }
     void restart() override {
         for (int side = 0; side < 4; ++side) clear_side(side);
         accel_.restart();
@@ -176,6 +192,9 @@ public:
                  const ControlPace &pace) override {
         decay_ = settings.wall_decay;
         const double omega = std::min(1.0, pace.relaxation * settings.wall_relaxation);
+        // Against cycles the grid is converged for the last state, and a
+        // line's first cell answers its target in proportion: the whole step.
+        graded_gap_ = graded_.families.empty() ? 0.0 : update_graded_layer(g, graded_, pace.accelerate ? 1.0 : omega);
         const double step = pace.step * kStepLimit;
         const double orient = boundary_orientation(g);  // J's sign, from the boundary alone (base/folds.hpp)
         for (int side = 0; side < 4; ++side) {
@@ -290,6 +309,7 @@ private:
     void add_targets(const Grid &g, const ControlFields &others, double orient, int side, std::vector<Node> &nodes) const {
         if (!active(g, side)) return;
         ControlFields rest = others;
+        add_background(g, rest);
         for (int o = 0; o < 4; ++o)
             if (o != side) add_side(g, o, rest);
         const double sign = (side == 0 || side == 1) ? orient : -orient;
@@ -369,7 +389,13 @@ private:
         ty /= tl;
         const double nx = -ty * sign, ny = tx * sign;
         const Stencil s = conn.stencil(pc.i, pc.j);
-        double h = height_[side];
+        // A graded wall's height is its layer's (update_graded_layer): until
+        // its scales are frozen the updates here turn its first line to the
+        // normal only, then they close the last per cent of the height at
+        // the first node, each node's own (a patch's blend included).
+        const std::vector<double> &graded = graded_.heights[static_cast<std::size_t>(side)];
+        const bool angle_only = height_[side] == 0.0 || (!graded.empty() && !graded_.frozen);
+        double h = angle_only ? 0.0 : graded.empty() ? height_[side] : graded[static_cast<std::size_t>(k)];
         if (h == 0.0) {  // orthogonality only: keep the current normal height
             h = (g.x[s.c] - g.x[kw]) * nx + (g.y[s.c] - g.y[kw]) * ny;
             if (!(h > 0.0)) h = std::hypot(g.x[s.c] - g.x[kw], g.y[s.c] - g.y[kw]);
@@ -413,7 +439,7 @@ private:
         phi = std::clamp(phi, -kPhiLimit * widen, kPhiLimit * widen);
         psi = std::clamp(psi, -kPsiLimit * widen, kPsiLimit * widen);
         widen_out = widen;
-        if (height_[side] == 0.0) psi = 0.0;  // the normal position is left to the equation
+        if (angle_only) psi = 0.0;  // the normal position is left to the equation
         if (!std::isfinite(phi) || !std::isfinite(psi)) return false;
         const double w = scale / (2.0 * (m.alpha + m.gamma));
         const double ax = j_side(side) ? xxi : xeta, ay = j_side(side) ? yxi : yeta;  // along the wall
@@ -447,7 +473,45 @@ private:
         }
     }
 
+    // The graded layer's frozen background (grid/graded_layer.hpp), under the updates.
+    void add_background(const Grid &g, ControlFields &fields) const {
+        if (graded_.phi.size() != g.size()) return;
+        std::vector<double> &phi = fields.at(Term::AXi, g.size()), &psi = fields.at(Term::CEta, g.size());
+        for (std::size_t k = 0; k < phi.size(); ++k) {
+            phi[k] += graded_.phi[k];
+            psi[k] += graded_.psi[k];
+        }
+    }
+    // Walls the hybrid layer does not take: a single block's, or an O-grid's
+    // with JMAX a wall; a height on some wall; no interior lines (the lines
+    // are re-spaced through them).
+    // The hybrid layer's case: an O- or C-grid whose only wall is JMIN.
+    bool hybrid_candidate(const Grid &g, const Settings &settings) const {
+        const bool jmin_only = height_[0] > 0.0 && height_[1] < 0.0 && height_[2] < 0.0 && height_[3] < 0.0 &&
+                               g.interior_lines().empty();
+        return (settings.wall_layer == 2.0 || settings.wall_layer == kAutomaticLayer) &&
+               g.topology() != Topology::Single && jmin_only;
+    }
+    bool graded_applies(const Grid &g) const {
+        if (g.topology() == Topology::C || !g.interior_lines().empty()) return false;
+        for (int s = 0; s < 4; ++s)
+            if (height_[static_cast<std::size_t>(s)] > 0.0 && g.has_side(static_cast<Side>(s))) return true;
+        return false;
+    }
+    std::string graded_note(const Grid &g) const {
+        std::string s = format("wall layer (graded): the lines leaving the walls re-spaced from their first cells, "
+                               "largest growth %.4g within %d cells of a wall; the solve keeps their spacing",
+                               graded_.shape.growth, kGradedRows);
+        if (graded_.needed > 0)
+            s += format("; the growth exceeds %g: %s >= %d would meet it", kGradedGrowth,
+                        graded_.needed_along == Side::JMin ? "nj" : "ni", graded_.needed);
+        (void)g;
+        return s;
+    }
+
     std::array<double, 4> height_;
+    GradedLayer graded_;
+    double graded_gap_ = 0.0;  // the last graded update's change (update_graded_layer)
     double layer_growth_ = 0.0;  // > 0: a marched layer is held, and this is its growth
     HybridLayer hybrid_;         // the hybrid layer's frozen controls, if it is one
     // The state: tangential (phi) and normal (psi) coefficients at depth 1,

@@ -9,6 +9,7 @@
 #include "grid/initializers.hpp"
 #include "base/folds.hpp"
 #include "base/self_crossing.hpp"
+#include "controls/controls.hpp"
 
 namespace eg2d {
 
@@ -133,10 +134,26 @@ void Generator::shape_start(bool fill_above) {
     shape_pending_ = boundary_changed_ = false;
     shaped_with_layer_ = settings.wall_layer;
     shaped_with_growth_ = settings.wall_growth;
+    if (layer_.moved_sides) grid_.restore_boundary();  // the last shape's moves were its own
     layer_ = WallLayerShape{};
     Control *c = controls_.find(ControlKind::Orthogonality);
+    // The graded layer (graded_layer.hpp) re-spaces the lines of the start it
+    // is given: a folded start (the TFI start of an S-shaped duct) is first
+    // solved without controls. An unfolded one is kept: the Winslow grid
+    // would lose the rows' clustering of a flat plate's TFI start, which
+    // the frozen Phi keeps exactly.
+    std::string untangled;
+    if (c && fill_above && is_wall_control(c) && c->grades(grid_, settings)) {
+        const long folded = fold_summary(grid_).folded;
+        double r = 0.0;
+        const int cycles = folded > 0 ? winslow_cycles(ControlFields{}, settings, r) : 0;
+        if (folded > 0)
+            untangled = format("wall layer: the start grid has %ld folded cell(s); the layer is made on the Winslow "
+                               "grid without controls instead (%d multigrid cycle(s), residual %.3g)", folded, cycles, r);
+    }
     if (c) layer_ = c->shape_start(grid_, settings, fill_above);
     else if (grid_.held_rows() > 0) grid_.hold_rows(0);
+    if (!untangled.empty()) layer_.note = untangled + (layer_.note.empty() ? "" : "; " + layer_.note);
     controls_.invalidate();
 }
 
@@ -269,19 +286,25 @@ void Generator::control_sources(double *P, double *Q) const {
 // starts (the antenna converges unfolded in 2 cycles), so with the fold
 // guard on the variational run starts from the Winslow grid there, and says
 // so (with the guard off V's minimum is sought from wherever it starts).
-void Generator::untangle_start(const ControlFields &fields, const Settings &run_settings) {
-    const long folded = fold_summary(grid_).folded;
-    if (folded == 0) return;
+int Generator::winslow_cycles(const ControlFields &fields, const Settings &run_settings, double &r) {
     std::unique_ptr<Solver> winslow = find_solver(EG2D_SOLVER_MULTIGRID)->make();
     Problem p{grid_, System::Winslow, fields, run_settings, false, grid_.held_rows() == 0, nullptr, Functional{}};
     const double extent = grid_.extent();
-    double r = eg2d::residual(System::Winslow, p.level(), extent).value;
+    r = eg2d::residual(System::Winslow, p.level(), extent).value;
     int cycles = 0;
     for (; cycles < kUntangleCycles && std::isfinite(r) && r > settings.tolerance; ++cycles) {
         winslow->iterate(p);
         p.fresh_start = false;
         r = eg2d::residual(System::Winslow, p.level(), extent).value;
     }
+    return cycles;
+}
+
+void Generator::untangle_start(const ControlFields &fields, const Settings &run_settings) {
+    const long folded = fold_summary(grid_).folded;
+    if (folded == 0) return;
+    double r = 0.0;
+    const int cycles = winslow_cycles(fields, run_settings, r);
     const long left = std::isfinite(r) ? fold_summary(grid_).folded : -1;
     report_.note(format("variational: the start grid has %ld folded cell(s), which V's fold guard cannot unfold; "
                         "it starts from the Winslow grid instead (%d multigrid cycle(s), residual %.3g, %ld folded)",
@@ -333,7 +356,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
     // field 30: the FMG start went non-finite).
     if (system_ == System::Variational && fresh_start_ && settings.fold_check != 0.0) untangle_start(fields, run_settings);
     Problem problem{grid_, system_, fields, run_settings, controls_.has_dynamic(),
-                    fresh_start_ && grid_.held_rows() == 0, &report_, functional()};
+                    fresh_start_ && grid_.held_rows() == 0 && !layer_.graded, &report_, functional()};
     const double extent = grid_.extent();
     double r = finite_residual(system_, problem.level(), extent).value;
     double best = r;

@@ -129,6 +129,9 @@ private:
     RunEnd run(long max_iterations, bool stop_at_tolerance);
     // A folded start of the variational system solved with Winslow's first.
     void untangle_start(const ControlFields &fields, const Settings &run_settings);
+    // Uncontrolled-or-given Winslow multigrid cycles on the grid until the
+    // tolerance (at most kUntangleCycles); r: the residual at the end.
+    int winslow_cycles(const ControlFields &fields, const Settings &run_settings, double &r);
     // One update of the dynamic controls before an iteration; true (and r
     // the residual after it) when the solver converges each iteration.
     bool advance_dynamic_controls(Problem &problem, double extent, double &r);

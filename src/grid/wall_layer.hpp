@@ -20,6 +20,8 @@ struct WallLayerShape {
     int fold_row = -1;  // the row that would have folded, if any
     double growth = 0;  // the growth used (larger than asked where a corner needs it)
     bool hybrid = false;  // rows of the hyperbolic march (hybrid_layer.hpp)
+    bool graded = false;
+    bool moved_sides = false;  // nodes of the user's sides moved: put back before the next shape  // lines re-spaced, nothing held (graded_layer.hpp): the start is kept
     std::string note;     // why no layer was made, when one was asked for
 };
 

@@ -16,6 +16,7 @@
 #include "io/formats.hpp"
 #include "io/unstructured.hpp"
 #include "quality/quality.hpp"
+#include "quality/wall_layer_stats.hpp"
 
 namespace eg2d {
 
@@ -65,30 +66,11 @@ WallStats wall_stats(const Grid &g) {
     for (const Patch &p : resolve_patches(g)) {
         if (p.type != PatchType::Wall) continue;
         w.stretches.push_back(format("%s: %s %d..%d", p.name.c_str(), side_name(p.side), p.first, p.last));
-        const int n = g.side_length(p.side);
-        auto corner = [&](int q) {
-            if (q <= p.first || q >= p.last) return false;
-            return wall_corner(g, side_node(g, p.side, q - 1), side_node(g, p.side, q), side_node(g, p.side, q + 1));
-        };
-        for (int q = p.first + 1; q < p.last; ++q) {
-            if (corner(q - 1) || corner(q) || corner(q + 1)) continue;
-            const std::size_t k0 = side_node(g, p.side, q), kp = side_node(g, p.side, std::min(q + 1, n - 1)),
-                              km = side_node(g, p.side, std::max(q - 1, 0));
-            const double tx = g.x[kp] - g.x[km], ty = g.y[kp] - g.y[km], tl = std::hypot(tx, ty);
-            const std::size_t k1 = side_node(g, p.side, q, 1);
-            const double dx = g.x[k1] - g.x[k0], dy = g.y[k1] - g.y[k0], dl = std::hypot(dx, dy);
-            if (!(tl > 0 && dl > 0)) continue;
+        for (const WallNodeStats &n : wall_stretch_stats(g, p.side, p.first, p.last, w.rows)) {
             ++w.nodes;
-            const double along = (tx * dx + ty * dy) / (tl * dl);  // cosine to the tangent
-            w.height.add(std::fabs(tx * dy - ty * dx) / tl);
-            w.angle.add(std::asin(std::min(1.0, std::fabs(along))) * 180.0 / kPi);
-            double before = dl;
-            for (int m = 2; m <= w.rows; ++m) {
-                const std::size_t a = side_node(g, p.side, q, m - 1), b = side_node(g, p.side, q, m);
-                const double d = std::hypot(g.x[b] - g.x[a], g.y[b] - g.y[a]);
-                if (before > 0) w.growth.add(d / before);
-                before = d;
-            }
+            w.height.add(n.height);
+            w.angle.add(n.angle);
+            if (w.rows >= 2) w.growth.add(n.growth);
         }
     }
     return w;

@@ -1,0 +1,322 @@
+#include "grid/graded_layer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "base/error.hpp"
+#include "base/patches.hpp"
+#include "base/polyline.hpp"
+#include "grid/march_schedule.hpp"
+
+namespace eg2d {
+
+namespace {
+
+// The longest wall-normal line searched for `needed`.
+constexpr int kMostNodes = 1 << 20;
+
+std::size_t at(int ni, int i, int j) { return static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * j; }
+double dist(const Vec2 &a, const Vec2 &b) { return std::hypot(b.x - a.x, b.y - a.y); }
+
+// First-cell height at each node of a wall side: h on its wall stretches,
+// log-linear in the index between them and toward a corner's own spacing on
+// the rest (an O-grid's side wraps round).
+std::vector<double> node_heights(const Grid &g, Side s, double h) {
+    const int n = g.side_length(s);
+    const bool ring = g.topology() == Topology::O;
+    std::vector<double> v(static_cast<std::size_t>(n), -1.0);
+    for (const Patch &p : resolve_patches(g))
+        if (p.side == s && p.type == PatchType::Wall)
+            for (int k = p.first; k <= p.last; ++k) v[static_cast<std::size_t>(k)] = h;
+    // A side given a height but no stretch of type wall (an O-grid's JMAX is
+    // "farfield" by default) is a wall all along: the height was asked for it.
+    if (std::none_of(v.begin(), v.end(), [](double d) { return d > 0.0; })) std::fill(v.begin(), v.end(), h);
+    if (ring && v.front() > 0.0) v.back() = v.front();
+    if (!ring) {
+        for (int k : {0, n - 1})
+            if (v[static_cast<std::size_t>(k)] < 0.0)
+                v[static_cast<std::size_t>(k)] = std::hypot(g.x[side_node(g, s, k, 1)] - g.x[side_node(g, s, k)],
+                                                            g.y[side_node(g, s, k, 1)] - g.y[side_node(g, s, k)]);
+    }
+    const int span = ring ? n - 1 : n;  // an O-grid's last node is its first
+    int known = -1;
+    for (int k = 0; k < span && known < 0; ++k)
+        if (v[static_cast<std::size_t>(k)] > 0.0) known = k;
+    if (known < 0) return {};
+    if (!ring) known = 0;  // both ends are known
+    for (int step = 0; step < span; ++step) {  // from each known node to the next
+        const int a = (known + step) % span;
+        if (!(v[static_cast<std::size_t>(a)] > 0.0)) continue;
+        int b = a + 1;
+        while (!(v[static_cast<std::size_t>(b % span)] > 0.0)) ++b;
+        if (!ring && b >= span) break;
+        const double la = std::log(v[static_cast<std::size_t>(a)]), lb = std::log(v[static_cast<std::size_t>(b % span)]);
+        for (int k = a + 1; k < b; ++k)
+        {
+            // Smoothstep in the log: no kink where the blend leaves a wall
+            // stretch (log-linear, the rows bent there by Phi 1.03 at the
+            // TMR bump's plate ends, and multigrid's coarse levels folded).
+            const double u = static_cast<double>(k - a) / (b - a);
+            v[static_cast<std::size_t>(k % span)] = std::exp(la + (lb - la) * u * u * (3.0 - 2.0 * u));
+        }
+    }
+    if (ring) v.back() = v.front();
+    return v;
+}
+
+// The cells of a line of `cells` cells and length `length` off a wall at its
+// start (first > 0), at its end (last > 0) or both.
+// Between two walls: geometric from both ends at one ratio r, each cell the
+// smaller of the two series, r such that they fill the line; the log-
+// quadratic graded_cells where even r = 1 overfills it.
+std::vector<double> two_sided_cells(int cells, double first, double last, double length) {
+    auto fill = [&](double r, std::vector<double> *c) {
+        double sum = 0.0, a = first, b = last * std::pow(r, cells - 1);
+        for (int k = 0; k < cells; ++k, a *= r, b /= r) {
+            const double v = std::min(a, b);
+            sum += v;
+            if (c) c->push_back(v);
+        }
+        return sum;
+    };
+    if (!(fill(1.0, nullptr) < length)) return graded_cells(cells, first, last, length);
+    double lo = 1.0, hi = 2.0;
+    while (fill(hi, nullptr) < length && hi < 1e3) hi *= 2.0;
+    for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (fill(mid, nullptr) < length ? lo : hi) = mid;
+    }
+    std::vector<double> c;
+    const double sum = fill(hi, &c);
+    for (double &v : c) v *= length / sum;
+    return c;
+}
+
+std::vector<double> layer_cells(int cells, double first, double last, double length) {
+    if (first > 0.0 && last > 0.0) return two_sided_cells(cells, first, last, length);
+    const double h = first > 0.0 ? first : last;
+    const double r = geometric_ratio(h, length, cells);
+    std::vector<double> c(static_cast<std::size_t>(cells));
+    double cell = h, sum = 0.0;
+    for (double &v : c) {
+        v = cell;
+        sum += cell;
+        cell *= r;
+    }
+    for (double &v : c) v *= length / sum;  // the ratio's last digits
+    if (!(first > 0.0)) std::reverse(c.begin(), c.end());
+    return c;
+}
+
+// Largest ratio of consecutive cells within kGradedRows of each walled end.
+double end_growth(const std::vector<double> &c, bool from_start, bool from_end) {
+    const int n = static_cast<int>(c.size());
+    double worst = 1.0;
+    auto ratio = [&](int k) {
+        const double r = c[static_cast<std::size_t>(k + 1)] / c[static_cast<std::size_t>(k)];
+        return std::max(r, 1.0 / r);
+    };
+    for (int k = 0; k + 1 < n && k < kGradedRows; ++k) {
+        if (from_start) worst = std::max(worst, ratio(k));
+        if (from_end) worst = std::max(worst, ratio(n - 2 - k));
+    }
+    return worst;
+}
+
+// The smallest node count at which a line of this length keeps its cells
+// within kGradedGrowth (a growth falls as nodes are added).
+int nodes_needed(double first, double last, double length, int nodes) {
+    auto meets = [&](int n) {
+        try {
+            return end_growth(layer_cells(n - 1, first, last, length), first > 0.0, last > 0.0) <= kGradedGrowth;
+        } catch (const Error &) {
+            return false;
+        }
+    };
+    if (meets(nodes)) return 0;
+    int lo = nodes, hi = nodes;
+    while (!meets(hi)) {
+        lo = hi;
+        if (hi >= kMostNodes) return kMostNodes;
+        hi = std::min(2 * hi, kMostNodes);
+    }
+    while (hi - lo > 1) {
+        const int mid = lo + (hi - lo) / 2;
+        (meets(mid) ? hi : lo) = mid;
+    }
+    return hi;
+}
+
+// A side's points are kept when its first cell is within this factor of
+// the layer's there and its cells grow within kGradedGrowth: the lines
+// beside it then take its shape (blend_sides); else its nodes are moved.
+constexpr double kKeepFirst = 1.1;
+
+// One family of lines (eta lines: columns, for JMIN/JMAX walls; xi lines:
+// rows, for IMIN/IMAX), each with its points, arc lengths and target cells.
+struct Line {
+    std::vector<Vec2> points;
+    std::vector<double> arc, cells;
+    bool kept = false;  // a side whose points stay
+};
+
+std::vector<Vec2> line_points(const Grid &g, bool columns, int l) {
+    return columns ? grid_column(g, l, g.nj() - 1) : grid_row(g, l);
+}
+
+std::vector<double> actual_cells(const std::vector<double> &arc) {
+    std::vector<double> c(arc.size() - 1);
+    for (std::size_t k = 0; k + 1 < arc.size(); ++k) c[k] = arc[k + 1] - arc[k];
+    return c;
+}
+
+// Whether a side that is no wall follows the layer well enough to keep.
+bool follows(const std::vector<double> &actual, const std::vector<double> &target, bool from_start, bool from_end) {
+    auto close = [](double a, double t) { return a > 0.0 && std::fabs(std::log(a / t)) <= std::log(kKeepFirst); };
+    if (from_start && !close(actual.front(), target.front())) return false;
+    if (from_end && !close(actual.back(), target.back())) return false;
+    return end_growth(actual, from_start, from_end) <= kGradedGrowth;
+}
+
+// Cells times a shape factor (none: unchanged), scaled to the length.
+std::vector<double> shaped(std::vector<double> cells, const std::vector<double> &factor, double length) {
+    if (factor.empty()) return cells;
+    double sum = 0.0;
+    for (std::size_t k = 0; k < cells.size(); ++k) sum += cells[k] *= factor[k];
+    for (double &c : cells) c *= length / sum;
+    return cells;
+}
+
+// The lines between two kept sides take their shape: each cell times
+// exp((1-s) r_0 + s r_N), r the log of a kept side's cell over its target,
+// s = l/(lines-1) (Thomas & Middlecoff's linear interpolation across, in the
+// log of the cells so that they stay positive), then scaled to the length.
+std::vector<std::vector<double>> blend_sides(std::vector<Line> &lines) {
+    const std::size_t n = lines.size();
+    std::vector<double> r0(lines[0].cells.size(), 0.0), rn(r0);
+    auto logs = [](const Line &L, std::vector<double> &r) {
+        if (!L.kept) return;
+        const std::vector<double> a = actual_cells(L.arc);
+        for (std::size_t k = 0; k < r.size(); ++k) r[k] = std::log(a[k] / L.cells[k]);
+    };
+    logs(lines.front(), r0);
+    logs(lines.back(), rn);
+    std::vector<std::vector<double>> factor(n);
+    if (!lines.front().kept && !lines.back().kept) return factor;
+    for (std::size_t l = 1; l + 1 < n; ++l) {
+        const double t = static_cast<double>(l) / static_cast<double>(n - 1);
+        factor[l].resize(r0.size());
+        for (std::size_t k = 0; k < r0.size(); ++k) factor[l][k] = std::exp((1 - t) * r0[k] + t * rn[k]);
+        lines[l].cells = shaped(lines[l].cells, factor[l], lines[l].arc.back());
+    }
+    return factor;
+}
+
+// Re-spaces one family's lines in place: targets from the heights at their
+// ends, the sides kept or moved, the lines between blended to kept sides.
+void grade_family(Grid &g, bool columns, GradedLayer &out, std::string &moved) {
+    GradedFamily fam;
+    fam.columns = columns;
+    const bool ring = g.topology() == Topology::O;
+    const std::vector<double> &lo = out.heights[columns ? 0 : 3], &hi = out.heights[columns ? 2 : 1];
+    const int count = columns ? g.ni() : g.nj(), nodes = columns ? g.nj() : g.ni();
+    const int lines = ring ? count - 1 : count;  // a ring's last column is its first
+    const Side across[2] = {columns ? Side::IMin : Side::JMin, columns ? Side::IMax : Side::JMax};
+    std::vector<Line> all(static_cast<std::size_t>(lines));
+    for (int l = 0; l < lines; ++l) {
+        Line &L = all[static_cast<std::size_t>(l)];
+        const double a = lo.empty() ? 0.0 : lo[static_cast<std::size_t>(l)];
+        const double b = hi.empty() ? 0.0 : hi[static_cast<std::size_t>(l)];
+        L.points = line_points(g, columns, l);
+        L.arc = arc_lengths(L.points);
+        try {
+            L.cells = layer_cells(nodes - 1, a, b, L.arc.back());
+        } catch (const Error &e) {
+            fail(Failure::Argument, format("graded wall layer: the %s %d (length %.6g) cannot take first cells %.6g "
+                                           "and %.6g in %d cells: %s", columns ? "column" : "row", l, L.arc.back(),
+                                           a, b, nodes - 1, e.what()));
+        }
+        const int need = nodes_needed(a, b, L.arc.back(), nodes);
+        if (need > out.needed) {
+            out.needed = need;
+            out.needed_along = columns ? Side::JMin : Side::IMin;
+        }
+        if (ring || (l != 0 && l != lines - 1)) continue;
+        const Side side = across[l == 0 ? 0 : 1];
+        L.kept = !out.heights[static_cast<std::size_t>(side)].empty() ||  // a wall's points never move
+                 follows(actual_cells(L.arc), L.cells, a > 0.0, b > 0.0);
+        if (!L.kept) moved += format("%s%s", moved.empty() ? "" : ", ", side_name(side));
+    }
+    fam.factor = ring ? std::vector<std::vector<double>>(all.size()) : blend_sides(all);
+    fam.scale_lo.assign(all.size(), 1.0);
+    fam.scale_hi.assign(all.size(), 1.0);
+    out.families.push_back(std::move(fam));
+    for (int l = 0; l < lines; ++l) {
+        const Line &L = all[static_cast<std::size_t>(l)];
+        const double a = lo.empty() ? 0.0 : lo[static_cast<std::size_t>(l)];
+        const double b = hi.empty() ? 0.0 : hi[static_cast<std::size_t>(l)];
+        out.shape.growth = std::max(out.shape.growth, end_growth(L.kept ? actual_cells(L.arc) : L.cells, a > 0.0, b > 0.0));
+        if (L.kept) continue;
+        std::vector<double> want(static_cast<std::size_t>(nodes), 0.0);
+        for (int k = 1; k < nodes; ++k)
+            want[static_cast<std::size_t>(k)] = want[static_cast<std::size_t>(k - 1)] + L.cells[static_cast<std::size_t>(k - 1)];
+        want.back() = L.arc.back();
+        const std::vector<Vec2> p = points_along(L.points, want);
+        for (int k = 1; k < nodes - 1; ++k) set_node(g, columns ? l : k, columns ? k : l, p[static_cast<std::size_t>(k)]);
+    }
+    if (ring)
+        for (int k = 1; k < nodes - 1; ++k) set_node(g, count - 1, k, {g.x[at(g.ni(), 0, k)], g.y[at(g.ni(), 0, k)]});
+}
+
+}  // namespace
+
+GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height) {
+    const int ni = g.ni(), nj = g.nj();
+    const bool ring = g.topology() == Topology::O;
+    if (g.topology() == Topology::C)
+        fail(Failure::Unsupported, "graded wall layer: C-grids have the hybrid layer (hybrid_layer.hpp)");
+    GradedLayer out;
+    out.shape.graded = true;
+    std::array<std::vector<double>, 4> &h = out.heights;
+    for (int s = 0; s < 4; ++s)
+        if (height[static_cast<std::size_t>(s)] > 0.0 && g.has_side(static_cast<Side>(s)))
+            h[static_cast<std::size_t>(s)] = node_heights(g, static_cast<Side>(s), height[static_cast<std::size_t>(s)]);
+    std::string moved;
+    for (bool columns : {true, false})
+        if (!h[columns ? 0 : 3].empty() || !h[columns ? 2 : 1].empty()) grade_family(g, columns, out, moved);
+    out.shape.moved_sides = !moved.empty();
+    if (!moved.empty())
+        out.shape.note = format("wall layer (graded): the nodes of %s moved along the side to the wall layer's "
+                                "spacing (their first cell was more than %g times the layer's, or their cells grew "
+                                "by more than %g)", moved.c_str(), kKeepFirst, kGradedGrowth);
+    // The frozen background: each line's one-dimensional Phi, Psi.
+    out.phi.assign(g.size(), 0.0);
+    out.psi.assign(g.size(), 0.0);
+    for (int j = 1; j < nj - 1; ++j)
+        for (int i = ring ? 0 : 1; i < ni - 1; ++i) {
+            const int a = i == 0 ? ni - 2 : i - 1, b = i + 1;
+            const Vec2 c{g.x[at(ni, i, j)], g.y[at(ni, i, j)]};
+            const double back = dist({g.x[at(ni, a, j)], g.y[at(ni, a, j)]}, c),
+                         ahead = dist(c, {g.x[at(ni, b, j)], g.y[at(ni, b, j)]});
+            const double below = dist({g.x[at(ni, i, j - 1)], g.y[at(ni, i, j - 1)]}, c),
+                         above = dist(c, {g.x[at(ni, i, j + 1)], g.y[at(ni, i, j + 1)]});
+            out.phi[at(ni, i, j)] = -2.0 * (ahead - back) / (ahead + back);
+            out.psi[at(ni, i, j)] = -2.0 * (above - below) / (above + below);
+            if (ring && i == 0) {
+                out.phi[at(ni, ni - 1, j)] = out.phi[at(ni, 0, j)];
+                out.psi[at(ni, ni - 1, j)] = out.psi[at(ni, 0, j)];
+            }
+        }
+    return out;
+}
+
+std::vector<double> graded_target_cells(const GradedLayer &layer, const GradedFamily &f, int l, int cells,
+                                        double length) {
+    const std::vector<double> &lo = layer.heights[f.columns ? 0 : 3], &hi = layer.heights[f.columns ? 2 : 1];
+    const std::size_t k = static_cast<std::size_t>(l);
+    const double a = lo.empty() ? 0.0 : lo[k] * f.scale_lo[k], b = hi.empty() ? 0.0 : hi[k] * f.scale_hi[k];
+    return shaped(layer_cells(cells, a, b, length), f.factor[k], length);
+}
+
+}  // namespace eg2d

@@ -1,0 +1,78 @@
+// The graded wall layer of every wall that the hybrid layer (hybrid_layer.hpp)
+// does not take: any sides of a single block, alone, opposite or meeting at
+// a corner, and an O-grid's JMIN and JMAX together. Before the solve each
+// grid line leaving a wall is re-spaced along itself so that its cells
+// grade from the wall's first-cell height (geometrically off one wall; from
+// both heights, the log of the cell a quadratic, between two: see
+// march_schedule.hpp's graded_cells), and the controls Phi, Psi that hold
+// each line's spacing (the one-dimensional inversion of Thomas & Middlecoff
+// 1980: Psi_j = -(t_{j+1} - 2 t_j + t_{j-1}) / ((t_{j+1} - t_{j-1}) / 2) of
+// the line's arc lengths t, Phi likewise along the rows) are taken from
+// that start and frozen. The solve then smooths the grid with the spacing
+// kept; the wall control's Sorenson-type updates (controls/wall.cpp) add the
+// last correction of the height and the angle at the wall.
+//
+// A wall covers the stretches of its side whose patches are of type wall
+// (all of it by default); on the other stretches the first cell blends
+// geometrically from the wall's height to the spacing of the corner the
+// stretch reaches. A side that is no wall and meets a wall keeps its
+// points when they already follow the layer, else its nodes are moved
+// along it to the layer's spacing, and the shape's note says so.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "base/grid.hpp"
+#include "grid/wall_layer.hpp"
+
+namespace eg2d {
+
+// The layer's own figures: the largest ratio of consecutive cells within
+// kGradedRows of a wall, and the node count of a wall-normal line that
+// would keep it within kGradedGrowth (0 when it is met).
+constexpr int kGradedRows = 30;
+constexpr double kGradedGrowth = 1.2;
+
+// One family of wall-normal lines (eta lines for JMIN/JMAX walls, xi lines
+// for IMIN/IMAX), kept for the run's updates (update_graded_layer).
+struct GradedFamily {
+    bool columns = true;
+    std::vector<std::vector<double>> factor;  // per line, per cell: the shape taken from kept sides
+    std::vector<double> scale_lo, scale_hi;   // per line: first cell asked of it over the wall's height
+};
+
+struct GradedLayer {
+    WallLayerShape shape;          // note: sides re-spaced; growth: the largest ratio
+    std::vector<double> phi, psi;  // ni*nj, the frozen background; zero on the boundary
+    std::array<std::vector<double>, 4> heights;  // per wall side, each node's first cell (empty: no wall)
+    std::vector<GradedFamily> families;
+    int updates = 0;      // update_graded_layer's so far
+    bool frozen = false;  // the scales are settled: no more updates
+    int needed = 0;                // nodes a wall-normal line needs for kGradedGrowth (0: met)
+    Side needed_along = Side::JMin;  // which family: JMin for eta lines (nj), IMin for xi lines (ni)
+};
+
+// height[side] > 0 makes a side a wall (0 or less: not graded). The grid
+// must be initialised; its lines are re-spaced in place and the sides that
+// meet a wall may move along themselves. Single blocks and O-grids.
+GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height);
+
+// The cells line l of a family should have at its current length: graded
+// from its walls' heights times its scales, in the shape of kept sides.
+std::vector<double> graded_target_cells(const GradedLayer &layer, const GradedFamily &f, int l, int cells,
+                                        double length);
+
+// One update from the grid as it is (graded_layer_update.cpp). The frozen
+// Psi (Phi) holds each line's spacing as fractions of its length, and where
+// the solve bends the lines (the rings of an O-grid between an ellipse and
+// a circle pull on its radial lines) the first cells drift from the height,
+// by 2x at the pipe's wall: so each line's first cell off each wall is
+// measured along the wall's normal, its target scaled by height / measured
+// (relaxed by the exponent omega), and its Psi (Phi) recomputed from the new
+// cells at the line's length, which moves every cell of the line by a
+// smooth factor, not the first one alone. The first updates only: then the
+// scales are frozen (graded_layer_update.cpp). Returns the largest change
+// |dPsi| |r_eta| / 2 it made (the wall control's mismatch measure).
+double update_graded_layer(const Grid &g, GradedLayer &layer, double omega);
+
+}  // namespace eg2d
