@@ -792,6 +792,32 @@ EG2D_API int eg2d_get_quality(const eg2d_grid *grid, int metric, double *value);
  * EG2D_ERR_ARGUMENT for a metric without per-cell values (orthogonality). */
 EG2D_API int eg2d_get_cell_quality(const eg2d_grid *grid, int metric, double *values);
 
+/* The wall layer at a side as a flow solver sees it, measured on the grid as
+ * it is: over the side's stretches of type EG2D_PATCH_WALL (all of the side
+ * when it has none), at every node but a stretch's two ends and its corners
+ * with the nodes beside them (a trailing edge, where the wall has no
+ * tangent). Heights are normal to the wall (perpendicular to its central
+ * difference), in the boundary's length unit; the growth is the largest
+ * ratio of a cell to the one below it along the line leaving the wall, over
+ * its first 30 cells (EG2D_WALL_ROWS); the angle is the largest deviation of
+ * that line's first segment from the wall normal, in degrees.
+ * EG2D_WALL_NODES_NEEDED is what the last run's wall layer found it needs:
+ * the smallest node count across the layer (nj for a wall at JMIN or JMAX,
+ * ni at IMIN or IMAX) whose growth is within 1.2, and 0 when the layer meets
+ * it (or made no graded layer); the run's event says the same. Needs an
+ * initialised grid (EG2D_ERR_STATE); EG2D_ERR_ARGUMENT for a side the
+ * topology lacks, an unknown `what`, a NULL value, or a side with no node to
+ * measure (NODES is then 0 through no error: ask it first). */
+#define EG2D_WALL_ROWS 30
+#define EG2D_WALL_FIRST_MIN     0  /* smallest first-cell height */
+#define EG2D_WALL_FIRST_MEDIAN  1  /* median first-cell height */
+#define EG2D_WALL_FIRST_MAX     2  /* largest first-cell height */
+#define EG2D_WALL_GROWTH        3  /* largest growth off the wall (EG2D_WALL_ROWS cells) */
+#define EG2D_WALL_ANGLE         4  /* largest deviation from the wall normal, degrees */
+#define EG2D_WALL_NODES         5  /* nodes measured */
+#define EG2D_WALL_NODES_NEEDED  6  /* node count across the layer for growth 1.2; 0: met */
+EG2D_API int eg2d_get_wall_layer(const eg2d_grid *grid, int side, int what, double *value);
+
 /*=====================================================================
  * Files
  *===================================================================*/

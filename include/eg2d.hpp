@@ -422,6 +422,12 @@ public:
         check(::eg2d_get_quality(g_, metric, &v));
         return v;
     }
+    /* A figure of the wall layer at a side (EG2D_WALL_*). */
+    double get_wall_layer(int side, int what) const {
+        double v = 0;
+        check(::eg2d_get_wall_layer(g_, side, what, &v));
+        return v;
+    }
 
     /* Per-cell values, (ni-1)*(nj-1), cell (i, j) at i + (ni-1)*j. */
     std::vector<double> get_cell_quality(int metric) const {

@@ -77,6 +77,7 @@ module eg2d
     procedure :: get_run_info => grid_get_run_info
     procedure :: get_run_event => grid_get_run_event
     procedure :: get_quality => grid_get_quality
+    procedure :: get_wall_layer => grid_get_wall_layer
     procedure :: get_cell_quality => grid_get_cell_quality
     procedure :: get_controls => grid_get_controls
     procedure :: write => grid_write
@@ -596,6 +597,16 @@ contains
     value = 0
     call finish(self, eg2d_get_quality(self%handle, int(metric, c_int), value), status)
   end subroutine grid_get_quality
+
+  ! A figure of the wall layer at a side (EG2D_WALL_*): first cells, growth, angle.
+  subroutine grid_get_wall_layer(self, side, what, value, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(in) :: side, what
+    real(c_double), intent(out) :: value
+    integer, intent(out), optional :: status
+    value = 0
+    call finish(self, eg2d_get_wall_layer(self%handle, int(side, c_int), int(what, c_int), value), status)
+  end subroutine grid_get_wall_layer
 
   ! The per-cell values of a quality metric into values(ni-1, nj-1).
   subroutine grid_get_cell_quality(self, metric, values, status)

@@ -4,6 +4,7 @@
 
 #include "api/handle.hpp"
 #include "quality/quality.hpp"
+#include "quality/wall_layer_stats.hpp"
 
 using namespace eg2d;
 using namespace eg2d::api;
@@ -96,6 +97,33 @@ EG2D_API int eg2d_get_cell_quality(const eg2d_grid *grid, int metric, double *va
         std::vector<double> v(static_cast<std::size_t>(g.ni() - 1) * static_cast<std::size_t>(g.nj() - 1));
         m->cells(g, v.data());
         std::copy(v.begin(), v.end(), values);
+    });
+}
+
+EG2D_API int eg2d_get_wall_layer(const eg2d_grid *grid, int side, int what, double *value) {
+    return guard(grid, "eg2d_get_wall_layer", [&] {
+        require_ptr(value, "value");
+        require(side >= 0 && side < 4, format("side = %d: not an EG2D_SIDE_* (0-3)", side));
+        const Grid &g = grid->gen.grid();
+        const Side s = static_cast<Side>(side);
+        require(g.has_side(s), format("side %s: the topology has no such side", side_name(s)));
+        require(what >= EG2D_WALL_FIRST_MIN && what <= EG2D_WALL_NODES_NEEDED,
+                format("what = %d: not an EG2D_WALL_* (0-6)", what));
+        grid->gen.require_initialized("wall layer");
+        const WallLayerShape &layer = grid->gen.layer();
+        if (what == EG2D_WALL_NODES_NEEDED) {
+            *value = (s == Side::JMin || s == Side::JMax) ? layer.needed_nj : layer.needed_ni;
+            return;
+        }
+        const WallLayerFigures f = wall_layer_figures(g, s, EG2D_WALL_ROWS);
+        if (what == EG2D_WALL_NODES) {
+            *value = f.nodes;
+            return;
+        }
+        require(f.nodes > 0, format("side %s: no wall node to measure (a stretch's ends and corners are left out)",
+                                    side_name(s)));
+        const double figures[] = {f.first_min, f.first_median, f.first_max, f.growth, f.angle};
+        *value = figures[what];
     });
 }
 

@@ -502,9 +502,10 @@ private:
         std::string s = format("wall layer (graded): the lines leaving the walls re-spaced from their first cells, "
                                "largest growth %.4g within %d cells of a wall; the solve keeps their spacing",
                                graded_.shape.growth, kGradedRows);
-        if (graded_.needed > 0)
-            s += format("; the growth exceeds %g: %s >= %d would meet it", kGradedGrowth,
-                        graded_.needed_along == Side::JMin ? "nj" : "ni", graded_.needed);
+        if (graded_.shape.needed_nj > 0)
+            s += format("; the growth exceeds %g: nj >= %d would meet it", kGradedGrowth, graded_.shape.needed_nj);
+        if (graded_.shape.needed_ni > 0)
+            s += format("; the growth exceeds %g: ni >= %d would meet it", kGradedGrowth, graded_.shape.needed_ni);
         (void)g;
         return s;
     }

@@ -106,6 +106,8 @@ public:
     int iterations() const { return iterations_; }
     // What the last eg2d_iterate/eg2d_solve ran (solvers/run_report.hpp).
     const RunReport &report() const { return report_; }
+    // The wall layer the last shape made (none: rows 0, no note).
+    const WallLayerShape &layer() const { return layer_; }
 
     // Throws State unless the boundary is complete and the grid initialised.
     void require_initialized(const char *what) const;

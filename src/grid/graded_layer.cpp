@@ -238,10 +238,8 @@ void grade_family(Grid &g, bool columns, GradedLayer &out, std::string &moved) {
                                            a, b, nodes - 1, e.what()));
         }
         const int need = nodes_needed(a, b, L.arc.back(), nodes);
-        if (need > out.needed) {
-            out.needed = need;
-            out.needed_along = columns ? Side::JMin : Side::IMin;
-        }
+        int &needed = columns ? out.shape.needed_nj : out.shape.needed_ni;
+        needed = std::max(needed, need);
         if (ring || (l != 0 && l != lines - 1)) continue;
         const Side side = across[l == 0 ? 0 : 1];
         L.kept = !out.heights[static_cast<std::size_t>(side)].empty() ||  // a wall's points never move

@@ -48,8 +48,6 @@ struct GradedLayer {
     std::vector<GradedFamily> families;
     int updates = 0;      // update_graded_layer's so far
     bool frozen = false;  // the scales are settled: no more updates
-    int needed = 0;                // nodes a wall-normal line needs for kGradedGrowth (0: met)
-    Side needed_along = Side::JMin;  // which family: JMin for eta lines (nj), IMin for xi lines (ni)
 };
 
 // height[side] > 0 makes a side a wall (0 or less: not graded). The grid

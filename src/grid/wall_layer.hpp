@@ -21,7 +21,11 @@ struct WallLayerShape {
     double growth = 0;  // the growth used (larger than asked where a corner needs it)
     bool hybrid = false;  // rows of the hyperbolic march (hybrid_layer.hpp)
     bool graded = false;
-    bool moved_sides = false;  // nodes of the user's sides moved: put back before the next shape  // lines re-spaced, nothing held (graded_layer.hpp): the start is kept
+    bool moved_sides = false;
+    // The node counts across the layer (nj for walls at JMIN, JMAX; ni for
+    // IMIN, IMAX) that would keep its growth within 1.2 (graded_layer.hpp);
+    // 0 where it is met or not known.
+    int needed_nj = 0, needed_ni = 0;  // nodes of the user's sides moved: put back before the next shape  // lines re-spaced, nothing held (graded_layer.hpp): the start is kept
     std::string note;     // why no layer was made, when one was asked for
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/patches.hpp"
 #include "base/polyline.hpp"
 
 namespace eg2d {
@@ -40,6 +41,33 @@ std::vector<WallNodeStats> wall_stretch_stats(const Grid &g, Side s, int first, 
         out.push_back(w);
     }
     return out;
+}
+
+WallLayerFigures wall_layer_figures(const Grid &g, Side s, int rows) {
+    std::vector<WallNodeStats> all;
+    bool walls = false;
+    for (const Patch &p : resolve_patches(g))
+        if (p.side == s && p.type == PatchType::Wall) {
+            walls = true;
+            const std::vector<WallNodeStats> v = wall_stretch_stats(g, s, p.first, p.last, rows);
+            all.insert(all.end(), v.begin(), v.end());
+        }
+    if (!walls) all = wall_stretch_stats(g, s, 0, g.side_length(s) - 1, rows);
+    WallLayerFigures f;
+    f.nodes = static_cast<int>(all.size());
+    if (all.empty()) return f;
+    std::vector<double> h;
+    for (const WallNodeStats &w : all) {
+        h.push_back(w.height);
+        f.growth = std::max(f.growth, w.growth);
+        f.angle = std::max(f.angle, w.angle);
+    }
+    std::sort(h.begin(), h.end());
+    f.first_min = h.front();
+    f.first_max = h.back();
+    const std::size_t m = h.size() / 2;
+    f.first_median = h.size() % 2 ? h[m] : 0.5 * (h[m - 1] + h[m]);
+    return f;
 }
 
 }  // namespace eg2d

@@ -19,4 +19,12 @@ struct WallNodeStats {
 // The measured nodes of nodes first..last of side s, in order.
 std::vector<WallNodeStats> wall_stretch_stats(const Grid &g, Side s, int first, int last, int rows);
 
+// One side's figures over its wall stretches (all of it when it has none),
+// `rows` cells deep (eg2d_get_wall_layer). nodes 0: nothing measured.
+struct WallLayerFigures {
+    int nodes = 0;
+    double first_min = 0, first_median = 0, first_max = 0, growth = 0, angle = 0;
+};
+WallLayerFigures wall_layer_figures(const Grid &g, Side s, int rows);
+
 }  // namespace eg2d

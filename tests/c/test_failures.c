@@ -210,6 +210,9 @@ static int r_iterate_early(eg2d_grid *g) { return eg2d_iterate(g, 1, NULL); }
 static int r_coords_early(eg2d_grid *g) { double x[N * N], y[N * N]; return eg2d_get_coordinates(g, x, y); }
 static int r_coords_null(eg2d_grid *g) { return eg2d_get_coordinates(g, NULL, NULL); }
 static int r_quality_999(eg2d_grid *g) { double v; return eg2d_get_quality(g, 999, &v); }
+static int r_wall_what(eg2d_grid *g) { double v; return eg2d_get_wall_layer(g, EG2D_SIDE_JMIN, 7, &v); }
+static int r_wall_side(eg2d_grid *g) { double v; return eg2d_get_wall_layer(g, 4, EG2D_WALL_GROWTH, &v); }
+static int r_wall_early(eg2d_grid *g) { double v; return eg2d_get_wall_layer(g, EG2D_SIDE_JMIN, EG2D_WALL_GROWTH, &v); }
 static int r_not_converged(eg2d_grid *g) {
     eg2d_set_solver(g, EG2D_SOLVER_PSOR); /* the rows name their solver: the default may change */
     eg2d_set_max_iterations(g, 1);
@@ -579,6 +582,13 @@ static const bad_input rows[] = {
      "eg2d_get_coordinates: x and y are both NULL", 0},
     {"unknown quality metric", "eg2d_get_quality(g, 999, &v)", S_INIT, r_quality_999, EG2D_ERR_ARGUMENT,
      "eg2d_get_quality: metric = 999: no such quality metric", 0},
+    {"unknown wall-layer figure", "eg2d_get_wall_layer(g, EG2D_SIDE_JMIN, 7, &v)", S_INIT, r_wall_what,
+     EG2D_ERR_ARGUMENT, "eg2d_get_wall_layer: what = 7: not an EG2D_WALL_* (0-6)", 0},
+    {"wall layer of side 4", "eg2d_get_wall_layer(g, 4, EG2D_WALL_GROWTH, &v)", S_INIT, r_wall_side,
+     EG2D_ERR_ARGUMENT, "eg2d_get_wall_layer: side = 4: not an EG2D_SIDE_* (0-3)", 0},
+    {"wall layer before the interior", "eg2d_get_wall_layer(g, EG2D_SIDE_JMIN, EG2D_WALL_GROWTH, &v)", S_SQUARE,
+     r_wall_early, EG2D_ERR_STATE, "eg2d_get_wall_layer: wall layer: the grid has a boundary but no interior yet: "
+     "call eg2d_initialize, eg2d_iterate or eg2d_solve first", 0},
     {"control functions before the interior", "eg2d_get_controls(g, P, Q)", S_SQUARE, r_controls_early,
      EG2D_ERR_STATE, "eg2d_get_controls: controls: the grid has a boundary but no interior yet: call "
      "eg2d_initialize, eg2d_iterate or eg2d_solve first", 0},

@@ -74,6 +74,7 @@ PROTOTYPES = {
     # Quality
     "eg2d_get_quality": (c_int, [grid_p, c_int, double_p]),
     "eg2d_get_cell_quality": (c_int, [grid_p, c_int, double_p]),
+    "eg2d_get_wall_layer": (c_int, [grid_p, c_int, c_int, double_p]),
     # Files
     "eg2d_write": (c_int, [grid_p, c_char_p, c_int]),
     "eg2d_read_plot3d": (c_int, [c_char_p, c_int, int_p, int_p, int_p, int_p, double_p, double_p]),

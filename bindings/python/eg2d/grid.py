@@ -294,6 +294,12 @@ class Grid(Handle):
         self._check(lib.eg2d_get_quality(self._handle(), int(metric), byref(v)))
         return v.value
 
+    def get_wall_layer(self, side, what):
+        """A figure of the wall layer at a side (WALL_*: first cells, growth, angle, nodes)."""
+        v = c_double()
+        self._check(lib.eg2d_get_wall_layer(self._handle(), int(side), int(what), byref(v)))
+        return v.value
+
     def get_cell_quality(self, metric):
         """Per-cell values of a metric: numpy (ni-1, nj-1), Fortran order."""
         ni, nj = self.get_size()
