@@ -96,7 +96,11 @@ std::vector<double> two_sided_cells(int cells, double first, double last, double
 std::vector<double> layer_cells(int cells, double first, double last, double length) {
     if (first > 0.0 && last > 0.0) return two_sided_cells(cells, first, last, length);
     const double h = first > 0.0 ? first : last;
-    const double r = geometric_ratio(h, length, cells);
+    // Growing cells at whatever ratio reaches the length, so that the first
+    // cell is the one asked even where the growth then exceeds
+    // kGradedGrowth (the run says so: `needed`); shrinking ones (a first
+    // cell above the uniform one) down to geometric_ratio's 0.5.
+    const double r = h * cells < length ? covering_ratio(cells, h, length) : geometric_ratio(h, length, cells);
     std::vector<double> c(static_cast<std::size_t>(cells));
     double cell = h, sum = 0.0;
     for (double &v : c) {

@@ -217,52 +217,46 @@ static void test_cavity_corners(void **state) {
  * do, through the event and EG2D_WALL_NODES_NEEDED. A channel 1 high, 17
  * rows, first cell 1e-6 (the graded start is the solution: no iteration). */
 
-static void test_short_layer_says_so(void **state) {
-    (void)state;
-    enum { NI = 33, NJ = 17 };
-    double a[NI], b[NI];
+/* A straight channel 4 long and 1 high, uniform points, first cell h at JMIN. */
+static eg2d_grid *channel(int ni, int nj, double h) {
+    double *a = malloc(sizeof(double) * (size_t)(ni > nj ? ni : nj)), *b = malloc(sizeof(double) * (size_t)(ni > nj ? ni : nj));
     eg2d_grid *g;
-    eg2d_create(NI, NJ, &g);
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
     for (int side = 0; side < 4; ++side) {
-        const int n = side == 0 || side == 2 ? NI : NJ;
+        const int along = side == EG2D_SIDE_JMIN || side == EG2D_SIDE_JMAX, n = along ? ni : nj;
         for (int k = 0; k < n; ++k) {
             const double u = (double)k / (n - 1);
-            a[k] = side == 0 || side == 2 ? 4 * u : side == 1 ? 4 : 0;
-            b[k] = side == 0 || side == 2 ? (side == 2 ? 1 : 0) : u;
+            a[k] = along ? 4 * u : side == EG2D_SIDE_IMAX ? 4 : 0;
+            b[k] = along ? (side == EG2D_SIDE_JMAX ? 1 : 0) : u;
         }
         eg2d_set_side(g, side, a, b);
     }
-    eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 1e-6);
+    eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h);
+    free(a);
+    free(b);
+    return g;
+}
+
+static void test_short_layer_says_so(void **state) {
+    (void)state;
+    eg2d_grid *g = channel(33, 17, 1e-6);
     solve_ok(g);
     const double needed = wall(g, EG2D_SIDE_JMIN, EG2D_WALL_NODES_NEEDED);
-    assert_true(needed > NJ);
+    assert_true(needed > 17);
     assert_true(wall(g, EG2D_SIDE_JMIN, EG2D_WALL_GROWTH) > 1.2);
+    /* The first cell is the one asked, all the same. */
+    assert_true(fabs(wall(g, EG2D_SIDE_JMIN, EG2D_WALL_FIRST_MEDIAN) / 1e-6 - 1) < 1e-6);
     char msg[1024] = "", want[64];
     int it;
     eg2d_get_run_event(g, 0, &it, msg, sizeof msg);
     snprintf(want, sizeof want, "nj >= %d would meet it", (int)needed);
     if (!strstr(msg, want)) fail_msg("event: %s (wanted \"%s\")", msg, want);
+    eg2d_destroy(g);
     /* With that many rows the growth is met. */
-    eg2d_grid *h;
-    const int nj = (int)needed;
-    double *c = malloc(sizeof(double) * (size_t)nj), *d = malloc(sizeof(double) * (size_t)nj);
-    eg2d_create(NI, nj, &h);
-    for (int side = 0; side < 4; ++side) {
-        const int n = side == 0 || side == 2 ? NI : nj;
-        for (int k = 0; k < n; ++k) {
-            const double u = (double)k / (n - 1);
-            c[k] = side == 0 || side == 2 ? 4 * u : side == 1 ? 4 : 0;
-            d[k] = side == 0 || side == 2 ? (side == 2 ? 1 : 0) : u;
-        }
-        eg2d_set_side(h, side, c, d);
-    }
-    eg2d_set_wall_spacing(h, EG2D_SIDE_JMIN, 1e-6);
-    solve_ok(h);
-    assert_true(wall(h, EG2D_SIDE_JMIN, EG2D_WALL_NODES_NEEDED) == 0);
-    assert_layer(h, EG2D_SIDE_JMIN, 1e-6, 1.2);
-    free(c);
-    free(d);
-    eg2d_destroy(h);
+    g = channel(33, (int)needed, 1e-6);
+    solve_ok(g);
+    assert_true(wall(g, EG2D_SIDE_JMIN, EG2D_WALL_NODES_NEEDED) == 0);
+    assert_layer(g, EG2D_SIDE_JMIN, 1e-6, 1.2);
     eg2d_destroy(g);
 }
 

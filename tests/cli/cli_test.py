@@ -523,8 +523,33 @@ class Controls(unittest.TestCase):
                     ("point", '[[controls.point_source]]\nxi = 8\neta = 8\namplitude = 10\ndecay = 0.3\n'),
                     ("weight", '[controls]\nweight = "1 + 4*exp(-((i - 8)^2 + (j - 8)^2)/8)"\n'),
                     ("grid", '[controls.parameter_grid]\ni = { kind = "line", a = 0.5 }\n'),
-                    ("wall", '[controls]\northogonality = "wall"\nwall_spacing = { bottom = 0.01 }\n')]:
+                    ("wall", '[controls]\northogonality = "wall"\nwall_spacing = { bottom = 0.01 }\nwall_growth_limit = 10\n')]:
                 self.assertNotEqual(self.summary(plain[:a] + extra + plain[a:], d, name), base, name)
+
+    def test_short_wall_layer_exits_4(self):
+        """A wall layer too short for its first cell: the command says so with the nj that would do, and
+        exits 4 with the files written; with that nj it exits 0 and prints the layer's figures."""
+        case = ('title = "channel"\nsize = [%d, %d]\n[controls]\northogonality = "wall"\n'
+                'wall_spacing = { bottom = 1e-6 }\n[output]\nformats = ["report"]\n' + ErrorMessages.GOOD_SIDES)
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "short.toml")
+            with open(path, "w") as f:
+                f.write(case % (9, 17))
+            code, out, err = run("run", path, "-o", d, "--quiet")
+            self.assertEqual(code, 4, out + err)
+            m = re.search(r"the wall layer at bottom grows by (\S+) within 30 cells, more than 1.2: nj >= (\d+) would "
+                          r"meet it \(the files are written\)", err)
+            self.assertIsNotNone(m, err)
+            self.assertTrue(os.path.exists(os.path.join(d, "short.report.txt")))
+            with open(path, "w") as f:
+                f.write(case % (9, int(m.group(2))))
+            code, out, err = run("run", path, "-o", d, "--quiet")
+            self.assertEqual(code, 0, out + err)
+            m = re.search(r"wall layer bottom: first cell (\S+) \(median; \S+ to \S+, asked 1.0000e-06\), growth (\S+)",
+                          out)
+            self.assertIsNotNone(m, out)
+            self.assertAlmostEqual(float(m.group(1)), 1e-6, delta=1e-9)
+            self.assertLessEqual(float(m.group(2)), 1.2)
 
     def test_bad_control_values(self):
         if not features()["controls"].get("source_arrays"):

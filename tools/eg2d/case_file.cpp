@@ -19,8 +19,8 @@ namespace {
 
 const std::vector<std::string> top_keys = {"title", "size", "topology", "system", "initial", "solve",
                                            "constants", "solver", "sides", "controls", "output", "patches", "interior_lines"};
-const std::vector<std::string> controls_keys = {"orthogonality", "wall_spacing",  "line_source", "point_source",
-                                                "source_arrays", "parameter_grid", "weight"};
+const std::vector<std::string> controls_keys = {"orthogonality", "wall_spacing",  "wall_growth_limit", "line_source",
+                                                "point_source", "source_arrays", "parameter_grid", "weight"};
 
 // A name of `table`, or EXIT_CASE (unknown) / EXIT_UNSUPPORTED (not in this build).
 const Feature &pick(const std::vector<Feature> &table, const std::string &name, const Location &at) {
@@ -118,6 +118,11 @@ void read_wall_spacing(const Fields &f, Case &c) {
         }
         if (h < 0) throw Failure(EXIT_CASE, w.at(s.first).str() + ": must be >= 0 (0 = orthogonality only)");
         c.wall_spacings.push_back({s.second, h, w.at(s.first)});
+    }
+    if (f.has("wall_growth_limit")) {
+        c.wall_growth_limit = f.number("wall_growth_limit", c.constants);
+        if (!(c.wall_growth_limit >= 1))
+            throw Failure(EXIT_CASE, f.at("wall_growth_limit").str() + ": must be >= 1");
     }
 }
 

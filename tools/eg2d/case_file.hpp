@@ -79,6 +79,7 @@ struct Case {
     int orthogonality = -1;  // -1: not set
     Location orthogonality_at;
     std::vector<WallSpacing> wall_spacings;
+    double wall_growth_limit = 1.2;  // a larger wall-layer growth exits EXIT_GEOMETRY (wall_summary.hpp)
     std::vector<LineSource> line_sources;
     std::vector<PointSource> point_sources;
     std::string source_p, source_q;  // formulas in i, j, ni, nj ("" = none)

@@ -1,4 +1,5 @@
 #include "runner.hpp"
+#include "wall_summary.hpp"
 
 #include <eg2d.h>
 
@@ -423,8 +424,9 @@ int run_case(const Case &c, const RunOptions &o) {
     print_quality(g, c.topology);
     if (status != EG2D_OK)
         throw Failure(exit_code_for_status(status), c.file + ": " + eg2d_last_error(g) + " (no files written)");
+    const bool short_layer = print_wall_layers(g, c);
     write_outputs(g, c, o, tool_texts(g, c, monitor.rows, tolerance));
-    return EXIT_OK;
+    return short_layer ? EXIT_GEOMETRY : EXIT_OK;
 }
 
 }  // namespace eg2dtool
