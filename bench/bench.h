@@ -53,6 +53,10 @@ void bench_march(void);
  * side by side (--wall, wall.c). */
 void bench_walls(void);
 
+/* Wall-resolved grids of internal flows: no control, the control alone and
+ * the default graded layer side by side (--internal, internal.c). */
+void bench_internal(void);
+
 /* The variational system against Winslow on the course notes' domains
  * (--variational, variational.c): the domains, sizes and grids (rows) in
  * comma-separated lists (NULL: all), runs capped at `cap` CPU seconds. */

@@ -14,6 +14,7 @@
  *              1025 against the nearest 2^k+1 size (sweep.c)
  *   eg2d_bench --march       the hyperbolic march: NACA 0012 O-grid 257x129 to 100 chords
  *   eg2d_bench --wall        wall-resolved NACA 0012 O-grids: wall control, hybrid layer, march
+ *   eg2d_bench --internal    wall-resolved internal flows (TMR flat plate, bump, bend, diffuser, pipe, cavity)
  *   eg2d_bench --variational [--cases LIST] [--sizes LIST] [--grids LIST] [--cap S]
  *                            EG2D_SYSTEM_VARIATIONAL (V = aA + bS + cO + dW) against Winslow on
  *                            the course notes' domains at 65, 129, 257 (variational.c)
@@ -281,7 +282,7 @@ static void usage(void) {
     fprintf(stderr, "usage: eg2d_bench [--cases LIST] [--sizes LIST] [--solvers LIST (name or name:omega)]\n"
                     "                  [--system winslow|laplace] [--tolerance T] [--cap CPU-SECONDS]\n"
                     "                  [--repeats N] [--json FILE]\n"
-                    "                  [--compare | --seed004 | --march | --wall | --variational]\n"
+                    "                  [--compare | --seed004 | --march | --wall | --internal | --variational]\n"
                     "       eg2d_bench --sweep [--repeats N (3)] [--svg FILE]\n"
                     "       eg2d_bench --quick [--repeats N] [--json FILE]   (a subset in about a minute)\n");
 }
@@ -316,6 +317,10 @@ int main(int argc, char **argv) {
         }
         if (!strcmp(opt, "--march")) {
             bench_march();
+            return 0;
+        }
+        if (!strcmp(opt, "--internal")) {
+            bench_internal();
             return 0;
         }
         if (!strcmp(opt, "--wall")) {

@@ -17,8 +17,7 @@
 #include <cmocka.h>
 
 #include "eg2d.h"
-
-#define TMR EG2D_TEST_DATA "/tmr/"
+#include "internal.h"
 
 static void solve_ok(eg2d_grid *g) {
     eg2d_set_orthogonality(g, EG2D_ORTHO_WALL);
@@ -47,15 +46,16 @@ static void assert_layer(const eg2d_grid *g, int side, double h, double growth) 
     assert_true(wall(g, side, EG2D_WALL_NODES) > 0);
 }
 
-static eg2d_grid *tmr_grid(const char *name, int ni, int nj) {
-    static const char *const side[4] = {"jmin", "imax", "jmax", "imin"};
+static eg2d_grid *made(int ni, int nj, int topology) {
     eg2d_grid *g;
     assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
-    for (int s = 0; s < 4; ++s) {
-        char path[512];
-        snprintf(path, sizeof path, TMR "%s_%s.dat", name, side[s]);
-        if (eg2d_set_side_from_file(g, s, path) != EG2D_OK) fail_msg("%s", eg2d_last_error(NULL));
-    }
+    if (topology != EG2D_TOPO_SINGLE) assert_int_equal(eg2d_set_topology(g, topology), EG2D_OK);
+    return g;
+}
+
+static eg2d_grid *tmr_grid(const char *name, int ni, int nj) {
+    eg2d_grid *g = made(ni, nj, EG2D_TOPO_SINGLE);
+    if (domain_set_tmr(g, EG2D_TEST_DATA, name, 1) != EG2D_OK) fail_msg("%s", eg2d_last_error(g));
     return g;
 }
 
@@ -72,8 +72,6 @@ static int monitor(void *user, int iteration, double residual) {
 static void test_flat_plate(void **state) {
     (void)state;
     eg2d_grid *g = tmr_grid("flatplate_137x97", 137, 97);
-    eg2d_set_patch(g, EG2D_SIDE_JMIN, 0, 24, EG2D_PATCH_SYMMETRY, "symmetry");
-    eg2d_set_patch(g, EG2D_SIDE_JMIN, 24, 136, EG2D_PATCH_WALL, "plate");
     eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 2e-6);
     solve_ok(g);
     assert_layer(g, EG2D_SIDE_JMIN, 2e-6, 1.13);
@@ -94,9 +92,6 @@ static void test_flat_plate(void **state) {
 static void test_bump_in_channel(void **state) {
     (void)state;
     eg2d_grid *g = tmr_grid("bump_177x81", 177, 81);
-    eg2d_set_patch(g, EG2D_SIDE_JMIN, 0, 48, EG2D_PATCH_SYMMETRY, "upstream");
-    eg2d_set_patch(g, EG2D_SIDE_JMIN, 48, 128, EG2D_PATCH_WALL, "bump");
-    eg2d_set_patch(g, EG2D_SIDE_JMIN, 128, 176, EG2D_PATCH_SYMMETRY, "downstream");
     eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 4e-6);
     eg2d_set_monitor(g, monitor, g);
     solve_ok(g);
@@ -111,46 +106,19 @@ static void test_bump_in_channel(void **state) {
  * (With 65 rows the first 30 cells off each wall reach the middle, where
  * the frozen one-dimensional Psi does not hold the spacing of a curved
  * channel: growth 1.36 in the bend, 1.63 in the pipe.) */
-static void bend_point(double u, double r, double *x, double *y) {
-    const double arc = 1.5 * M_PI / 2, s = u * (4 + arc);
-    if (s < 2) {
-        *x = s - 2;
-        *y = r;
-    } else if (s < 2 + arc) {
-        const double t = M_PI / 2 - (s - 2) / 1.5;
-        *x = r * cos(t);
-        *y = r * sin(t);
-    } else {
-        *x = r;
-        *y = -(s - 2 - arc);
-    }
-}
-
-static void test_bend_two_walls(void **state) {
-    (void)state;
-    enum { NI = 129, NJ = 129 };
-    double x[NI], y[NI], a[NJ], b[NJ];
-    eg2d_grid *g;
-    eg2d_create(NI, NJ, &g);
-    for (int i = 0; i < NI; ++i) bend_point((double)i / (NI - 1), 1, &x[i], &y[i]);
-    eg2d_set_side(g, EG2D_SIDE_JMIN, x, y);
-    for (int i = 0; i < NI; ++i) bend_point((double)i / (NI - 1), 2, &x[i], &y[i]);
-    eg2d_set_side(g, EG2D_SIDE_JMAX, x, y);
-    for (int j = 0; j < NJ; ++j) { /* the inlet and outlet as a user gives them: uniform */
-        a[j] = -2;
-        b[j] = 1 + (double)j / (NJ - 1);
-    }
-    eg2d_set_side(g, EG2D_SIDE_IMIN, a, b);
-    for (int j = 0; j < NJ; ++j) {
-        a[j] = 1 + (double)j / (NJ - 1);
-        b[j] = -2;
-    }
-    eg2d_set_side(g, EG2D_SIDE_IMAX, a, b);
+static void two_walls(eg2d_grid *g) {
     eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 1e-4);
     eg2d_set_wall_spacing(g, EG2D_SIDE_JMAX, 1e-4);
     solve_ok(g);
     assert_layer(g, EG2D_SIDE_JMIN, 1e-4, 1.2);
     assert_layer(g, EG2D_SIDE_JMAX, 1e-4, 1.2);
+}
+
+static void test_bend_two_walls(void **state) {
+    (void)state;
+    eg2d_grid *g = made(129, 129, EG2D_TOPO_SINGLE);
+    assert_int_equal(domain_set_bend(g), EG2D_OK);
+    two_walls(g);
     /* The uniform inlet and outlet were moved along themselves, and said so. */
     char msg[1024] = "";
     int it;
@@ -160,30 +128,25 @@ static void test_bend_two_walls(void **state) {
     eg2d_destroy(g);
 }
 
+/* With its inlet and outlet clustered at the walls as a user would, its TFI
+ * start is folded: the layer is made on the Winslow grid, and the run says so. */
+static void test_s_diffuser(void **state) {
+    (void)state;
+    eg2d_grid *g = made(257, 129, EG2D_TOPO_SINGLE);
+    assert_int_equal(domain_set_diffuser(g, 1e-4), EG2D_OK);
+    two_walls(g);
+    char msg[1024] = "";
+    int it;
+    assert_int_equal(eg2d_get_run_event(g, 0, &it, msg, sizeof msg), EG2D_OK);
+    if (!strstr(msg, "the layer is made on the Winslow grid without controls instead")) fail_msg("event: %s", msg);
+    eg2d_destroy(g);
+}
+
 static void test_body_in_pipe(void **state) {
     (void)state;
-    enum { NI = 129, NJ = 129 };
-    double x[NI], y[NI];
-    eg2d_grid *g;
-    eg2d_create(NI, NJ, &g);
-    eg2d_set_topology(g, EG2D_TOPO_O);
-    for (int i = 0; i < NI; ++i) {
-        const double t = -2 * M_PI * i / (NI - 1);
-        x[i] = i == NI - 1 ? 0.5 : 0.5 * cos(t);
-        y[i] = i == NI - 1 ? 0.0 : 0.3 * sin(t);
-    }
-    eg2d_set_side(g, EG2D_SIDE_JMIN, x, y);
-    for (int i = 0; i < NI; ++i) {
-        const double t = -2 * M_PI * i / (NI - 1);
-        x[i] = i == NI - 1 ? 2.0 : 2 * cos(t);
-        y[i] = i == NI - 1 ? 0.0 : 2 * sin(t);
-    }
-    eg2d_set_side(g, EG2D_SIDE_JMAX, x, y);
-    eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 1e-4);
-    eg2d_set_wall_spacing(g, EG2D_SIDE_JMAX, 1e-4);
-    solve_ok(g);
-    assert_layer(g, EG2D_SIDE_JMIN, 1e-4, 1.2);
-    assert_layer(g, EG2D_SIDE_JMAX, 1e-4, 1.2);
+    eg2d_grid *g = made(129, 129, EG2D_TOPO_O);
+    assert_int_equal(domain_set_pipe(g), EG2D_OK);
+    two_walls(g);
     eg2d_destroy(g);
 }
 
@@ -193,47 +156,18 @@ static void test_body_in_pipe(void **state) {
  * Vinokur's cells themselves grow by 1.28.) */
 static void test_cavity_corners(void **state) {
     (void)state;
-    enum { N = 129 };
-    double s[N], x[N], y[N];
-    eg2d_grid *g;
-    eg2d_create(N, N, &g);
-    assert_int_equal(eg2d_distribution(EG2D_DIST_VINOKUR, N, 1e-4, 1e-4, s), EG2D_OK);
-    for (int side = 0; side < 4; ++side) {
-        for (int k = 0; k < N; ++k) {
-            const int along = side == 0 || side == 2;
-            const double fixed = side == 1 || side == 2 ? 1.0 : 0.0;
-            x[k] = along ? s[k] : fixed;
-            y[k] = along ? fixed : s[k];
-        }
-        eg2d_set_side(g, side, x, y);
-        eg2d_set_wall_spacing(g, side, 1e-4);
-    }
+    eg2d_grid *g = made(129, 129, EG2D_TOPO_SINGLE);
+    assert_int_equal(domain_set_cavity(g, 1e-4), EG2D_OK);
+    for (int side = 0; side < 4; ++side) eg2d_set_wall_spacing(g, side, 1e-4);
     solve_ok(g);
     for (int side = 0; side < 4; ++side) assert_layer(g, side, 1e-4, 1.2);
     eg2d_destroy(g);
 }
 
-/* Too few rows for the first cell: the run says so, with the nj that would
- * do, through the event and EG2D_WALL_NODES_NEEDED. A channel 1 high, 17
- * rows, first cell 1e-6 (the graded start is the solution: no iteration). */
-
-/* A straight channel 4 long and 1 high, uniform points, first cell h at JMIN. */
 static eg2d_grid *channel(int ni, int nj, double h) {
-    double *a = malloc(sizeof(double) * (size_t)(ni > nj ? ni : nj)), *b = malloc(sizeof(double) * (size_t)(ni > nj ? ni : nj));
-    eg2d_grid *g;
-    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
-    for (int side = 0; side < 4; ++side) {
-        const int along = side == EG2D_SIDE_JMIN || side == EG2D_SIDE_JMAX, n = along ? ni : nj;
-        for (int k = 0; k < n; ++k) {
-            const double u = (double)k / (n - 1);
-            a[k] = along ? 4 * u : side == EG2D_SIDE_IMAX ? 4 : 0;
-            b[k] = along ? (side == EG2D_SIDE_JMAX ? 1 : 0) : u;
-        }
-        eg2d_set_side(g, side, a, b);
-    }
+    eg2d_grid *g = made(ni, nj, EG2D_TOPO_SINGLE);
+    assert_int_equal(domain_set_channel(g), EG2D_OK);
     eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h);
-    free(a);
-    free(b);
     return g;
 }
 
@@ -263,7 +197,8 @@ static void test_short_layer_says_so(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_flat_plate),     cmocka_unit_test(test_bump_in_channel),
-        cmocka_unit_test(test_bend_two_walls), cmocka_unit_test(test_body_in_pipe),
+        cmocka_unit_test(test_bend_two_walls), cmocka_unit_test(test_s_diffuser),
+        cmocka_unit_test(test_body_in_pipe),
         cmocka_unit_test(test_cavity_corners), cmocka_unit_test(test_short_layer_says_so),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
