@@ -447,16 +447,19 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
 #define EG2D_PARAM_WALL_GROWTH      202  /* [1, 1.5], default 1.15: cell-to-cell growth of the
                                             marched wall layer (EG2D_PARAM_WALL_LAYER) */
 #define EG2D_PARAM_WALL_LAYER       203  /* 0, 1, 2 or 3 (default): the layer EG2D_ORTHO_WALL
-                                            makes where the only wall is JMIN with a height.
+                                            makes at walls with a height.
                                             0: the Sorenson-type control alone; 1: C-grids
                                             and O-grids round bodies without sharp corners
-                                            march a layer along the normals and hold it;
-                                            2: O- and C-grids get the hybrid layer of the
-                                            hyperbolic march; 3: automatic, the hybrid
-                                            layer on an O- or C-grid where its rows
+                                            whose only wall is JMIN march a layer along the
+                                            normals and hold it; 2: such O- and C-grids get
+                                            the hybrid layer of the hyperbolic march;
+                                            3: automatic: the hybrid layer on an O- or
+                                            C-grid whose only wall is JMIN where its rows
                                             grow by at most 1.25 and its first cells are
-                                            within 1% and 0.5 degrees, else 0 (see
-                                            EG2D_ORTHO_WALL; the run says which) */
+                                            within 1% and 0.5 degrees, else 0 there; the
+                                            graded layer at every other wall of a single
+                                            block or an O-grid (see EG2D_ORTHO_WALL; the
+                                            run says which) */
 #define EG2D_PARAM_SVG_QUALITY      300  /* output 300-399. EG2D_FORMAT_SVG colours cells by this
                                             EG2D_QUALITY_* metric (one with per-cell values);
                                             -1 (default): no colouring */
@@ -1060,17 +1063,37 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   every-other-node coarser grids). IMIN and IMAX move their nodes like
  *   JMAX. The run says which layer it made, the retries, the moves and any
  *   clipping (eg2d_get_run_event).
- * WALL with EG2D_PARAM_WALL_LAYER = 3 (the default): the hybrid layer of 2
- *   is made and kept on an O- or C-grid when the march's rows grow by at
- *   most 1.25 and its first cells are within 1% of h and 0.5 degrees of the
- *   wall's normal (measured on NACA 0012 O-grids 250x100 at 1.04e-5 chord
- *   to 15 chords and a C-grid 385x97 at 4.46e-6 to 100 chords: exact and
- *   within 0.08 degrees); otherwise (too few rows for the far field at that
- *   first cell, a first cell too coarse for the wall's curvature, a single
- *   block, several walls) the control below, and a run event says why
- *   (eg2d_get_run_event). Set 0 for the control's contract (height and 90
- *   degrees to the solver tolerance, the C-grid's cut at the wall's height)
- *   everywhere.
+ * WALL with EG2D_PARAM_WALL_LAYER = 3 (the default): on an O- or C-grid
+ *   whose only wall is JMIN, the hybrid layer of 2 is made and kept when
+ *   the march's rows grow by at most 1.25 and its first cells are within 1%
+ *   of h and 0.5 degrees of the wall's normal; otherwise (too few rows for
+ *   the far field at that first cell, a first cell too coarse for the
+ *   wall's curvature) the control below, and a run event says why
+ *   (eg2d_get_run_event). Every other set of walls with a height, on a
+ *   single block (one wall, two opposite, walls meeting at corners) or an
+ *   O-grid (JMIN and JMAX, a body in a pipe), gets the graded layer: before
+ *   the solve each grid line leaving a wall is re-spaced along itself,
+ *   its cells growing geometrically from the wall's first cell (from both
+ *   walls' between two), and the controls Phi, Psi that hold each line's
+ *   spacing are taken from that start (Thomas & Middlecoff's (1980)
+ *   one-dimensional inversion) and kept for the run; for the first few
+ *   updates each line's first cell is measured along the wall normal and
+ *   its target rescaled, then the control below turns the lines to the
+ *   normal and closes the height. A wall covers the stretches of its side
+ *   whose patches are of type EG2D_PATCH_WALL (the whole side when none
+ *   is); on the rest of the side the first cell blends (a smoothstep in its
+ *   log) from h to the spacing at the corner the stretch reaches, as NASA's
+ *   flat-plate and bump grids do ahead of the plate. A side that is no wall
+ *   and meets a wall keeps its points when its first cell there is within
+ *   10% of the layer's and its cells grow by at most 1.2 (the lines beside
+ *   it then take its shape); otherwise its nodes are moved along it to the
+ *   layer's spacing, and the run says so. A folded start (the TFI start of
+ *   a curved duct with clustered sides) is first solved without controls,
+ *   and the run says so. The first cell is always h; where the rows are
+ *   too few for it to grow by at most 1.2 within EG2D_WALL_ROWS cells, the
+ *   run's event names the node count that would do, and so does
+ *   eg2d_get_wall_layer (EG2D_WALL_NODES_NEEDED). The layer's figures are
+ *   eg2d_get_wall_layer's. Set 0 for the control alone everywhere.
  * WALL otherwise: a Sorenson (GRAPE)-type control, updated between iterations, that
  *   makes the grid lines leave each wall side at 90 degrees with the
  *   first-cell height of eg2d_set_wall_spacing; its influence decays into the
