@@ -8,7 +8,7 @@ program test_controls
   implicit none
   integer, parameter :: n = 9
   type(eg2d_grid_t) :: g
-  real(eg2d_dp) :: x(n, n), y(n, n), x0(n, n), y0(n, n), f(n, n), u(n), s(n, n), t(n, n), bad(n, n - 1)
+  real(eg2d_dp) :: x(n, n), y(n, n), x0(n, n), y0(n, n), f(n, n), u(n), s(n, n), t(n, n), bad(n, n - 1), wall_figure
   integer :: st, i
 
   call unit_square(g)
@@ -62,6 +62,10 @@ program test_controls
   call g%solve(st)
   call g%get_coordinates(x, y)
   call check(st == EG2D_OK .and. abs(y(5, 2) - 0.05d0) < 1d-3, 'first cell height 0.05 at the wall')
+  call g%get_wall_layer(EG2D_SIDE_JMIN, EG2D_WALL_FIRST_MEDIAN, wall_figure, st)
+  call check(st == EG2D_OK .and. abs(wall_figure - 0.05d0) < 1d-3, 'get_wall_layer: the median first cell 0.05')
+  call g%get_wall_layer(EG2D_SIDE_JMIN, 7, wall_figure, st)
+  call check_status(st, EG2D_ERR_ARGUMENT, 'get_wall_layer of figure 7')
   call g%set_orthogonality(EG2D_ORTHO_NONE, st)
   call check_status(st, EG2D_OK, 'orthogonality NONE')
 

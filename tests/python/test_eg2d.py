@@ -467,6 +467,30 @@ def test_orthogonality_and_wall_spacing():
         g.set_orthogonality(eg2d.ORTHO_NONE)
 
 
+def test_wall_layer_figures():
+    """A straight channel walled top and bottom: the graded layer's figures through get_wall_layer."""
+    with eg2d.Grid(33, 65) as g:
+        s, t = np.arange(33) / 32, np.arange(65) / 64
+        g.set_side(eg2d.SIDE_JMIN, 4 * s, 0 * s)
+        g.set_side(eg2d.SIDE_JMAX, 4 * s, 0 * s + 1)
+        g.set_side(eg2d.SIDE_IMIN, 0 * t, t)
+        g.set_side(eg2d.SIDE_IMAX, 0 * t + 4, t)
+        with pytest.raises(eg2d.StateError):
+            g.get_wall_layer(eg2d.SIDE_JMIN, eg2d.WALL_GROWTH)
+        for side in (eg2d.SIDE_JMIN, eg2d.SIDE_JMAX):
+            g.set_wall_spacing(side, 1e-3)
+        g.set_orthogonality(eg2d.ORTHO_WALL)
+        g.solve()
+        for side in (eg2d.SIDE_JMIN, eg2d.SIDE_JMAX):
+            assert abs(g.get_wall_layer(side, eg2d.WALL_FIRST_MEDIAN) / 1e-3 - 1) < 1e-9
+            assert g.get_wall_layer(side, eg2d.WALL_GROWTH) <= 1.2
+            assert g.get_wall_layer(side, eg2d.WALL_ANGLE) < 1e-6
+            assert g.get_wall_layer(side, eg2d.WALL_NODES) == 31
+            assert g.get_wall_layer(side, eg2d.WALL_NODES_NEEDED) == 0
+        with pytest.raises(eg2d.ArgumentError, match="what = 7"):
+            g.get_wall_layer(eg2d.SIDE_JMIN, 7)
+
+
 def test_parameter_grid_clustering_and_weights():
     with pytest.raises(eg2d.ArgumentError):
         eg2d.clustering_map(eg2d.CLUSTER_LINE, 1.5, 9)
