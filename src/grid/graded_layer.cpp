@@ -22,7 +22,20 @@ double dist(const Vec2 &a, const Vec2 &b) { return std::hypot(b.x - a.x, b.y - a
 // First-cell height at each node of a wall side: h on its wall stretches,
 // log-linear in the index between them and toward a corner's own spacing on
 // the rest (an O-grid's side wraps round).
-std::vector<double> node_heights(const Grid &g, Side s, double h) {
+// A side's points are kept when its first cell is within this factor of
+// the layer's there and its cells grow within kGradedGrowth: the lines
+// beside it then take its shape (blend_sides); else its nodes are moved.
+constexpr double kKeepFirst = 1.1;
+
+// A wall that runs into a corner of a side that is no wall and keeps its
+// points (their first cell within kKeepFirst of h) ends on that side's first
+// cell, blended over this many nodes: ending on h, the TMR flat plate's last
+// column met the outflow's 2.0047e-6 at 2e-6, which checkMesh saw as 10.4
+// degrees of non-orthogonality in cells 2e4 times longer than high.
+constexpr int kCornerBlend = 8;
+
+std::vector<double> node_heights(const Grid &g, Side s, const std::array<double, 4> &height) {
+    const double h = height[static_cast<std::size_t>(s)];
     const int n = g.side_length(s);
     const bool ring = g.topology() == Topology::O;
     std::vector<double> v(static_cast<std::size_t>(n), -1.0);
@@ -34,10 +47,22 @@ std::vector<double> node_heights(const Grid &g, Side s, double h) {
     if (std::none_of(v.begin(), v.end(), [](double d) { return d > 0.0; })) std::fill(v.begin(), v.end(), h);
     if (ring && v.front() > 0.0) v.back() = v.front();
     if (!ring) {
-        for (int k : {0, n - 1})
-            if (v[static_cast<std::size_t>(k)] < 0.0)
-                v[static_cast<std::size_t>(k)] = std::hypot(g.x[side_node(g, s, k, 1)] - g.x[side_node(g, s, k)],
-                                                            g.y[side_node(g, s, k, 1)] - g.y[side_node(g, s, k)]);
+        const bool eta = s == Side::JMin || s == Side::JMax;
+        for (int k : {0, n - 1}) {
+            const double corner = std::hypot(g.x[side_node(g, s, k, 1)] - g.x[side_node(g, s, k)],
+                                             g.y[side_node(g, s, k, 1)] - g.y[side_node(g, s, k)]);
+            double &vk = v[static_cast<std::size_t>(k)];
+            const std::size_t across = static_cast<std::size_t>(k == 0 ? (eta ? 3 : 0) : (eta ? 1 : 2));
+            if (vk < 0.0) {
+                vk = corner;
+            } else if (!(height[across] > 0.0) && corner != h && std::fabs(std::log(corner / h)) <= std::log(kKeepFirst)) {
+                vk = corner;
+                for (int m = 1; m <= kCornerBlend && m < n / 4; ++m) {
+                    double &vm = v[static_cast<std::size_t>(k == 0 ? m : n - 1 - m)];
+                    if (vm == h) vm = -1.0;  // filled by the blend below
+                }
+            }
+        }
     }
     const int span = ring ? n - 1 : n;  // an O-grid's last node is its first
     int known = -1;
@@ -52,11 +77,10 @@ std::vector<double> node_heights(const Grid &g, Side s, double h) {
         while (!(v[static_cast<std::size_t>(b % span)] > 0.0)) ++b;
         if (!ring && b >= span) break;
         const double la = std::log(v[static_cast<std::size_t>(a)]), lb = std::log(v[static_cast<std::size_t>(b % span)]);
-        for (int k = a + 1; k < b; ++k)
-        {
-            // Smoothstep in the log: no kink where the blend leaves a wall
-            // stretch (log-linear, the rows bent there by Phi 1.03 at the
-            // TMR bump's plate ends, and multigrid's coarse levels folded).
+        // Smoothstep in the log: no kink where the blend leaves a wall
+        // stretch (log-linear, the rows bent there by Phi 1.03 at the TMR
+        // bump's plate ends, and multigrid's coarse levels folded).
+        for (int k = a + 1; k < b; ++k) {
             const double u = static_cast<double>(k - a) / (b - a);
             v[static_cast<std::size_t>(k % span)] = std::exp(la + (lb - la) * u * u * (3.0 - 2.0 * u));
         }
@@ -152,10 +176,6 @@ int nodes_needed(double first, double last, double length, int nodes) {
     return hi;
 }
 
-// A side's points are kept when its first cell is within this factor of
-// the layer's there and its cells grow within kGradedGrowth: the lines
-// beside it then take its shape (blend_sides); else its nodes are moved.
-constexpr double kKeepFirst = 1.1;
 
 // One family of lines (eta lines: columns, for JMIN/JMAX walls; xi lines:
 // rows, for IMIN/IMAX), each with its points, arc lengths and target cells.
@@ -283,7 +303,7 @@ GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height) {
     std::array<std::vector<double>, 4> &h = out.heights;
     for (int s = 0; s < 4; ++s)
         if (height[static_cast<std::size_t>(s)] > 0.0 && g.has_side(static_cast<Side>(s)))
-            h[static_cast<std::size_t>(s)] = node_heights(g, static_cast<Side>(s), height[static_cast<std::size_t>(s)]);
+            h[static_cast<std::size_t>(s)] = node_heights(g, static_cast<Side>(s), height);
     std::string moved;
     for (bool columns : {true, false})
         if (!h[columns ? 0 : 3].empty() || !h[columns ? 2 : 1].empty()) grade_family(g, columns, out, moved);

@@ -76,7 +76,8 @@ static void test_flat_plate(void **state) {
     solve_ok(g);
     assert_layer(g, EG2D_SIDE_JMIN, 2e-6, 1.13);
     assert_true(wall(g, EG2D_SIDE_JMIN, EG2D_WALL_FIRST_MIN) > 2e-6 * 0.999);
-    assert_true(wall(g, EG2D_SIDE_JMIN, EG2D_WALL_FIRST_MAX) < 2e-6 * 1.001);
+    /* ... to the outflow side's own first cell, 2.0047e-6, over the last nodes */
+    assert_true(wall(g, EG2D_SIDE_JMIN, EG2D_WALL_FIRST_MAX) < 2.0047e-6);
     assert_true(wall(g, EG2D_SIDE_JMIN, EG2D_WALL_NODES_NEEDED) == 0);
     double skew = 99;
     eg2d_get_quality(g, EG2D_QUALITY_SKEWNESS, &skew);
@@ -194,12 +195,41 @@ static void test_short_layer_says_so(void **state) {
     eg2d_destroy(g);
 }
 
+/* The monitor, from its first call, reads the shortfall of a layer that
+ * iterates: a bend with 33 rows and first cells of 1e-5. */
+static char first_call_event[1024];
+static int monitor_event(void *user, int iteration, double residual) {
+    (void)iteration;
+    (void)residual;
+    if (!first_call_event[0]) eg2d_get_run_event((const eg2d_grid *)user, 0, NULL, first_call_event, sizeof first_call_event);
+    return 0;
+}
+
+static void test_short_layer_monitor(void **state) {
+    (void)state;
+    eg2d_grid *g = made(129, 33, EG2D_TOPO_SINGLE);
+    assert_int_equal(domain_set_bend(g), EG2D_OK);
+    eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 1e-5);
+    eg2d_set_wall_spacing(g, EG2D_SIDE_JMAX, 1e-5);
+    eg2d_set_monitor(g, monitor_event, g);
+    solve_ok(g);
+    int iterations = 0;
+    eg2d_get_iterations(g, &iterations);
+    assert_true(iterations > 0);
+    char want[64];
+    snprintf(want, sizeof want, "nj >= %d would meet it", (int)wall(g, EG2D_SIDE_JMIN, EG2D_WALL_NODES_NEEDED));
+    if (!strstr(first_call_event, want)) fail_msg("first call saw: %s (wanted \"%s\")", first_call_event, want);
+    assert_true(wall(g, EG2D_SIDE_JMIN, EG2D_WALL_NODES_NEEDED) > 33);
+    eg2d_destroy(g);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_flat_plate),     cmocka_unit_test(test_bump_in_channel),
         cmocka_unit_test(test_bend_two_walls), cmocka_unit_test(test_s_diffuser),
         cmocka_unit_test(test_body_in_pipe),
         cmocka_unit_test(test_cavity_corners), cmocka_unit_test(test_short_layer_says_so),
+        cmocka_unit_test(test_short_layer_monitor),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
