@@ -291,6 +291,39 @@ void grade_family(Grid &g, bool columns, GradedLayer &out, std::string &moved) {
         for (int k = 1; k < nodes - 1; ++k) set_node(g, count - 1, k, {g.x[at(g.ni(), 0, k)], g.y[at(g.ni(), 0, k)]});
 }
 
+// Two walls that meet at a corner hold each other's first cells: the
+// points of each, next to the corner, are the other's layer, and no move
+// can mend them (a wall's points never move). Where they are more than
+// kCornerMismatch apart the corner cells fold or pinch: said up front.
+constexpr double kCornerMismatch = 2.0;
+
+std::string corner_notes(const Grid &g, const std::array<double, 4> &height) {
+    if (g.topology() != Topology::Single) return {};
+    std::string out;
+    // (side a, its end node index: 0 or last; side b at that corner)
+    static const int corners[4][3] = {{0, 0, 3}, {0, 1, 1}, {2, 0, 3}, {2, 1, 1}};
+    for (const auto &c : corners) {
+        const Side a = static_cast<Side>(c[0]), b = static_cast<Side>(c[2]);
+        const double ha = height[static_cast<std::size_t>(c[0])], hb = height[static_cast<std::size_t>(c[2])];
+        if (!(ha > 0.0) || !(hb > 0.0)) continue;
+        const int ka = c[1] ? g.side_length(a) - 1 : 0, kb = c[0] == 0 ? 0 : g.side_length(b) - 1;
+        const int step_a = c[1] ? -1 : 1, step_b = c[0] == 0 ? 1 : -1;
+        // a's first spacing from the corner is b's layer, and b's is a's.
+        const double along_a = std::hypot(g.x[side_node(g, a, ka + step_a)] - g.x[side_node(g, a, ka)],
+                                          g.y[side_node(g, a, ka + step_a)] - g.y[side_node(g, a, ka)]);
+        const double along_b = std::hypot(g.x[side_node(g, b, kb + step_b)] - g.x[side_node(g, b, kb)],
+                                          g.y[side_node(g, b, kb + step_b)] - g.y[side_node(g, b, kb)]);
+        auto off = [](double x, double y) { return std::max(x / y, y / x) > kCornerMismatch; };
+        if (off(along_a, hb) || off(along_b, ha))
+            out += format("%swall layer (graded): at the corner of walls %s and %s the points of %s are %.3g apart "
+                          "where %s's first cell is %.3g, and those of %s %.3g where %s's is %.3g: cluster each "
+                          "wall's points at the corner to the other's first cell, or the corner's cells fold",
+                          out.empty() ? "" : "; ", side_name(a), side_name(b), side_name(a), along_a, side_name(b),
+                          hb, side_name(b), along_b, side_name(a), ha);
+    }
+    return out;
+}
+
 }  // namespace
 
 GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height) {
@@ -304,6 +337,7 @@ GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height) {
     for (int s = 0; s < 4; ++s)
         if (height[static_cast<std::size_t>(s)] > 0.0 && g.has_side(static_cast<Side>(s)))
             h[static_cast<std::size_t>(s)] = node_heights(g, static_cast<Side>(s), height);
+    const std::string corners = corner_notes(g, height);
     std::string moved;
     for (bool columns : {true, false})
         if (!h[columns ? 0 : 3].empty() || !h[columns ? 2 : 1].empty()) grade_family(g, columns, out, moved);
@@ -312,6 +346,7 @@ GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height) {
         out.shape.note = format("wall layer (graded): the nodes of %s moved along the side to the wall layer's "
                                 "spacing (their first cell was more than %g times the layer's, or their cells grew "
                                 "by more than %g)", moved.c_str(), kKeepFirst, kGradedGrowth);
+    if (!corners.empty()) out.shape.note += (out.shape.note.empty() ? "" : "; ") + corners;
     // The frozen background: each line's one-dimensional Phi, Psi.
     out.phi.assign(g.size(), 0.0);
     out.psi.assign(g.size(), 0.0);

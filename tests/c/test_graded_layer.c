@@ -165,6 +165,25 @@ static void test_cavity_corners(void **state) {
     eg2d_destroy(g);
 }
 
+/* Walls that meet at a corner with their points not clustered there: no
+ * move can mend them (a wall's points stay), and the run says so up front. */
+static void test_unclustered_wall_corner_says_so(void **state) {
+    (void)state;
+    eg2d_grid *g = made(33, 33, EG2D_TOPO_SINGLE);
+    assert_int_equal(domain_set_channel(g), EG2D_OK);
+    eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 1e-4);
+    eg2d_set_wall_spacing(g, EG2D_SIDE_IMIN, 1e-4);
+    eg2d_set_orthogonality(g, EG2D_ORTHO_WALL);
+    assert_int_equal(eg2d_iterate(g, 1, NULL), EG2D_OK);
+    char msg[2048] = "";
+    int it;
+    assert_int_equal(eg2d_get_run_event(g, 0, &it, msg, sizeof msg), EG2D_OK);
+    if (!strstr(msg, "at the corner of walls JMIN and IMIN the points of JMIN are 0.125 apart where IMIN's first "
+                     "cell is 0.0001"))
+        fail_msg("event: %s", msg);
+    eg2d_destroy(g);
+}
+
 static eg2d_grid *channel(int ni, int nj, double h) {
     eg2d_grid *g = made(ni, nj, EG2D_TOPO_SINGLE);
     assert_int_equal(domain_set_channel(g), EG2D_OK);
@@ -229,7 +248,7 @@ int main(void) {
         cmocka_unit_test(test_bend_two_walls), cmocka_unit_test(test_s_diffuser),
         cmocka_unit_test(test_body_in_pipe),
         cmocka_unit_test(test_cavity_corners), cmocka_unit_test(test_short_layer_says_so),
-        cmocka_unit_test(test_short_layer_monitor),
+        cmocka_unit_test(test_short_layer_monitor), cmocka_unit_test(test_unclustered_wall_corner_says_so),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
