@@ -70,7 +70,14 @@ std::shared_ptr<Curve> read_airfoil(const char *path) {
     const Points r = read_points(file.get(), path);
     if (r.pts.size() < 4)
         fail(Failure::Argument, format("airfoil file \"%s\": %zu points, need at least 4", path, r.pts.size()));
-    const Outline o = normalise_outline(lednicer_counts(r.pts) ? lednicer_outline(r.pts, r.lines, path) : r.pts, path);
+    const bool lednicer = lednicer_counts(r.pts);
+    // Neither counts nor a point: a name made of two numbers, or a stray line.
+    if (!lednicer && first_off_outline(r.pts))
+        fail(Failure::Argument, format("airfoil file \"%s\", line %zu: (%.15g, %.15g) lies far off the outline the other "
+                                       "points draw, and is not Lednicer's counts (whole numbers > 1 before a surface "
+                                       "from the leading edge): make it a name line with a word, or remove it",
+                                       path, r.lines[0], r.pts[0].x, r.pts[0].y));
+    const Outline o = normalise_outline(lednicer ? lednicer_outline(r.pts, r.lines, path) : r.pts, path);
     return make_spline(o.x.data(), o.y.data(), static_cast<int>(o.x.size()), true);
 }
 

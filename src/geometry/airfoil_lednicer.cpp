@@ -34,14 +34,20 @@ std::size_t visible_split(const std::vector<OutlinePoint> &pts, double extent) {
 
 }  // namespace
 
-bool lednicer_counts(const std::vector<OutlinePoint> &pts) {
-    if (pts.size() < 3 || !count_like(pts[0].x) || !count_like(pts[0].y)) return false;
+bool first_off_outline(const std::vector<OutlinePoint> &pts) {
+    if (pts.size() < 3) return false;
     const Box b = box_after_first(pts);
     const double diagonal = std::hypot(b.x1 - b.x0, b.y1 - b.y0);
     double nearest = INFINITY;
     for (std::size_t k = 1; k < pts.size(); ++k)
         nearest = std::min(nearest, std::hypot(pts[k].x - pts[0].x, pts[k].y - pts[0].y));
-    return nearest > 0.5 * diagonal && pts[1].x - b.x0 <= 0.25 * (b.x1 - b.x0);
+    return nearest > 0.5 * diagonal;
+}
+
+bool lednicer_counts(const std::vector<OutlinePoint> &pts) {
+    if (pts.size() < 3 || !count_like(pts[0].x) || !count_like(pts[0].y) || !first_off_outline(pts)) return false;
+    const Box b = box_after_first(pts);
+    return pts[1].x - b.x0 <= 0.25 * (b.x1 - b.x0);
 }
 
 std::vector<OutlinePoint> lednicer_outline(const std::vector<OutlinePoint> &pts, const std::vector<std::size_t> &lines,

@@ -9,6 +9,10 @@
 
 namespace eg2d {
 
+// True when the first point is farther from all the others than half their
+// bounding box's diagonal: not a point of the outline they draw.
+bool first_off_outline(const std::vector<OutlinePoint> &pts);
+
 // True when the first point is Lednicer's counts: whole numbers > 1, off the
 // outline the others draw (a Selig file's first point lies on it, however
 // far the file is shifted), which starts near its leftmost x.

@@ -237,6 +237,9 @@ static void test_bad_lines(void **state) {
     fputs("1 0\n0.5 0.1\nnan 0\n0.5 -0.1\n1 0\n", f);
     fclose(f);
     refused(p, "line 3: non-finite coordinate", NULL);
+    orders(sn); /* a name of two numbers is neither a point nor counts */
+    refused(write_file("numbername.dat", "2032 12\n", sx, sy, order, sn, " ", "\n", ""),
+            "line 1: (2032, 12) lies far off the outline", "not Lednicer's counts");
 }
 
 int main(void) {
