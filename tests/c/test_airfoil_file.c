@@ -156,6 +156,30 @@ static void test_lednicer(void **state) {
     refused(lednicer("lie_split.dat", 24, 26), "announces 24 + 26 points but has 50 (25 + 25", "correct the counts");
 }
 
+/* The C-grid (boundary and TFI) round a file equals the standard file's. */
+static void same_grid(const char *a, const char *b) {
+    enum { NI = 65, NJ = 17 };
+    static double xa[NI * NJ], ya[NI * NJ], xb[NI * NJ], yb[NI * NJ];
+    const char *paths[2] = {a, b};
+    double *xs[2] = {xa, xb}, *ys[2] = {ya, yb}, d = 0;
+    int k;
+    for (k = 0; k < 2; ++k) {
+        eg2d_grid *g;
+        eg2d_curve *c;
+        assert_int_equal(eg2d_curve_read_airfoil(paths[k], &c), EG2D_OK);
+        assert_int_equal(eg2d_create(NI, NJ, &g), EG2D_OK);
+        assert_int_equal(eg2d_set_airfoil(g, c, EG2D_TOPO_C), EG2D_OK);
+        assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
+        assert_int_equal(eg2d_get_coordinates(g, xs[k], ys[k]), EG2D_OK);
+        eg2d_destroy(g);
+        eg2d_curve_destroy(c);
+    }
+    for (k = 0; k < NI * NJ; ++k) d = fmax(d, hypot(xa[k] - xb[k], ya[k] - yb[k]));
+    print_message("C-grid %dx%d: largest node distance %.3g\n", NI, NJ, d);
+    assert_true(d < 1e-12);
+    assert_true(xa[0] > 50); /* the outflow behind the trailing edge, not before the leading edge */
+}
+
 /* Reversed, and from the leading edge: the same curve as the standard order. */
 static void same_in_any_order(const double *x, const double *y, int n, int le, int closed) {
     const char *std, *p;
@@ -175,6 +199,7 @@ static void same_in_any_order(const double *x, const double *y, int n, int le, i
     for (k = 0; k < m; ++k) order[k] = idx[m - 1 - k];
     p = write_file("le_rev.dat", "", x, y, order, m, " ", "\n", "");
     assert_true(distance(std, p) < 1e-12);
+    same_grid(std, p);
 }
 
 static void test_any_order(void **state) {
