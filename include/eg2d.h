@@ -620,8 +620,9 @@ EG2D_API int eg2d_curve_naca4(const char *digits, int flags, eg2d_curve **curve)
  * with the surfaces found (where x jumps back to the leading edge) are
  * refused, naming both. The points may run either way round and start
  * anywhere (at the trailing edge, as Selig's do, or at the leading edge): the
- * outline is turned and cut at its trailing edge (the point farthest along
- * the chord; a blunt base is the edge there that runs across the chord);
+ * outline is turned and cut at its trailing edge: where the file's ends are
+ * when they lie there, else at the point farthest along the chord, or at a
+ * blunt base, the edge there that runs across the chord;
  * consecutive repeated points count once. EG2D_ERR_IO if the file cannot be
  * read, EG2D_ERR_ARGUMENT naming the line (quoted, non-printable bytes as
  * \xNN, cut to 60 characters) for text between points, a non-finite
