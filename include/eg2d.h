@@ -613,10 +613,23 @@ EG2D_API int eg2d_curve_function(eg2d_curve_fn fn, void *user, eg2d_curve **curv
  * 0 for the standard open one (-0.1015, thickness 0.0021 at x = 1 for 0012). */
 #define EG2D_NACA_CLOSED_TE 1
 EG2D_API int eg2d_curve_naca4(const char *digits, int flags, eg2d_curve **curve);
-/* An airfoil from a Selig or Lednicer coordinate file (the format is
- * recognised from the second line), as a spline through its points oriented
- * like eg2d_curve_naca4. EG2D_ERR_IO if the file cannot be read,
- * EG2D_ERR_ARGUMENT (with the line number) if its contents are malformed. */
+/* An airfoil from a Selig or Lednicer coordinate file, as a spline through
+ * all its points oriented like eg2d_curve_naca4. A line of exactly two numbers
+ * (blanks, tabs or one comma between; LF, CRLF or CR ends) is a point; text
+ * lines before the first point are the header (none, a name, or several),
+ * text after the last point is ignored, blank lines are skipped. Lednicer's
+ * counts "NU NL" are told by content: whole numbers > 1 off the outline the
+ * other points draw, which starts at its leading edge; counts that disagree
+ * with the surfaces found (where x jumps back to the leading edge) are
+ * refused, naming both. The points may run either way round and start
+ * anywhere (at the trailing edge, as Selig's do, or at the leading edge): the
+ * outline is turned and cut at its trailing edge: where the file's ends are
+ * when they lie there, else at the point farthest along the chord, or at a
+ * blunt base, the edge there that runs across the chord;
+ * consecutive repeated points count once. EG2D_ERR_IO if the file cannot be
+ * read, EG2D_ERR_ARGUMENT naming the line (quoted, non-printable bytes as
+ * \xNN, cut to 60 characters) for text between points, a non-finite
+ * number, a line longer than 4096 bytes or one with control bytes. */
 EG2D_API int eg2d_curve_read_airfoil(const char *path, eg2d_curve **curve);
 /* Frees a curve; NULL is a no-op. */
 EG2D_API void eg2d_curve_destroy(eg2d_curve *curve);

@@ -1,15 +1,16 @@
-// Airfoil coordinate files in the two formats of the UIUC airfoil database:
-//  Selig:    a name line, then x y pairs from the trailing edge over the upper
-//            surface to the leading edge and back along the lower surface;
-//  Lednicer: a name line, a line "NU NL" (point counts, both > 1), then the
-//            upper surface from leading to trailing edge, then the lower one.
-// Both become one spline from the trailing edge along the lower surface to
-// the leading edge and back along the upper (the orientation of make_naca4).
-#include <cctype>
+// Airfoil coordinate files as the UIUC database and others hand them out:
+//  Selig:    x y pairs round the section from the trailing edge (any
+//            direction and start are accepted: airfoil_outline.cpp);
+//  Lednicer: a line "NU NL" (point counts), then the upper surface from
+//            leading to trailing edge, then the lower one (airfoil_lednicer.cpp).
+// Lines before the first point are the header (the first is the name); a
+// line is a point by its content (exactly two numbers), so a file without a
+// name line loses nothing. Blank lines, CRLF, tabs and commas are allowed;
+// text after the last point is ignored; text between points is refused.
+// The points become one spline oriented like make_naca4.
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -17,34 +18,47 @@
 
 #include "base/error.hpp"
 #include "base/regular_file.hpp"
+#include "geometry/airfoil_lednicer.hpp"
+#include "geometry/airfoil_lines.hpp"
+#include "geometry/airfoil_outline.hpp"
 #include "geometry/curve.hpp"
 
 namespace eg2d {
 
 namespace {
 
-struct Pair { double x, y; };
+// The points of the file and their line numbers. Text after a point is kept
+// pending: it is the file's trailing notes unless another point follows.
+struct Points {
+    std::vector<OutlinePoint> pts;
+    std::vector<std::size_t> lines;
+};
 
-// Parses "x y" (blank or comma separated); false for a line without two numbers.
-bool parse_pair(const std::string &line, Pair &p) {
-    const char *s = line.c_str();
-    char *end;
-    errno = 0;
-    p.x = std::strtod(s, &end);
-    if (end == s) return false;
-    s = end;
-    while (*s == ' ' || *s == '\t' || *s == ',') ++s;
-    p.y = std::strtod(s, &end);
-    if (end == s) return false;
-    for (s = end; *s; ++s)
-        if (!std::isspace(static_cast<unsigned char>(*s))) return false;
-    return errno == 0;
-}
-
-bool blank(const std::string &line) {
-    for (char c : line)
-        if (!std::isspace(static_cast<unsigned char>(c))) return false;
-    return true;
+Points read_points(std::FILE *f, const char *path) {
+    Points r;
+    AirfoilLines lines(f, path);
+    AirfoilLine line;
+    std::size_t text_line = 0;  // the first text line after a point
+    std::string text;
+    while (lines.next(line)) {
+        if (line.kind == LineKind::Blank) continue;
+        if (line.kind == LineKind::Text) {
+            if (!r.pts.empty() && text_line == 0) text_line = line.number, text = quoted(line.text);
+            continue;
+        }
+        if (text_line != 0)
+            fail(Failure::Argument,
+                 format("airfoil file \"%s\", line %zu: %s is not a pair of numbers (points before it at line %zu "
+                        "and after it at line %zu)",
+                        path, text_line, text.c_str(), r.lines.back(), line.number));
+        if (!std::isfinite(line.x) || !std::isfinite(line.y))
+            fail(Failure::Argument, format("airfoil file \"%s\", line %zu: non-finite coordinate in %s", path,
+                                           line.number, quoted(line.text).c_str()));
+        r.pts.push_back({line.x, line.y});
+        r.lines.push_back(line.number);
+    }
+    if (std::ferror(f)) fail(Failure::Io, format("cannot read airfoil file \"%s\": %s", path, std::strerror(errno)));
+    return r;
 }
 
 }  // namespace
@@ -52,58 +66,19 @@ bool blank(const std::string &line) {
 std::shared_ptr<Curve> read_airfoil(const char *path) {
     require_regular_file(path);
     const std::unique_ptr<std::FILE, int (*)(std::FILE *)> file(std::fopen(path, "r"), std::fclose);
-    std::FILE *f = file.get();
-    if (!f) fail(Failure::Io, format("cannot open airfoil file \"%s\": %s", path, std::strerror(errno)));
-    // Line by line: what is kept is the points (a file of blank lines or
-    // names costs nothing), never the file's lines. Line 1 is the name.
-    std::vector<Pair> pts;
-    std::size_t first_line = 0, number = 0;
-    std::string line;
-    bool more = true;
-    while (more) {
-        const int c = std::fgetc(f);
-        if (c != '\n' && c != EOF) {
-            if (c != '\r') line.push_back(static_cast<char>(c));
-            continue;
-        }
-        more = c != EOF;
-        if (c == EOF && line.empty()) break;
-        ++number;
-        if (number == 1 || blank(line)) {
-            line.clear();
-            continue;
-        }
-        Pair p;
-        if (!parse_pair(line, p))
-            fail(Failure::Argument,
-                 format("airfoil file \"%s\", line %zu: \"%s\" is not a pair of numbers", path, number, line.c_str()));
-        if (!std::isfinite(p.x) || !std::isfinite(p.y))
-            fail(Failure::Argument, format("airfoil file \"%s\", line %zu: non-finite coordinate", path, number));
-        if (pts.empty()) first_line = number;
-        pts.push_back(p);
-        line.clear();
-    }
-    if (pts.size() < 4) fail(Failure::Argument, format("airfoil file \"%s\": %zu points, need at least 4", path, pts.size()));
-    std::vector<double> x, y;
-    const Pair head = pts[0];
-    const bool lednicer = head.x > 1.5 && head.y > 1.5 && head.x == std::floor(head.x) && head.y == std::floor(head.y);
-    if (lednicer) {
-        // Compared as doubles first: a count beyond size_t is undefined to convert
-        // (UBSan, found by fuzz_airfoil), and size_t sums could wrap.
-        if (head.x + head.y != static_cast<double>(pts.size() - 1))
-            fail(Failure::Argument, format("Lednicer file \"%s\" (line %zu): announces %.15g + %.15g points but has %zu",
-                                           path, first_line, head.x, head.y, pts.size() - 1));
-        const std::size_t nu = static_cast<std::size_t>(head.x), nl = static_cast<std::size_t>(head.y);
-        for (std::size_t k = nu + nl; k > nu; --k) { x.push_back(pts[k].x); y.push_back(pts[k].y); }  // lower, TE -> LE
-        for (std::size_t k = 1; k <= nu; ++k) {  // upper, LE -> TE (its LE point is the lower's)
-            if (k == 1 && pts[k].x == x.back() && pts[k].y == y.back()) continue;
-            x.push_back(pts[k].x);
-            y.push_back(pts[k].y);
-        }
-    } else {  // Selig: reverse, so the lower surface comes first
-        for (std::size_t k = pts.size(); k-- > 0;) { x.push_back(pts[k].x); y.push_back(pts[k].y); }
-    }
-    return make_spline(x.data(), y.data(), static_cast<int>(x.size()), true);
+    if (!file) fail(Failure::Io, format("cannot open airfoil file \"%s\": %s", path, std::strerror(errno)));
+    const Points r = read_points(file.get(), path);
+    if (r.pts.size() < 4)
+        fail(Failure::Argument, format("airfoil file \"%s\": %zu points, need at least 4", path, r.pts.size()));
+    const bool lednicer = lednicer_counts(r.pts);
+    // Neither counts nor a point: a name made of two numbers, or a stray line.
+    if (!lednicer && first_off_outline(r.pts))
+        fail(Failure::Argument, format("airfoil file \"%s\", line %zu: (%.15g, %.15g) lies far off the outline the other "
+                                       "points draw, and is not Lednicer's counts (whole numbers > 1 before a surface "
+                                       "from the leading edge): make it a name line with a word, or remove it",
+                                       path, r.lines[0], r.pts[0].x, r.pts[0].y));
+    const Outline o = normalise_outline(lednicer ? lednicer_outline(r.pts, r.lines, path) : r.pts, path);
+    return make_spline(o.x.data(), o.y.data(), static_cast<int>(o.x.size()), true);
 }
 
 }  // namespace eg2d

@@ -50,8 +50,9 @@ private:
     }
     double slope(const std::vector<double> &f, const std::vector<double> &m, std::size_t k, double t) const {
         const double h = t_[k + 1] - t_[k], a = t_[k + 1] - t, b = t - t_[k];
-        return (-m[k] * a * a + m[k + 1] * b * b) / (2 * h) - (f[k] / h - m[k] * h / 6) +
-               (f[k + 1] / h - m[k + 1] * h / 6);
+        // The points' difference taken first: far from the origin (an outline
+        // shifted by 1e6) f/h each lose what the arc length needs.
+        return (-m[k] * a * a + m[k + 1] * b * b) / (2 * h) + (f[k + 1] - f[k]) / h - (m[k + 1] - m[k]) * h / 6;
     }
     // h_{k-1} M_{k-1} + 2(h_{k-1} + h_k) M_k + h_k M_{k+1} = 6 (slope_k - slope_{k-1}).
     std::vector<double> second_derivatives(const std::vector<double> &f, bool periodic) const {

@@ -709,7 +709,9 @@ static const bad_input rows[] = {
      "eg2d_first_cell_height: y+ = 4.94066e-324, chord = 1: the height 0 is not a positive finite number", 0},
     {"Lednicer header announcing 3e33 points (undefined conversion to size_t before)",
      "eg2d_curve_read_airfoil(path, &c), line 2 \"3e33 2\"", S_NONE, r_lednicer_count, EG2D_ERR_ARGUMENT,
-     "eg2d_curve_read_airfoil: Lednicer file \"*/eg2d-bad-input-*\" (line 2): announces 3e+33 + 2 points but has 6", 0},
+     "eg2d_curve_read_airfoil: Lednicer file \"*/eg2d-bad-input-*\" (line 2): announces 3e+33 + 2 points but has 6 "
+     "(3 + 3: the lower surface starts at line 6, where x returns to the leading edge): correct the counts",
+     0},
     {"a weight of DBL_MAX (the control's sums overflowed before)", "eg2d_iterate(g, 3, NULL), w[40] = DBL_MAX",
      S_INIT, r_huge_weight, EG2D_OK, "", KEEPS_WORK},
     {"a boundary patch overlapping another", "eg2d_set_patch(g, EG2D_SIDE_JMIN, 2, 6, EG2D_PATCH_INFLOW, \"inlet\")",

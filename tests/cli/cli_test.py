@@ -1348,6 +1348,9 @@ class Airfoil(unittest.TestCase):
             code, text, err = run("airfoil", os.path.join(d, "open4412.dat"), "--size", "129x33", "--first-cell",
                                   "1e-4", "--farfield", "10", "--te", "sharpen", "--format", "vts", "-o", d)
             self.assertIn("note: the open trailing edge (0.00252 chords thick) sharpened", text)
+            # what the file gave: the cambered nose lies a little before x = 0
+            self.assertRegex(text, r"open4412\.dat: chord 1\.000\d+ from the leading edge \(-0\.000\d+, 0\.00\d+\) to "
+                                   r"the trailing edge \(1, 0\)")
             grid = vts_points(os.path.join(d, "open4412-129x33.vts"))
             r = self.report(d, "open4412-129x33")
             w = int(re.search(r"JMIN (\d+)\.\.", r["wall"]["stretches"][0]).group(1))

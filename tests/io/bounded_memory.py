@@ -102,7 +102,18 @@ class Readers(unittest.TestCase):
         path = self.file("lednicer.dat", "NACA\n1000000000 1000000000\n0 0\n0.5 0.1\n1 0\n0 0\n0.5 -0.1\n1 0\n")
         self.refused("airfoil", path, "EG2D_ERR_ARGUMENT",
                      f"eg2d_curve_read_airfoil: Lednicer file \"{path}\" (line 2): announces 1000000000 + 1000000000 "
-                     "points but has 6")
+                     "points but has 6 (3 + 3: the lower surface starts at line 6, where x returns to the leading "
+                     "edge): correct the counts")
+
+    def test_airfoil_one_line_of_300_mb(self):
+        # Beyond the limit when read whole: refused at its 4097th byte.
+        path = os.path.join(self.dir.name, "long.dat")
+        with open(path, "wb") as f:
+            f.write(b"NACA\n1 0\n")
+            f.truncate(300 << 20)  # a sparse file: the line is 300 MB of NUL bytes
+        self.refused("airfoil", path, "EG2D_ERR_ARGUMENT",
+                     f"eg2d_curve_read_airfoil: airfoil file \"{path}\", line 3: longer than 4096 bytes: \""
+                     + "\\x00" * 60 + "\"...")
 
     def test_airfoil_16_mb_of_blank_lines(self):
         path = self.file("blank.dat", "NACA\n" + "\n" * BIG)

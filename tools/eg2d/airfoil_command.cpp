@@ -242,20 +242,26 @@ double wall_growth(eg2d_grid *g, int ni, int nj, int first, int last) {
     return worst;
 }
 
-// The section's trailing-edge gap in chords (open above 1e-7, as
-// eg2d_set_airfoil tests it; the chord from the ends' midpoint to the
-// farthest of 2000 points of the section).
-double trailing_edge_gap(const eg2d_curve *c) {
-    double x0, y0, x1, y1, chord = 0;
+// The section's ends' midpoint (the trailing edge), its leading edge (the
+// farthest of 2000 points of the section from it, as eg2d_set_airfoil finds
+// it), the chord between, and the gap between the ends in chords (open above
+// 1e-7, as eg2d_set_airfoil tests it).
+struct SectionShape {
+    double te_x, te_y, le_x = 0, le_y = 0, chord = 0, gap = 0;
+};
+SectionShape section_shape(const eg2d_curve *c) {
+    double x0, y0, x1, y1;
     eg2d_curve_evaluate(c, 0.0, &x0, &y0);
     eg2d_curve_evaluate(c, 1.0, &x1, &y1);
-    const double mx = 0.5 * (x0 + x1), my = 0.5 * (y0 + y1);
+    SectionShape s{0.5 * (x0 + x1), 0.5 * (y0 + y1)};
     for (int k = 1; k < 2000; ++k) {
         double x, y;
         eg2d_curve_evaluate(c, k / 2000.0, &x, &y);
-        chord = std::max(chord, std::hypot(x - mx, y - my));
+        if (std::hypot(x - s.te_x, y - s.te_y) > s.chord)
+            s.chord = std::hypot(x - s.te_x, y - s.te_y), s.le_x = x, s.le_y = y;
     }
-    return chord > 0 ? std::hypot(x1 - x0, y1 - y0) / chord : 0;
+    s.gap = s.chord > 0 ? std::hypot(x1 - x0, y1 - y0) / s.chord : 0;
+    return s;
 }
 
 // Says what becomes of an open trailing edge.
@@ -331,8 +337,15 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
         check(g, eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_WAKE_NODES, wake), "the cut's nodes");
     }
     check(g, eg2d_set_airfoil(g, section.get(), cgrid ? EG2D_TOPO_C : EG2D_TOPO_O), "airfoil " + a.source);
-    const double gap = trailing_edge_gap(section.get());  // 0 for a NACA code closed by --te sharpen
+    const SectionShape shape = section_shape(section.get());
+    const double gap = shape.gap;  // 0 for a NACA code closed by --te sharpen
     if (!a.quiet) {
+        // What the file gave, so that a misread shows at once.
+        const auto tidy = [&](double v) { return std::fabs(v) < 1e-9 * shape.chord ? 0.0 : v; };  // not -1e-20
+        if (!naca)
+            std::printf("%s: chord %.6g from the leading edge (%.6g, %.6g) to the trailing edge (%.6g, %.6g)\n",
+                        a.source.c_str(), shape.chord, tidy(shape.le_x), tidy(shape.le_y), tidy(shape.te_x),
+                        tidy(shape.te_y));
         std::printf("%s %s-grid %dx%d, first cell %.4g chords, far field %g chords, %s trailing edge, method %s\n",
                     name.c_str(), cgrid ? "C" : "O", a.ni, a.nj, h, a.farfield,
                     gap <= 1e-7 ? "sharp" : (a.te == "blunt" ? "blunt" : "sharpened"), a.method.c_str());
