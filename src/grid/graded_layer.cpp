@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "base/error.hpp"
@@ -55,7 +56,8 @@ std::vector<double> node_heights(const Grid &g, Side s, const std::array<double,
             const std::size_t across = static_cast<std::size_t>(k == 0 ? (eta ? 3 : 0) : (eta ? 1 : 2));
             if (vk < 0.0) {
                 vk = corner;
-            } else if (!(height[across] > 0.0) && corner != h && std::fabs(std::log(corner / h)) <= std::log(kKeepFirst)) {
+            } else if (!(height[across] > 0.0) && corner > 0.0 && corner != h &&
+                       std::fabs(std::log(corner / h)) <= std::log(kKeepFirst)) {
                 vk = corner;
                 for (int m = 1; m <= kCornerBlend && m < n / 4; ++m) {
                     double &vm = v[static_cast<std::size_t>(k == 0 ? m : n - 1 - m)];
@@ -95,10 +97,16 @@ std::vector<double> node_heights(const Grid &g, Side s, const std::array<double,
 // smaller of the two series, r such that they fill the line; the log-
 // quadratic graded_cells where even r = 1 overfills it.
 std::vector<double> two_sided_cells(int cells, double first, double last, double length) {
+    // In logs, so that no power overflows (the FP flags stay clear): cell k
+    // is exp(min(ln first + k ln r, ln last + (cells-1-k) ln r)); a sum past
+    // the length ends early, which is all the bisection needs.
     auto fill = [&](double r, std::vector<double> *c) {
-        double sum = 0.0, a = first, b = last * std::pow(r, cells - 1);
-        for (int k = 0; k < cells; ++k, a *= r, b /= r) {
-            const double v = std::min(a, b);
+        const double lr = std::log(r), la = std::log(first), lb = std::log(last);
+        double sum = 0.0;
+        for (int k = 0; k < cells; ++k) {
+            const double e = std::min(la + k * lr, lb + (cells - 1 - k) * lr);
+            if (!c && (e > 700.0 || sum > length)) return std::numeric_limits<double>::infinity();
+            const double v = std::exp(e);
             sum += v;
             if (c) c->push_back(v);
         }
@@ -222,7 +230,7 @@ std::vector<std::vector<double>> blend_sides(std::vector<Line> &lines) {
     auto logs = [](const Line &L, std::vector<double> &r) {
         if (!L.kept) return;
         const std::vector<double> a = actual_cells(L.arc);
-        for (std::size_t k = 0; k < r.size(); ++k) r[k] = std::log(a[k] / L.cells[k]);
+        for (std::size_t k = 0; k < r.size(); ++k) r[k] = a[k] > 0.0 ? std::log(a[k] / L.cells[k]) : 0.0;
     };
     logs(lines.front(), r0);
     logs(lines.back(), rn);

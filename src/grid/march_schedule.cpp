@@ -12,6 +12,10 @@ namespace {
 // h_1 (1 + r + ... + r^(N-1)): the distance N layers cover.
 double covered(int n, double h1, double r) {
     if (std::fabs(r - 1.0) < 1e-12) return h1 * n;
+    // Past e^700 the sum is beyond any distance: said as infinity without
+    // computing the power, which would raise the overflow flag (a host with
+    // FP traps dies of it).
+    if (n * std::log(r) > 700.0) return std::numeric_limits<double>::infinity();
     return h1 * (std::pow(r, n) - 1.0) / (r - 1.0);
 }
 }  // namespace

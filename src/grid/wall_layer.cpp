@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "base/cell.hpp"
 #include "base/error.hpp"
@@ -124,7 +125,11 @@ double layer_distance(double first, double growth, int k) {
 
 double geometric_ratio(double first, double length, int intervals) {
     if (intervals <= 1 || first <= 0.0) return 1.0;
-    auto span = [&](double r) { return std::fabs(r - 1.0) < 1e-12 ? first * intervals : first * (std::pow(r, intervals) - 1.0) / (r - 1.0); };
+    auto span = [&](double r) {
+        if (std::fabs(r - 1.0) < 1e-12) return first * intervals;
+        if (intervals * std::log(r) > 700.0) return std::numeric_limits<double>::infinity();  // no overflow flag
+        return first * (std::pow(r, intervals) - 1.0) / (r - 1.0);
+    };
     double lo = 0.5, hi = 2.0;
     if (span(lo) >= length) return lo;
     if (span(hi) <= length) return hi;
