@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "base/c_locale.hpp"
 #include "base/error.hpp"
 #include "base/regular_file.hpp"
 #include "geometry/curve.hpp"
@@ -30,11 +31,11 @@ bool parse_pair(const std::string &line, Pair &p) {
     const char *s = line.c_str();
     char *end;
     errno = 0;
-    p.x = std::strtod(s, &end);
+    p.x = strtod_c(s, &end);
     if (end == s) return false;
     s = end;
     while (*s == ' ' || *s == '\t' || *s == ',') ++s;
-    p.y = std::strtod(s, &end);
+    p.y = strtod_c(s, &end);
     if (end == s) return false;
     for (s = end; *s; ++s)
         if (!std::isspace(static_cast<unsigned char>(*s))) return false;
