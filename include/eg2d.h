@@ -72,6 +72,10 @@
  * made: the bytes written are those of the "C" locale. The library never
  * changes the process's locale (it switches only the calling thread's, with
  * uselocale, for the duration of a conversion).
+ * Floating point: no call raises the invalid, divide-by-zero or overflow
+ * flag on valid input, so a host may run with these traps on
+ * (feenableexcept, gfortran -ffpe-trap=invalid,zero,overflow); the library
+ * never changes the floating-point environment.
  *
  * ABI
  * ---
