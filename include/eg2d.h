@@ -75,7 +75,8 @@
  * Floating point: no call raises the invalid, divide-by-zero or overflow
  * flag on valid input, so a host may run with these traps on
  * (feenableexcept, gfortran -ffpe-trap=invalid,zero,overflow); the library
- * never changes the floating-point environment.
+ * never changes the floating-point environment. The exception: a run that
+ * diverges (EG2D_ERR_DIVERGED) may overflow before the divergence is caught.
  *
  * ABI
  * ---
