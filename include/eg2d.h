@@ -65,6 +65,19 @@
  *  - eg2d_version, eg2d_status_string, eg2d_solver_name and
  *    eg2d_parameter_bounds need no handle and are safe from any thread.
  *
+ * Host environment
+ * ----------------
+ * Locale: files, reports and messages write numbers with a '.' and readers
+ * (Plot3D, point and airfoil files) expect one, whatever setlocale the host
+ * made: the bytes written are those of the "C" locale. The library never
+ * changes the process's locale (it switches only the calling thread's, with
+ * uselocale, for the duration of a conversion).
+ * Floating point: no call raises the invalid, divide-by-zero or overflow
+ * flag on valid input, so a host may run with these traps on
+ * (feenableexcept, gfortran -ffpe-trap=invalid,zero,overflow); the library
+ * never changes the floating-point environment. The exception: a run that
+ * diverges (EG2D_ERR_DIVERGED) may overflow before the divergence is caught.
+ *
  * ABI
  * ---
  * libeg2d.so.1 keeps its ABI through all 1.x releases: functions and

@@ -1,5 +1,7 @@
 #include "base/error.hpp"
 
+#include "base/c_locale.hpp"
+
 #include <cstdarg>
 #include <cstdio>
 #include <vector>
@@ -7,6 +9,7 @@
 namespace eg2d {
 
 std::string format(const char *fmt, ...) {
+    const CLocaleScope c;  // messages and JSON numbers: 0.5 whatever the host's locale
     va_list args;
     va_start(args, fmt);
     va_list copy;

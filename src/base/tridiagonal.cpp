@@ -31,7 +31,7 @@ void solve_tridiagonal2(std::size_t n, const double *a, const double *b, double 
     }
 }
 
-void solve_cyclic_tridiagonal(std::size_t n, const double *a, const double *b, const double *c, double *d,
+bool solve_cyclic_tridiagonal(std::size_t n, const double *a, const double *b, const double *c, double *d,
                               std::vector<double> &work) {
     // A = T + u v^T with T tridiagonal: u = (g, 0, .., 0, c[n-1]),
     // v = (1, 0, .., 0, a[0]/g). Solve T y = d and T z = u, then
@@ -52,8 +52,14 @@ void solve_cyclic_tridiagonal(std::size_t n, const double *a, const double *b, c
     z[n - 1] = c[n - 1];
     solve_tridiagonal(n, aa, bb, cy, d);
     solve_tridiagonal(n, aa, bb, cz, z);
-    const double fact = (d[0] + a[0] * d[n - 1] / g) / (1.0 + z[0] + a[0] * z[n - 1] / g);
+    // 1 + v.z = 0: A is singular to rounding (a coarse ring of cells 1e13
+    // times longer than wide): no solution is defined, and dividing would
+    // raise FE_DIVBYZERO.
+    const double den = 1.0 + z[0] + a[0] * z[n - 1] / g;
+    if (den == 0.0) return false;
+    const double fact = (d[0] + a[0] * d[n - 1] / g) / den;
     for (std::size_t k = 0; k < n; ++k) d[k] -= fact * z[k];
+    return true;
 }
 
 }  // namespace eg2d

@@ -18,8 +18,9 @@ void solve_tridiagonal2(std::size_t n, const double *a, const double *b, double 
 
 // The periodic version: a[0] couples u[0] to u[n-1] and c[n-1] couples u[n-1]
 // to u[0]. n >= 3. `work` is scratch (resized as needed). Overwrites d with
-// the solution; a, b, c are left unchanged.
-void solve_cyclic_tridiagonal(std::size_t n, const double *a, const double *b, const double *c, double *d,
+// the solution; a, b, c are left unchanged. False (d is then scratch) when
+// the system is singular to rounding.
+bool solve_cyclic_tridiagonal(std::size_t n, const double *a, const double *b, const double *c, double *d,
                               std::vector<double> &work);
 
 }  // namespace eg2d

@@ -3,6 +3,7 @@
 
 #include <cstdlib>
 
+#include "base/c_locale.hpp"
 #include "base/error.hpp"
 
 namespace eg2d {
@@ -46,14 +47,14 @@ std::string quoted(const std::string &text) {
 bool parse_pair(const std::string &text, double &x, double &y) {
     const char *s = text.c_str();
     char *end;
-    x = std::strtod(s, &end);
+    x = strtod_c(s, &end);
     if (end == s) return false;
     s = end;
     while (is_blank(*s)) ++s;
     if (*s == ',') ++s;
     while (is_blank(*s)) ++s;
     if (s == end && *s != '-' && *s != '+') return false;  // "1 2", "1,2", "1-2" (fixed columns), not "1.2.3"
-    y = std::strtod(s, &end);
+    y = strtod_c(s, &end);
     if (end == s) return false;
     for (s = end; *s; ++s)
         if (!is_blank(*s)) return false;

@@ -256,7 +256,7 @@ double solve_branch(const Branch &b, double target, double &lo, double &hi) {
 
 double distribution_parameter(int id, int n, double first, double p2) {
     if (n < 2) fail(Failure::Argument, format("n = %d: need at least 2 points", n));
-    if (!(first > 0.0 && first < 1.0))
+    if (!(std::isgreater(first, 0.0) && std::isless(first, 1.0)))  // quiet on NaN
         fail(Failure::Argument, format("first_spacing = %g: must be in (0, 1), a fraction of the length", first));
     if (!std::isfinite(p2)) fail(Failure::Argument, format("p2 = %g: must be finite", p2));
     const int N = n - 1;

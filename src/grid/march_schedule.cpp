@@ -54,7 +54,8 @@ double solve_exp_sum(const std::vector<double> &a, const std::vector<double> &b,
         slope = weighted / sum;
     };
     const bool rising = b.back() + b.front() > 0.0;
-    double x = guess && *guess > lo && *guess < hi ? *guess : 0.5 * (lo + hi);
+    // isgreater/isless: a NaN guess (none yet) compares quietly, raising no FP flag.
+    double x = guess && std::isgreater(*guess, lo) && std::isless(*guess, hi) ? *guess : 0.5 * (lo + hi);
     for (int it = 0; it < 100; ++it) {
         double g, slope;
         eval(x, g, slope);

@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "base/c_locale.hpp"
 #include "base/error.hpp"
 
 namespace eg2d {
@@ -104,6 +105,7 @@ void OutputFile::write(const void *data, std::size_t bytes) {
 }
 
 void OutputFile::print(const char *fmt, ...) {
+    const CLocaleScope c;  // every text format's numbers: the same bytes whatever the host's locale
     va_list args;
     va_start(args, fmt);
     const int n = std::vfprintf(f_, fmt, args);

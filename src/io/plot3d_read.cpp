@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "base/c_locale.hpp"
 #include "base/error.hpp"
 #include "base/regular_file.hpp"
 #include "eg2d.h"
@@ -266,7 +267,7 @@ private:
             for (char &ch : token)
                 if (ch == 'D' || ch == 'd') ch = 'E';
             char *stop;
-            const double v = std::strtod(token.c_str(), &stop);
+            const double v = strtod_c(token.c_str(), &stop);
             if (stop != token.c_str() + token.size() || !std::isfinite(v)) {
                 if (where) *where = format("line %d: \"%s\" is not a number", line, std::string(s, e).substr(0, 24).c_str());
                 return false;

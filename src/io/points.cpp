@@ -7,6 +7,7 @@
 #include <fstream>
 #include <vector>
 
+#include "base/c_locale.hpp"
 #include "base/error.hpp"
 #include "base/regular_file.hpp"
 
@@ -26,7 +27,7 @@ bool number(const char *&s, double &v) {
     while (separator(*s)) ++s;
     if (!*s) return false;
     char *stop;
-    v = std::strtod(s, &stop);
+    v = strtod_c(s, &stop);
     if (stop == s) return false;
     s = stop;
     return true;

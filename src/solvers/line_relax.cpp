@@ -95,8 +95,11 @@ void relax_xi_line(System system, const Level &L, int j, double omega, LineWork 
         put(static_cast<std::size_t>(i - i0), line_row(system, L, plain_stencil(row + i, ni), true));
     if (conn.periodic_i()) {
         // Unknowns i = 0..ni-2 form a ring: the west of 0 is ni-2.
-        solve_cyclic_tridiagonal(n, w.a.data(), w.b.data(), w.c.data(), w.dx.data(), w.cyclic);
-        solve_cyclic_tridiagonal(n, w.a.data(), w.b.data(), w.c.data(), w.dy.data(), w.cyclic);
+        if (!solve_cyclic_tridiagonal(n, w.a.data(), w.b.data(), w.c.data(), w.dx.data(), w.cyclic) ||
+            !solve_cyclic_tridiagonal(n, w.a.data(), w.b.data(), w.c.data(), w.dy.data(), w.cyclic)) {
+            w.singular = true;
+            return;
+        }
     } else {
         solve_tridiagonal2(n, w.a.data(), w.b.data(), w.c.data(), w.dx.data(), w.dy.data());
     }

@@ -27,6 +27,9 @@ struct LineWork {
     // rings by about their spacing per iteration, and limiting that slowed
     // it 3x (test_controls_wall); the wall layer's redesign will revisit it.
     bool limit_ring_steps = true;
+    // An O-grid ring's system was singular to rounding (solve_cyclic_tridiagonal):
+    // the ring was left where it was; multigrid drops such a coarse level.
+    bool singular = false;
     void reserve(int n);
 };
 

@@ -272,15 +272,16 @@ private:
         smooth(system_, m, post_, true);
     }
 
-    // A coarse level whose grid went non-finite (a coarse grid too crude for
-    // the geometry: an airfoil's trailing edge on a handful of points) is
+    // A coarse level whose grid went non-finite or whose ring systems went
+    // singular (a coarse grid too crude for the geometry: an airfoil's
+    // trailing edge on a handful of points) is
     // dropped with all coarser ones, for this correction and every later
     // cycle; the cycle goes on with the levels that work.
     bool keep_coarse(std::size_t l) {
         if (l + 1 >= levels_.size()) return false;
         const MgLevel &c = levels_[l + 1];
         for (std::size_t k = 0; k < c.size(); ++k)
-            if (!std::isfinite(c.x[k]) || !std::isfinite(c.y[k])) {
+            if (c.work.singular || !std::isfinite(c.x[k]) || !std::isfinite(c.y[k])) {
                 const std::size_t below = levels_.size() - l - 2;
                 std::string why = format("multigrid: the %dx%d level went non-finite (too coarse for the geometry); "
                                          "it is dropped%s, and the cycles go on with %zu level%s",

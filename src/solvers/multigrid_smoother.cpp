@@ -107,6 +107,10 @@ void coarse_solve(System system, MgLevel &m, double floor) {
     const int cap = std::min(kCoarseSweepCap, 10 + 2 * std::max(m.conn.ni(), m.conn.nj()));
     for (int s = 0; s < cap && best > target && best > floor; ++s) {
         smooth(system, m, 1, (s & 1) != 0);
+        if (m.work.singular) {  // a ring left unsolved (line_relax.hpp): the best iterate stands
+            m.work.singular = false;
+            break;
+        }
         const double r = residual(system, m.level, 0.0).value;
         if (!std::isfinite(r)) break;
         if (r < best) {

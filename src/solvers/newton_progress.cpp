@@ -10,10 +10,12 @@ void NewtonProgress::restart() { *this = NewtonProgress{}; }
 
 void NewtonProgress::observe(double residual, double energy, bool limited, bool barrier, double shift) {
     limited_ = limited ? limited_ + 1 : 0;
-    // V is infinite on a folded corner with a barrier in it: an infinite mark
-    // (the first, or V at a step from a folded grid) gives NaN here, and any
-    // finite V counts as lower; an infinite or NaN V never does.
-    const bool lower = std::isfinite(energy) && !(energy >= mark_ - kEnergyProgress * std::fabs(mark_));
+    // V is infinite on a folded corner with a barrier in it: against an
+    // infinite mark (the first, or V at a step from a folded grid) any finite
+    // V counts as lower; an infinite or NaN V never does. Tested before the
+    // arithmetic, which would raise FE_INVALID (inf - inf).
+    const bool lower = std::isfinite(energy) &&
+                       (!std::isfinite(mark_) || energy < mark_ - kEnergyProgress * std::fabs(mark_));
     if (lower) mark_ = energy;
     if (best_ < 0.0 || residual <= kProgress * best_) {
         best_ = residual;
