@@ -500,8 +500,10 @@ private:
     }
     std::string graded_note(const Grid &g) const {
         std::string s = format("wall layer (graded): the lines leaving the walls re-spaced from their first cells, "
-                               "largest growth %.4g within %d cells of a wall; the solve keeps their spacing",
-                               graded_.shape.growth, kGradedRows);
+                               "largest growth %.4g within %d cells of a wall; the solve keeps their spacing%s",
+                               graded_.shape.growth, kGradedRows,
+                               graded_.kept ? " and their shape (controls inverted from them), turning them to the "
+                                              "walls' normals" : "");
         if (graded_.shape.needed_nj > 0)
             s += format("; the growth exceeds %g: nj >= %d would meet it", kGradedGrowth, graded_.shape.needed_nj);
         if (graded_.shape.needed_ni > 0)

@@ -10,7 +10,10 @@
 // the line's arc lengths t, Phi likewise along the rows) are taken from
 // that start and frozen. The solve then smooths the grid with the spacing
 // kept; the wall control's Sorenson-type updates (controls/wall.cpp) add the
-// last correction of the height and the angle at the wall.
+// last correction of the height and the angle at the wall. A re-spaced
+// start whose cells are near square is kept instead: the controls are
+// those that make it an exact solution (invert_controls.hpp), and the
+// solve only turns the lines to the wall's normal.
 //
 // A wall covers the stretches of its side whose patches are of type wall
 // (all of it by default); on the other stretches the first cell blends
@@ -48,6 +51,7 @@ struct GradedLayer {
     std::vector<GradedFamily> families;
     int updates = 0;      // update_graded_layer's so far
     bool frozen = false;  // the scales are settled: no more updates
+    bool kept = false;    // the re-spaced start is kept (its controls inverted from it; frozen)
 };
 
 // height[side] > 0 makes a side a wall (0 or less: not graded). The grid

@@ -8,6 +8,7 @@
 #include "base/polyline.hpp"
 #include "grid/hybrid_cgrid.hpp"
 #include "grid/hyperbolic.hpp"
+#include "grid/invert_controls.hpp"
 #include "grid/march_schedule.hpp"
 
 namespace eg2d {
@@ -50,28 +51,6 @@ double outer_distance(const Grid &g) {
             d2 = std::min(d2, dx * dx + dy * dy);
         }
     return std::sqrt(d2);
-}
-
-// Phi, Psi at node (i, j) of m, its xi-neighbours a and b, such that
-// alpha (r_xixi + Phi r_xi) - 2 beta r_xieta + gamma (r_etaeta + Psi r_eta) = 0
-// there (NUMERICS.md's central differences): the 2x2 system
-// [alpha r_xi, gamma r_eta] (Phi, Psi) = -(alpha r_xixi - 2 beta r_xieta +
-// gamma r_etaeta), by Cramer's rule (determinant alpha gamma J, nonzero on an
-// unfolded grid).
-void invert_controls(const Grid &m, int i, int a, int b, int j, double &phi, double &psi) {
-    const int ni = m.ni();
-    auto X = [&](int p, int q) { return m.x[at(ni, p, q)]; };
-    auto Y = [&](int p, int q) { return m.y[at(ni, p, q)]; };
-    const double xx = 0.5 * (X(b, j) - X(a, j)), yx = 0.5 * (Y(b, j) - Y(a, j));
-    const double xe = 0.5 * (X(i, j + 1) - X(i, j - 1)), ye = 0.5 * (Y(i, j + 1) - Y(i, j - 1));
-    const double xxx = X(b, j) - 2 * X(i, j) + X(a, j), yxx = Y(b, j) - 2 * Y(i, j) + Y(a, j);
-    const double xee = X(i, j + 1) - 2 * X(i, j) + X(i, j - 1), yee = Y(i, j + 1) - 2 * Y(i, j) + Y(i, j - 1);
-    const double xxe = 0.25 * (X(b, j + 1) - X(b, j - 1) - X(a, j + 1) + X(a, j - 1));
-    const double yxe = 0.25 * (Y(b, j + 1) - Y(b, j - 1) - Y(a, j + 1) + Y(a, j - 1));
-    const double al = xe * xe + ye * ye, be = xx * xe + yx * ye, ga = xx * xx + yx * yx, J = xx * ye - xe * yx;
-    const double rx = al * xxx - 2 * be * xxe + ga * xee, ry = al * yxx - 2 * be * yxe + ga * yee;
-    phi = -(ye * rx - xe * ry) / (al * J);
-    psi = -(xx * ry - yx * rx) / (ga * J);
 }
 
 // The march's rows above `rows` in columns [first, last), each moved by the

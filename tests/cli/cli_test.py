@@ -50,6 +50,43 @@ def case_from_example(directory, example, *replacements):
     return path
 
 
+def check_mesh(test, case):
+    """OpenFOAM's checkMesh (where installed) on a case directory: no failed
+    check but the aspect ratio a y+ 1 layer must have, no negative volume,
+    non-orthogonality at most 70 degrees, skewness at most 4."""
+    checkmesh = shutil_which("checkMesh")
+    if not checkmesh:
+        return
+    env = dict(os.environ)
+    env.setdefault("WM_PROJECT_DIR", "/usr/share/openfoam")
+    out = subprocess.run([checkmesh, "-case", case], capture_output=True, text=True, env=env).stdout
+    failed = re.search(r"Failed (\d+) mesh checks", out)
+    if failed:
+        test.assertEqual(failed.group(1), "1", case)
+        test.assertIn("High aspect ratio cells found", out, case)
+    else:
+        test.assertIn("Mesh OK.", out, case)
+    nonorth = float(re.search(r"Mesh non-orthogonality Max: ([0-9.eE+-]+)", out).group(1))
+    skew = float(re.search(r"Max skewness = ([0-9.eE+-]+)", out).group(1))
+    test.assertLessEqual(nonorth, 70.0, case)
+    test.assertLessEqual(skew, 4.0, case)
+    test.assertNotIn("negative", out.lower().replace("negative volumes: 0", ""), case)
+
+
+def check_cgns_file(test, path, bcs):
+    """cgnscheck (where installed) finds no errors in the file, and it checks
+    each boundary condition named."""
+    cgnscheck = shutil_which("cgnscheck")
+    if not cgnscheck:
+        return
+    p = subprocess.run([cgnscheck, "-v", path], capture_output=True, text=True)
+    out = p.stdout + p.stderr
+    test.assertEqual([l for l in out.splitlines() if "ERROR" in l.upper()], [], path)
+    test.assertIn("checking complete", out, path)
+    for bc in bcs:
+        test.assertIn(f'checking BC "{bc}"', out, path)
+
+
 def check_svg(test, path):
     """The picture is well-formed XML with an <svg> root holding drawing elements."""
     root = ET.parse(path).getroot()
@@ -80,6 +117,14 @@ class Example(unittest.TestCase):
                 self.assertTrue(os.path.getsize(path) > 0, path)
                 if path.endswith(".svg"):
                     check_svg(self, path)
+                # the solver formats read back by readers eg2d did not write
+                if os.path.isdir(os.path.join(path, "constant", "polyMesh")):
+                    check_mesh(self, path)
+                if path.endswith(".cgns"):
+                    check_cgns_file(self, path, ())
+                    if shutil_which("cgnscheck"):  # the walls carry their boundary condition
+                        p = subprocess.run([shutil_which("cgnscheck"), "-v", path], capture_output=True, text=True)
+                        self.assertIn("BC Type=BCWall", p.stdout + p.stderr, path)
             self.assertEqual(sorted(os.listdir(out)), sorted(os.path.basename(p) for p in written))
 
 
@@ -1189,39 +1234,16 @@ class Airfoil(unittest.TestCase):
     def check_cgns(self, name, cgrid):
         """cgnscheck (where installed) finds no errors in NAME.cgns, and it holds
         the boundary conditions and the cut's 1-to-1 connection."""
-        cgnscheck = shutil_which("cgnscheck")
-        if not cgnscheck:
+        check_cgns_file(self, name + ".cgns", ("wall", "farfield", "outflow") if cgrid else ("wall", "farfield"))
+        if not shutil_which("cgnscheck"):
             return
-        p = subprocess.run([cgnscheck, "-v", name + ".cgns"], capture_output=True, text=True)
+        p = subprocess.run([shutil_which("cgnscheck"), "-v", name + ".cgns"], capture_output=True, text=True)
         out = p.stdout + p.stderr
-        self.assertEqual([l for l in out.splitlines() if "ERROR" in l.upper()], [])
-        self.assertIn("checking complete", out)
-        for bc in ("wall", "farfield", "outflow") if cgrid else ("wall", "farfield"):
-            self.assertIn(f'checking BC "{bc}"', out)
         for cut in ("wake_lower", "wake_upper") if cgrid else ("cut_imin", "cut_imax"):
             self.assertIn(f'checking 1to1 connectivity "{cut}"', out)
 
     def check_mesh(self, case):
-        """OpenFOAM's checkMesh on a case directory: no failed check but the
-        aspect ratio a y+ 1 layer must have, no negative volume,
-        non-orthogonality at most 70 degrees, skewness at most 4."""
-        checkmesh = shutil_which("checkMesh")
-        if not checkmesh:
-            return
-        env = dict(os.environ)
-        env.setdefault("WM_PROJECT_DIR", "/usr/share/openfoam")
-        out = subprocess.run([checkmesh, "-case", case], capture_output=True, text=True, env=env).stdout
-        failed = re.search(r"Failed (\d+) mesh checks", out)
-        if failed:
-            self.assertEqual(failed.group(1), "1", case)
-            self.assertIn("High aspect ratio cells found", out, case)
-        else:
-            self.assertIn("Mesh OK.", out, case)
-        nonorth = float(re.search(r"Mesh non-orthogonality Max: ([0-9.eE+-]+)", out).group(1))
-        skew = float(re.search(r"Max skewness = ([0-9.eE+-]+)", out).group(1))
-        self.assertLessEqual(nonorth, 70.0, case)
-        self.assertLessEqual(skew, 4.0, case)
-        self.assertNotIn("negative", out.lower().replace("negative volumes: 0", ""), case)
+        check_mesh(self, case)
 
     def test_o_grid_and_open_trailing_edges(self):
         import math
