@@ -1100,12 +1100,16 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   O-grid (JMIN and JMAX, a body in a pipe), gets the graded layer: before
  *   the solve each grid line leaving a wall is re-spaced along itself,
  *   its cells growing geometrically from the wall's first cell (from both
- *   walls' between two), and the controls Phi, Psi that hold each line's
- *   spacing are taken from that start (Thomas & Middlecoff's (1980)
- *   one-dimensional inversion) and kept for the run; for the first few
- *   updates each line's first cell is measured along the wall normal and
- *   its target rescaled, then the control below turns the lines to the
- *   normal and closes the height. A wall covers the stretches of its side
+ *   walls' between two). When that start's cells are all within 30
+ *   degrees of square, it is kept: the controls Phi, Psi are those that
+ *   make it an exact solution of the equations, and the control below
+ *   turns the lines to the walls' normals. Otherwise the controls are each
+ *   line's one-dimensional inversion (Thomas & Middlecoff 1980), which let
+ *   the solve smooth the grid; after its first cycle each line is
+ *   re-spaced along itself to the layer's cells near the walls and the
+ *   controls are replaced by those that keep that grid, for the rest of
+ *   the run; the control below then turns the lines to the normal and
+ *   closes the height. A wall covers the stretches of its side
  *   whose patches are of type EG2D_PATCH_WALL (the whole side when none
  *   is); on the rest of the side the first cell blends (a smoothstep in its
  *   log) from h to the spacing at the corner the stretch reaches, as NASA's

@@ -124,6 +124,11 @@ inline NodeIJ side_ij(int ni, int nj, Side s, int p, int depth = 0) {
     return {0, 0};
 }
 
+// Array index of node (i, j) of a grid ni wide.
+inline std::size_t node_index(int ni, int i, int j) {
+    return static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * static_cast<std::size_t>(j);
+}
+
 // Array index of the same node.
 inline std::size_t side_node(int ni, int nj, Side s, int p, int depth = 0) {
     const NodeIJ n = side_ij(ni, nj, s, p, depth);

@@ -70,6 +70,12 @@ const ControlFields &ControlSet::update(const Grid &grid, bool start_of_run) {
     return fields_;
 }
 
+bool ControlSet::settled() const {
+    for (const auto &c : controls_)
+        if (c->dynamic() && !c->settled()) return false;
+    return true;
+}
+
 double ControlSet::mismatch() const {
     double m = 0.0;
     for (const auto &c : controls_)

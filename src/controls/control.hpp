@@ -55,6 +55,10 @@ public:
     // the tolerance too: the residual alone cannot see a control that moves
     // slowly (an under-relaxed node that oscillated and was damped).
     virtual double mismatch() const { return 0.0; }
+    // Dynamic terms, after advance(): whether what the term holds besides
+    // the mismatch is met (the graded wall layer's first cells and angles,
+    // measured against the cells' own height, not the domain's extent).
+    virtual bool settled() const { return true; }
     // Dynamic terms: the grid, boundary or controls changed since the last
     // update (ControlSet::dynamic_pending): start again from the state of a
     // new term. The old state belongs to another grid; kept, the wall
@@ -98,6 +102,8 @@ public:
     const ControlFields &fields() const { return fields_; }
     // The largest mismatch() of the dynamic terms (0 without any).
     double mismatch() const;
+    // Every dynamic term settled().
+    bool settled() const;
     void invalidate() { stale_ = unsettled_ = true; }
     // True while a dynamic term has not been updated since the controls, the
     // boundary or the start grid last changed: its fields are still those of

@@ -142,7 +142,7 @@ private:
     // Dynamic controls have been updated since they last changed and are
     // within the tolerance of their target (ControlSet::mismatch() / L).
     bool settled(double extent, double tolerance) const {
-        return !controls_.dynamic_pending() && controls_.mismatch() / extent <= tolerance;
+        return !controls_.dynamic_pending() && controls_.settled() && controls_.mismatch() / extent <= tolerance;
     }
 
     Grid grid_;

@@ -30,10 +30,14 @@ namespace {
 // controls smooth it to 14.5: not kept.
 constexpr double kKeepStartSkew = 30.0;
 
+// fit_length's factor F is at most e^kMostLogScale either way (beyond, the
+// cells are scaled in proportion), found by kBisections halvings of its log.
+constexpr double kMostLogScale = 20.0;
+constexpr int kBisections = 60;
+
 // The longest wall-normal line searched for `needed`.
 constexpr int kMostNodes = 1 << 20;
 
-std::size_t at(int ni, int i, int j) { return static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * j; }
 double dist(const Vec2 &a, const Vec2 &b) { return std::hypot(b.x - a.x, b.y - a.y); }
 
 // First-cell height at each node of a wall side: h on its wall stretches,
@@ -200,7 +204,6 @@ int nodes_needed(double first, double last, double length, int nodes) {
     return hi;
 }
 
-
 // One family of lines (eta lines: columns, for JMIN/JMAX walls; xi lines:
 // rows, for IMIN/IMAX), each with its points, arc lengths and target cells.
 struct Line {
@@ -227,20 +230,20 @@ bool follows(const std::vector<double> &actual, const std::vector<double> &targe
     return end_growth(actual, from_start, from_end) <= kGradedGrowth;
 }
 
-// Cells times a shape factor (none: unchanged), scaled to the length.
-std::vector<double> shaped(std::vector<double> cells, const std::vector<double> &factor, double length) {
+// Cells times a shape factor (none: unchanged), fitted to the length
+// away from the walls (fit_length).
+std::vector<double> shaped(std::vector<double> cells, const std::vector<double> &factor, double length, bool lo,
+                           bool hi) {
     if (factor.empty()) return cells;
-    double sum = 0.0;
-    for (std::size_t k = 0; k < cells.size(); ++k) sum += cells[k] *= factor[k];
-    for (double &c : cells) c *= length / sum;
-    return cells;
+    for (std::size_t k = 0; k < cells.size(); ++k) cells[k] *= factor[k];
+    return fit_length(std::move(cells), wall_shares(static_cast<int>(cells.size()), lo, hi), length);
 }
 
 // The lines between two kept sides take their shape: each cell times
 // exp((1-s) r_0 + s r_N), r the log of a kept side's cell over its target,
 // s = l/(lines-1) (Thomas & Middlecoff's linear interpolation across, in the
 // log of the cells so that they stay positive), then scaled to the length.
-std::vector<std::vector<double>> blend_sides(std::vector<Line> &lines) {
+std::vector<std::vector<double>> blend_sides(std::vector<Line> &lines, bool lo, bool hi) {
     const std::size_t n = lines.size();
     std::vector<double> r0(lines[0].cells.size(), 0.0), rn(r0);
     auto logs = [](const Line &L, std::vector<double> &r) {
@@ -256,7 +259,7 @@ std::vector<std::vector<double>> blend_sides(std::vector<Line> &lines) {
         const double t = static_cast<double>(l) / static_cast<double>(n - 1);
         factor[l].resize(r0.size());
         for (std::size_t k = 0; k < r0.size(); ++k) factor[l][k] = std::exp((1 - t) * r0[k] + t * rn[k]);
-        lines[l].cells = shaped(lines[l].cells, factor[l], lines[l].arc.back());
+        lines[l].cells = shaped(lines[l].cells, factor[l], lines[l].arc.back(), lo, hi);
     }
     return factor;
 }
@@ -294,9 +297,7 @@ void grade_family(Grid &g, bool columns, GradedLayer &out, std::string &moved) {
                  follows(actual_cells(L.arc), L.cells, a > 0.0, b > 0.0);
         if (!L.kept) moved += format("%s%s", moved.empty() ? "" : ", ", side_name(side));
     }
-    fam.factor = ring ? std::vector<std::vector<double>>(all.size()) : blend_sides(all);
-    fam.scale_lo.assign(all.size(), 1.0);
-    fam.scale_hi.assign(all.size(), 1.0);
+    fam.factor = ring ? std::vector<std::vector<double>>(all.size()) : blend_sides(all, !lo.empty(), !hi.empty());
     out.families.push_back(std::move(fam));
     for (int l = 0; l < lines; ++l) {
         const Line &L = all[static_cast<std::size_t>(l)];
@@ -312,7 +313,7 @@ void grade_family(Grid &g, bool columns, GradedLayer &out, std::string &moved) {
         for (int k = 1; k < nodes - 1; ++k) set_node(g, columns ? l : k, columns ? k : l, p[static_cast<std::size_t>(k)]);
     }
     if (ring)
-        for (int k = 1; k < nodes - 1; ++k) set_node(g, count - 1, k, {g.x[at(g.ni(), 0, k)], g.y[at(g.ni(), 0, k)]});
+        for (int k = 1; k < nodes - 1; ++k) set_node(g, count - 1, k, {g.x[node_index(g.ni(), 0, k)], g.y[node_index(g.ni(), 0, k)]});
 }
 
 // Two walls that meet at a corner hold each other's first cells: the
@@ -367,11 +368,11 @@ void keep_start(const Grid &g, GradedLayer &out) {
     const bool ring = g.topology() == Topology::O;
     for (int j = 1; j < nj - 1; ++j)
         for (int i = ring ? 0 : 1; i < ni - 1; ++i) {
-            const std::size_t n = at(ni, i, j);
+            const std::size_t n = node_index(ni, i, j);
             invert_controls(g, i, i == 0 ? ni - 2 : i - 1, i + 1, j, out.phi[n], out.psi[n]);
             if (ring && i == 0) {
-                out.phi[at(ni, ni - 1, j)] = out.phi[n];
-                out.psi[at(ni, ni - 1, j)] = out.psi[n];
+                out.phi[node_index(ni, ni - 1, j)] = out.phi[n];
+                out.psi[node_index(ni, ni - 1, j)] = out.psi[n];
             }
         }
     out.frozen = out.kept = true;
@@ -406,16 +407,16 @@ GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height) {
     for (int j = 1; j < nj - 1; ++j)
         for (int i = ring ? 0 : 1; i < ni - 1; ++i) {
             const int a = i == 0 ? ni - 2 : i - 1, b = i + 1;
-            const Vec2 c{g.x[at(ni, i, j)], g.y[at(ni, i, j)]};
-            const double back = dist({g.x[at(ni, a, j)], g.y[at(ni, a, j)]}, c),
-                         ahead = dist(c, {g.x[at(ni, b, j)], g.y[at(ni, b, j)]});
-            const double below = dist({g.x[at(ni, i, j - 1)], g.y[at(ni, i, j - 1)]}, c),
-                         above = dist(c, {g.x[at(ni, i, j + 1)], g.y[at(ni, i, j + 1)]});
-            out.phi[at(ni, i, j)] = -2.0 * (ahead - back) / (ahead + back);
-            out.psi[at(ni, i, j)] = -2.0 * (above - below) / (above + below);
+            const Vec2 c{g.x[node_index(ni, i, j)], g.y[node_index(ni, i, j)]};
+            const double back = dist({g.x[node_index(ni, a, j)], g.y[node_index(ni, a, j)]}, c),
+                         ahead = dist(c, {g.x[node_index(ni, b, j)], g.y[node_index(ni, b, j)]});
+            const double below = dist({g.x[node_index(ni, i, j - 1)], g.y[node_index(ni, i, j - 1)]}, c),
+                         above = dist(c, {g.x[node_index(ni, i, j + 1)], g.y[node_index(ni, i, j + 1)]});
+            out.phi[node_index(ni, i, j)] = -2.0 * (ahead - back) / (ahead + back);
+            out.psi[node_index(ni, i, j)] = -2.0 * (above - below) / (above + below);
             if (ring && i == 0) {
-                out.phi[at(ni, ni - 1, j)] = out.phi[at(ni, 0, j)];
-                out.psi[at(ni, ni - 1, j)] = out.psi[at(ni, 0, j)];
+                out.phi[node_index(ni, ni - 1, j)] = out.phi[node_index(ni, 0, j)];
+                out.psi[node_index(ni, ni - 1, j)] = out.psi[node_index(ni, 0, j)];
             }
         }
     if (start_skewness(g) <= kKeepStartSkew) keep_start(g, out);
@@ -426,8 +427,37 @@ std::vector<double> graded_target_cells(const GradedLayer &layer, const GradedFa
                                         double length) {
     const std::vector<double> &lo = layer.heights[f.columns ? 0 : 3], &hi = layer.heights[f.columns ? 2 : 1];
     const std::size_t k = static_cast<std::size_t>(l);
-    const double a = lo.empty() ? 0.0 : lo[k] * f.scale_lo[k], b = hi.empty() ? 0.0 : hi[k] * f.scale_hi[k];
-    return shaped(layer_cells(cells, a, b, length), f.factor[k], length);
+    const double a = lo.empty() ? 0.0 : lo[k], b = hi.empty() ? 0.0 : hi[k];
+    return shaped(layer_cells(cells, a, b, length), f.factor[k], length, !lo.empty(), !hi.empty());
+}
+
+std::vector<double> wall_shares(int cells, bool lo, bool hi) {
+    auto share = [](int k) {
+        const double t = std::clamp(static_cast<double>(k - kGradedRows) / kGradedRows, 0.0, 1.0);
+        return 1.0 - t * t * (3.0 - 2.0 * t);
+    };
+    std::vector<double> v(static_cast<std::size_t>(std::max(cells, 0)));
+    for (int k = 0; k < cells; ++k) v[static_cast<std::size_t>(k)] = std::max(lo ? share(k) : 0.0, hi ? share(cells - 1 - k) : 0.0);
+    return v;
+}
+
+std::vector<double> fit_length(std::vector<double> cells, const std::vector<double> &share, double length) {
+    auto sum = [&](double log_f) {
+        double t = 0.0;
+        for (std::size_t q = 0; q < cells.size(); ++q) t += cells[q] * std::exp((1.0 - share[q]) * log_f);
+        return t;
+    };
+    double a = -kMostLogScale, b = kMostLogScale;
+    if (sum(a) < length && sum(b) > length) {
+        for (int it = 0; it < kBisections; ++it) (sum(0.5 * (a + b)) < length ? a : b) = 0.5 * (a + b);
+        const double log_f = 0.5 * (a + b);
+        for (std::size_t q = 0; q < cells.size(); ++q) cells[q] *= std::exp((1.0 - share[q]) * log_f);
+        return cells;
+    }
+    double total = 0.0;  // no room away from the walls: all cells in proportion
+    for (double c : cells) total += c;
+    for (double &c : cells) c *= length / total;
+    return cells;
 }
 
 }  // namespace eg2d

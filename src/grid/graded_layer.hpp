@@ -41,7 +41,6 @@ constexpr double kGradedGrowth = 1.2;
 struct GradedFamily {
     bool columns = true;
     std::vector<std::vector<double>> factor;  // per line, per cell: the shape taken from kept sides
-    std::vector<double> scale_lo, scale_hi;   // per line: first cell asked of it over the wall's height
 };
 
 struct GradedLayer {
@@ -50,7 +49,7 @@ struct GradedLayer {
     std::array<std::vector<double>, 4> heights;  // per wall side, each node's first cell (empty: no wall)
     std::vector<GradedFamily> families;
     int updates = 0;      // update_graded_layer's so far
-    bool frozen = false;  // the scales are settled: no more updates
+    bool frozen = false;  // the controls are final: no more updates
     bool kept = false;    // the re-spaced start is kept (its controls inverted from it; frozen)
 };
 
@@ -59,22 +58,32 @@ struct GradedLayer {
 // meet a wall may move along themselves. Single blocks and O-grids.
 GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height);
 
-// The cells line l of a family should have at its current length: graded
-// from its walls' heights times its scales, in the shape of kept sides.
+// The cells line l of a family should have at its length: graded from its
+// walls' heights, in the shape of kept sides.
 std::vector<double> graded_target_cells(const GradedLayer &layer, const GradedFamily &f, int l, int cells,
                                         double length);
 
-// One update from the grid as it is (graded_layer_update.cpp). The frozen
-// Psi (Phi) holds each line's spacing as fractions of its length, and where
-// the solve bends the lines (the rings of an O-grid between an ellipse and
-// a circle pull on its radial lines) the first cells drift from the height,
-// by 2x at the pipe's wall: so each line's first cell off each wall is
-// measured along the wall's normal, its target scaled by height / measured
-// (relaxed by the exponent omega), and its Psi (Phi) recomputed from the new
-// cells at the line's length, which moves every cell of the line by a
-// smooth factor, not the first one alone. The first updates only: then the
-// scales are frozen (graded_layer_update.cpp). Returns the largest change
-// |dPsi| |r_eta| / 2 it made (the wall control's mismatch measure).
-double update_graded_layer(const Grid &g, GradedLayer &layer, double omega);
+// How much of each of a line's cells belongs to its walls (lo: its first
+// end, hi: its last): 1 within kGradedRows cells of a wall, 0 from twice
+// that, a smoothstep between.
+std::vector<double> wall_shares(int cells, bool lo, bool hi);
+
+// Cells scaled by F^(1 - share) with the F that makes them sum to length:
+// the walls' cells keep their heights, the rest take up the length (all in
+// proportion when that cannot be done).
+std::vector<double> fit_length(std::vector<double> cells, const std::vector<double> &share, double length);
+
+// The update during the run (graded_layer_update.cpp) of a start not kept.
+// The one-dimensional Phi, Psi hold each line's spacing as fractions of its
+// length, not its first cell: where the solve bends the lines (the rings of
+// an O-grid between an ellipse and a circle pull on its radial lines) the
+// first cells drift from the height, by 3x at a pipe's wall. So once the
+// solve has shaped the lines (a cycle), each is re-spaced along itself to
+// its target cells near the walls (blended into the solve's spacing
+// beyond), the controls replaced by those that make the re-spaced grid an
+// exact solution (invert_controls.hpp), and frozen. Returns the largest
+// distance a node has to move to the re-spaced grid (the wall control's
+// mismatch measure), 0 before and after.
+double update_graded_layer(const Grid &g, GradedLayer &layer);
 
 }  // namespace eg2d

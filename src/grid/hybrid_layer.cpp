@@ -39,15 +39,13 @@ constexpr double kCGridSmoothing = 4.0;
 // of the benchmark reaches the bound.
 constexpr double kControlBound = 1.0;
 
-std::size_t at(int ni, int i, int j) { return static_cast<std::size_t>(i) + static_cast<std::size_t>(ni) * j; }
-
 // The least distance of a JMAX node from a JMIN node.
 double outer_distance(const Grid &g) {
     const int ni = g.ni(), top = g.nj() - 1;
     double d2 = std::numeric_limits<double>::infinity();
     for (int a = 0; a < ni; ++a)
         for (int b = 0; b < ni; ++b) {
-            const double dx = g.x[at(ni, a, top)] - g.x[at(ni, b, 0)], dy = g.y[at(ni, a, top)] - g.y[at(ni, b, 0)];
+            const double dx = g.x[node_index(ni, a, top)] - g.x[node_index(ni, b, 0)], dy = g.y[node_index(ni, a, top)] - g.y[node_index(ni, b, 0)];
             d2 = std::min(d2, dx * dx + dy * dy);
         }
     return std::sqrt(d2);
@@ -59,13 +57,13 @@ void start_above(Grid &g, const Grid &m, int rows, int first, int last) {
     const int ni = g.ni(), nj = g.nj();
     for (int i = first; i < last; ++i) {
         const std::vector<double> arc = arc_lengths(grid_column(m, i, nj - 1));
-        const double dx = g.x[at(ni, i, nj - 1)] - m.x[at(ni, i, nj - 1)];
-        const double dy = g.y[at(ni, i, nj - 1)] - m.y[at(ni, i, nj - 1)];
+        const double dx = g.x[node_index(ni, i, nj - 1)] - m.x[node_index(ni, i, nj - 1)];
+        const double dy = g.y[node_index(ni, i, nj - 1)] - m.y[node_index(ni, i, nj - 1)];
         const double base = arc[static_cast<std::size_t>(rows)], span = arc[static_cast<std::size_t>(nj - 1)] - base;
         for (int j = rows + 1; j < nj - 1; ++j) {
             const double f = (arc[static_cast<std::size_t>(j)] - base) / span;
-            g.x[at(ni, i, j)] = m.x[at(ni, i, j)] + f * dx;
-            g.y[at(ni, i, j)] = m.y[at(ni, i, j)] + f * dy;
+            g.x[node_index(ni, i, j)] = m.x[node_index(ni, i, j)] + f * dx;
+            g.y[node_index(ni, i, j)] = m.y[node_index(ni, i, j)] + f * dy;
         }
     }
 }
@@ -196,21 +194,21 @@ HybridLayer shape_hybrid_layer(Grid &g, const Settings &settings, double h, bool
     if (cgrid)
         for (int i : {0, ni - 1}) place_outflow_side(g, m, i, rows);
     for (int j = 1; j <= rows; ++j)
-        for (int i = i0; i < i1; ++i) set_node(g, i, j, {m.x[at(ni, i, j)], m.y[at(ni, i, j)]});
+        for (int i = i0; i < i1; ++i) set_node(g, i, j, {m.x[node_index(ni, i, j)], m.y[node_index(ni, i, j)]});
     if (fill_above) start_above(g, m, rows, i0, i1);
     out.phi.assign(g.size(), 0.0);
     out.psi.assign(g.size(), 0.0);
     int clipped = 0;
     for (int j = rows + 1; j < nj - 1; ++j)
         for (int i = i0; i < ni - 1; ++i) {
-            double &phi = out.phi[at(ni, i, j)], &psi = out.psi[at(ni, i, j)];
+            double &phi = out.phi[node_index(ni, i, j)], &psi = out.psi[node_index(ni, i, j)];
             invert_controls(m, i, i == 0 ? ni - 2 : i - 1, i + 1, j, phi, psi);
             if (std::fabs(phi) > kControlBound || std::fabs(psi) > kControlBound) ++clipped;
             phi = std::clamp(phi, -kControlBound, kControlBound);
             psi = std::clamp(psi, -kControlBound, kControlBound);
             if (i == 0) {
-                out.phi[at(ni, ni - 1, j)] = phi;
-                out.psi[at(ni, ni - 1, j)] = psi;
+                out.phi[node_index(ni, ni - 1, j)] = phi;
+                out.psi[node_index(ni, ni - 1, j)] = psi;
             }
         }
     if (clipped > 0)
@@ -225,14 +223,14 @@ HybridLayer shape_hybrid_layer(Grid &g, const Settings &settings, double h, bool
     std::vector<char> corner(static_cast<std::size_t>(ni), 0);
     for (int i = wake; i < (cgrid ? ni - wake : ni - 1); ++i) {
         const int a = i > 0 ? i - 1 : ni - 2, b = i + 1;
-        if (wall_corner(m, at(ni, a, 0), at(ni, i, 0), at(ni, b, 0)))
+        if (wall_corner(m, node_index(ni, a, 0), node_index(ni, i, 0), node_index(ni, b, 0)))
             for (int k : {a, i, b}) corner[static_cast<std::size_t>(k)] = 1;
     }
     for (int i = wake; i < (cgrid ? ni - wake : ni - 1); ++i) {
         if (corner[static_cast<std::size_t>(i)]) continue;
         const int a = i > 0 ? i - 1 : ni - 2, b = i + 1;
-        const double tx = m.x[at(ni, b, 0)] - m.x[at(ni, a, 0)], ty = m.y[at(ni, b, 0)] - m.y[at(ni, a, 0)];
-        const double ex = m.x[at(ni, i, 1)] - m.x[at(ni, i, 0)], ey = m.y[at(ni, i, 1)] - m.y[at(ni, i, 0)];
+        const double tx = m.x[node_index(ni, b, 0)] - m.x[node_index(ni, a, 0)], ty = m.y[node_index(ni, b, 0)] - m.y[node_index(ni, a, 0)];
+        const double ex = m.x[node_index(ni, i, 1)] - m.x[node_index(ni, i, 0)], ey = m.y[node_index(ni, i, 1)] - m.y[node_index(ni, i, 0)];
         const double e = std::hypot(ex, ey), t = std::hypot(tx, ty);
         out.height_error = std::max(out.height_error, std::fabs(e - h) / h);
         if (e > 0.0 && t > 0.0)
@@ -246,8 +244,8 @@ HybridLayer shape_hybrid_layer(Grid &g, const Settings &settings, double h, bool
     const int lo = wake, hi = cgrid ? ni - 1 - wake : ni - 1;
     double sum = 0.0;
     for (int i = lo; i < hi; ++i)
-        sum += std::hypot(m.x[at(ni, i, rows + 1)] - m.x[at(ni, i, rows)], m.y[at(ni, i, rows + 1)] - m.y[at(ni, i, rows)]) /
-               std::hypot(m.x[at(ni, i, rows)] - m.x[at(ni, i, rows - 1)], m.y[at(ni, i, rows)] - m.y[at(ni, i, rows - 1)]);
+        sum += std::hypot(m.x[node_index(ni, i, rows + 1)] - m.x[node_index(ni, i, rows)], m.y[node_index(ni, i, rows + 1)] - m.y[node_index(ni, i, rows)]) /
+               std::hypot(m.x[node_index(ni, i, rows)] - m.x[node_index(ni, i, rows - 1)], m.y[node_index(ni, i, rows)] - m.y[node_index(ni, i, rows - 1)]);
     out.shape.growth = sum / (hi - lo);
     return out;
 }

@@ -4,8 +4,8 @@ namespace eg2d {
 
 void invert_controls(const Grid &m, int i, int a, int b, int j, double &phi, double &psi) {
     const int ni = m.ni();
-    auto X = [&](int p, int q) { return m.x[static_cast<std::size_t>(p) + static_cast<std::size_t>(ni) * q]; };
-    auto Y = [&](int p, int q) { return m.y[static_cast<std::size_t>(p) + static_cast<std::size_t>(ni) * q]; };
+    auto X = [&](int p, int q) { return m.x[node_index(ni, p, q)]; };
+    auto Y = [&](int p, int q) { return m.y[node_index(ni, p, q)]; };
     const double xx = 0.5 * (X(b, j) - X(a, j)), yx = 0.5 * (Y(b, j) - Y(a, j));
     const double xe = 0.5 * (X(i, j + 1) - X(i, j - 1)), ye = 0.5 * (Y(i, j + 1) - Y(i, j - 1));
     const double xxx = X(b, j) - 2 * X(i, j) + X(a, j), yxx = Y(b, j) - 2 * Y(i, j) + Y(a, j);
