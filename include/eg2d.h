@@ -1101,15 +1101,17 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   the solve each grid line leaving a wall is re-spaced along itself,
  *   its cells growing geometrically from the wall's first cell (from both
  *   walls' between two). When that start's cells are all within 30
- *   degrees of square, it is kept: the controls Phi, Psi are those that
+ *   degrees of square, it is kept: its lines are turned to the walls'
+ *   normals over their first rows, the controls Phi, Psi are those that
  *   make it an exact solution of the equations, and the control below
- *   turns the lines to the walls' normals. Otherwise the controls are each
+ *   closes what is left at the wall. Otherwise the controls are each
  *   line's one-dimensional inversion (Thomas & Middlecoff 1980), which let
  *   the solve smooth the grid; after its first cycle each line is
- *   re-spaced along itself to the layer's cells near the walls and the
- *   controls are replaced by those that keep that grid, for the rest of
- *   the run; the control below then turns the lines to the normal and
- *   closes the height. A wall covers the stretches of its side
+ *   re-spaced along itself to the layer's cells near the walls, turned to
+ *   the normals, and the controls are replaced by those that keep that
+ *   grid for the rest of the run. A graded wall has converged when no
+ *   node's first cell or angle would change by more than 0.1% of its
+ *   height, whatever the tolerance. A wall covers the stretches of its side
  *   whose patches are of type EG2D_PATCH_WALL (the whole side when none
  *   is); on the rest of the side the first cell blends (a smoothstep in its
  *   log) from h to the spacing at the corner the stretch reaches, as NASA's
@@ -1117,7 +1119,9 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   and meets a wall keeps its points when its first cell there is within
  *   10% of the layer's and its cells grow by at most 1.2 (the lines beside
  *   it then take its shape); otherwise its nodes are moved along it to the
- *   layer's spacing, and the run says so. A folded start (the TFI start of
+ *   layer's spacing (to the shape of the side opposite when that one is
+ *   kept, as a wall's points always are), and the run says so; so does a
+ *   kept side whose own points grow by more than 1.2. A folded start (the TFI start of
  *   a curved duct with clustered sides) is first solved without controls,
  *   and the run says so. The first cell is always h; where the rows are
  *   too few for it to grow by at most 1.2 within EG2D_WALL_ROWS cells, the

@@ -202,8 +202,12 @@ public:
         graded_gap_ = graded_.families.empty() ? 0.0 : update_graded_layer(g, graded_);
         // The layer's grid changed under the updates below: their state was
         // that of the lines before (on the TMR bump's case file, kept, it
-        // left a kink of 1.24 between the first two cells).
-        if (reshaping && graded_.frozen) restart();
+        // left a kink of 1.24 between the first two cells), and measured on
+        // the grid before the change it was a gap of 60% of the first cell.
+        if (reshaping && graded_.frozen) {  // and the grid has yet to reach its new lines: measured next time
+            restart();
+            return;
+        }
         const double step = pace.step * kStepLimit;
         const double orient = boundary_orientation(g);  // J's sign, from the boundary alone (base/folds.hpp)
         for (int side = 0; side < 4; ++side) {

@@ -73,6 +73,11 @@ std::vector<double> wall_shares(int cells, bool lo, bool hi);
 // proportion when that cannot be done).
 std::vector<double> fit_length(std::vector<double> cells, const std::vector<double> &share, double length);
 
+// Each wall's lines turned to its normal near it: all the way at the wall,
+// less over the first rows (a smoothstep), keeping each node's distance
+// along its line.
+void turn_to_normals(Grid &g, const GradedLayer &layer);
+
 // The update during the run (graded_layer_update.cpp) of a start not kept.
 // The one-dimensional Phi, Psi hold each line's spacing as fractions of its
 // length, not its first cell: where the solve bends the lines (the rings of

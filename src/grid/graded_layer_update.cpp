@@ -60,6 +60,7 @@ double update_graded_layer(const Grid &g, GradedLayer &layer) {
     if (layer.updates++ < kShapeCycles) return 0.0;
     Grid m = g;
     for (const GradedFamily &f : layer.families) respace_family(m, layer, f);
+    turn_to_normals(m, layer);
     const int ni = g.ni(), nj = g.nj();
     const bool ring = g.topology() == Topology::O;
     double moved = 0.0;
