@@ -1,7 +1,8 @@
 /* Wall-resolved grids of internal flows side by side (eg2d_bench --internal):
  * NASA TMR's flat plate and bump-in-channel (their boundary points and wall
- * stretches as published), a bend, an S-shaped diffuser, a body in a pipe
- * and a cavity (tests/support/internal.h), each solved three ways from the
+ * stretches as published), a bend, an S-shaped diffuser, a body in a pipe,
+ * two walls meeting at a corner and a cavity (tests/support/internal.h), at
+ * the sizes users pick, each solved three ways from the
  * same boundary with the default solver, residual 1e-10:
  *   none     no wall control (the time the layer is measured against);
  *   before   EG2D_ORTHO_WALL with EG2D_PARAM_WALL_LAYER 0: the Sorenson-type
@@ -19,8 +20,11 @@
 #include "bench.h"
 #include "internal.h"
 
+typedef enum { PLATE, BUMP, BEND, DIFFUSER, PIPE, CAVITY, CORNER } domain;
+
 typedef struct {
     const char *name;
+    domain d;
     int ni, nj, topology;
     int walls;  /* a mask of 1 << side */
     double h;
@@ -36,13 +40,26 @@ static int by_value(const void *a, const void *b) {
 
 static int set_domain(eg2d_grid *g, const internal_case *c) {
     if (c->topology != EG2D_TOPO_SINGLE) eg2d_set_topology(g, c->topology);
-    switch (c->name[0]) {
-    case 'f': return domain_set_tmr(g, EG2D_TEST_DATA, "flatplate_137x97", 1);
-    case 'b': return c->name[1] == 'u' ? domain_set_tmr(g, EG2D_TEST_DATA, "bump_177x81", 1) : domain_set_bend(g);
-    case 'd': return domain_set_diffuser(g, c->h);
-    case 'p': return domain_set_pipe(g);
-    default: return domain_set_cavity(g, c->h);
+    switch (c->d) {
+    case PLATE: return domain_set_tmr(g, EG2D_TEST_DATA, "flatplate_137x97", 1);
+    case BUMP: return domain_set_tmr(g, EG2D_TEST_DATA, "bump_177x81", 1);
+    case BEND: return domain_set_bend(g);
+    case DIFFUSER: return domain_set_diffuser(g, c->h);
+    case PIPE: return domain_set_pipe(g);
+    default: return domain_set_cavity(g, c->h);  /* CAVITY, CORNER: sides clustered at both ends */
     }
+}
+
+/* With EG2D_BENCH_WRITE=DIR the default method's grid of each case is also
+ * written as an OpenFOAM case DIR/CASE-NIxNJ (bench/internal_checkmesh.sh
+ * runs checkMesh on them). */
+static void write_case(const eg2d_grid *g, const internal_case *c) {
+    const char *dir = getenv("EG2D_BENCH_WRITE");
+    if (!dir) return;
+    static const char *const tag[] = {"plate", "bump", "bend", "diffuser", "pipe", "cavity", "corner"};
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s-%dx%d", dir, tag[c->d], c->ni, c->nj);
+    if (eg2d_write(g, path, EG2D_FORMAT_OPENFOAM) != EG2D_OK) fprintf(stderr, "%s: %s\n", path, eg2d_last_error(g));
 }
 
 static void run(const internal_case *c, method m, double *baseline) {
@@ -79,6 +96,7 @@ static void run(const internal_case *c, method m, double *baseline) {
             eg2d_get_quality(g, EG2D_QUALITY_SKEWNESS, &skew);
             eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &folds);
             snprintf(tail, sizeof tail, "%.1f | %g", skew, folds);
+            if (m == DEFAULT) write_case(g, c);
         }
         eg2d_destroy(g);
     }
@@ -90,14 +108,27 @@ static void run(const internal_case *c, method m, double *baseline) {
 }
 
 void bench_internal(void) {
+    /* First cells: TMR's where the case is TMR's; else 1e-5 where the rows
+     * allow growth 1.2 and a larger one where they do not (80 rows between
+     * two walls 1 apart need about 1.27 from 1e-5), as a user picks them. */
     static const internal_case cases[] = {
-        {"flat plate (TMR)", 137, 97, EG2D_TOPO_SINGLE, 1, 2e-6},
-        {"bump (TMR)", 177, 81, EG2D_TOPO_SINGLE, 1, 4e-6},
-        {"bend", 257, 129, EG2D_TOPO_SINGLE, 5, 1e-5},
-        {"bend", 385, 129, EG2D_TOPO_SINGLE, 5, 1e-5},
-        {"diffuser (clustered inlet)", 257, 129, EG2D_TOPO_SINGLE, 5, 1e-5},
-        {"pipe with a body (O)", 257, 129, EG2D_TOPO_O, 5, 1e-5},
-        {"cavity (clustered corners)", 129, 129, EG2D_TOPO_SINGLE, 15, 1e-4},
+        {"flat plate (TMR)", PLATE, 137, 97, EG2D_TOPO_SINGLE, 1, 2e-6},
+        {"bump (TMR)", BUMP, 177, 81, EG2D_TOPO_SINGLE, 1, 4e-6},
+        {"bend", BEND, 177, 81, EG2D_TOPO_SINGLE, 5, 1e-4},
+        {"bend", BEND, 137, 97, EG2D_TOPO_SINGLE, 5, 5e-5},
+        {"bend", BEND, 257, 129, EG2D_TOPO_SINGLE, 5, 1e-5},
+        {"bend", BEND, 385, 129, EG2D_TOPO_SINGLE, 5, 1e-5},
+        {"diffuser (clustered inlet)", DIFFUSER, 177, 81, EG2D_TOPO_SINGLE, 5, 2e-4},
+        {"diffuser (clustered inlet)", DIFFUSER, 257, 129, EG2D_TOPO_SINGLE, 5, 1e-5},
+        {"diffuser (clustered inlet)", DIFFUSER, 385, 129, EG2D_TOPO_SINGLE, 5, 1e-5},
+        {"pipe with a body (O)", PIPE, 177, 81, EG2D_TOPO_O, 5, 2e-4},
+        {"pipe with a body (O)", PIPE, 257, 129, EG2D_TOPO_O, 5, 1e-5},
+        {"pipe with a body (O)", PIPE, 385, 129, EG2D_TOPO_O, 5, 1e-5},
+        {"corner, walls JMIN and IMIN (sides clustered)", CORNER, 137, 97, EG2D_TOPO_SINGLE, 9, 1e-4},
+        {"corner, walls JMIN and IMIN (sides clustered)", CORNER, 257, 129, EG2D_TOPO_SINGLE, 9, 1e-4},
+        {"corner, walls JMIN and IMIN (sides clustered)", CORNER, 385, 129, EG2D_TOPO_SINGLE, 9, 1e-4},
+        {"cavity (clustered corners)", CAVITY, 129, 129, EG2D_TOPO_SINGLE, 15, 1e-4},
+        {"cavity (clustered corners)", CAVITY, 257, 129, EG2D_TOPO_SINGLE, 15, 1e-4},
     };
     printf("Residual 1e-10, the default solver (multigrid); CPU seconds are medians of 3, the ratio is to \"none\" in\n"
            "the same run. Per wall: first cell median (range), growth over 30 cells, angle from the normal (deg).\n\n");

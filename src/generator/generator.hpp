@@ -133,7 +133,7 @@ private:
     void untangle_start(const ControlFields &fields, const Settings &run_settings);
     // Uncontrolled-or-given Winslow multigrid cycles on the grid until the
     // tolerance (at most kUntangleCycles); r: the residual at the end.
-    int winslow_cycles(const ControlFields &fields, const Settings &run_settings, double &r);
+    int winslow_cycles(const ControlFields &fields, const Settings &run_settings, double tolerance, double &r);
     // One update of the dynamic controls before an iteration; true (and r
     // the residual after it) when the solver converges each iteration.
     bool advance_dynamic_controls(Problem &problem, double extent, double &r);

@@ -36,12 +36,15 @@ constexpr double kMostLogScale = 20.0;
 constexpr int kBisections = 60;
 
 // turn_to_normals turns the lines over this many rows from a wall (at most
-// half of them between two walls). Before the controls are inverted from a
-// kept start, so that the wall control has little left to turn (257x129 at
-// 1e-5; cycles and skewness in degrees for 0, 10, 30 and 60 rows): bend 5,
-// 0, 0, 0 cycles (0.5 degrees each); pipe 6, 5, 3, 2 (11.7, 15.5, 12.8,
-// 10.0); diffuser 7, 5, 3, 2 (26.6, 34.7, 29.0, 26.4). After the re-spacing
-// of a start not kept: TMR bump 177x81 at 4e-6 in 4 cycles against 9.
+// half of them between two walls), the first row all the way. Before the
+// controls are inverted from a kept start, so that the wall control has
+// nothing left to turn (257x129 at 1e-5; cycles and skewness in degrees for
+// 0, 10, 30 and 60 rows, the first turned in part): bend 5, 0, 0, 0 (0.5
+// each); pipe 6, 5, 3, 2 (11.7, 15.5, 12.8, 10.0); diffuser 7, 5, 3, 2
+// (26.6, 34.7, 29.0, 26.4). The first row all the way: 0 cycles for all
+// three, and for the diffuser at 177x81 (2e-4) against 6. After the
+// re-spacing of a start not kept: the TMR bump 177x81 at 4e-6 in 4 cycles
+// against 9.
 constexpr int kTurnRows = 60;
 
 // The longest wall-normal line searched for `needed`.
@@ -269,8 +272,18 @@ std::vector<std::vector<double>> blend_sides(std::vector<Line> &lines, bool lo, 
     // ends (a cavity's, Vinokur's) with IMAX moved to the layer's one-sided
     // spacing sheared the rows between by up to 89 degrees (177x81 at 1e-4:
     // every multigrid cycle folded), where the unit square has a tensor grid.
-    if (!lines.front().kept) r0 = rn;
-    if (!lines.back().kept) rn = r0;
+    // Not where that shape, on the moved side's length, grows faster than
+    // the layer allows and than the kept side itself does (an S-shaped
+    // diffuser's outlet, twice its inlet's width, took the inlet's Vinokur
+    // spacing, 1.165, to 1.21 at 177x81).
+    auto adopts = [&](const Line &moved, const Line &kept, const std::vector<double> &r) {
+        std::vector<double> f(r.size());
+        for (std::size_t k = 0; k < r.size(); ++k) f[k] = std::exp(r[k]);
+        const double grows = end_growth(shaped(moved.cells, f, moved.arc.back(), lo, hi), lo, hi);
+        return grows <= std::max(kGradedGrowth, end_growth(actual_cells(kept.arc), lo, hi));
+    };
+    if (!lines.front().kept && adopts(lines.front(), lines.back(), rn)) r0 = rn;
+    if (!lines.back().kept && adopts(lines.back(), lines.front(), r0)) rn = r0;
     for (std::size_t l = 0; l < n; ++l) {
         if (lines[l].kept) continue;
         const double t = static_cast<double>(l) / static_cast<double>(n - 1);
@@ -427,7 +440,7 @@ void turn_to_normals(Grid &g, const GradedLayer &layer) {
                 if (n.x == 0.0 && n.y == 0.0) continue;
                 for (int m = 1; m < K && m < nodes - 1; ++m) {
                     const std::size_t k = static_cast<std::size_t>(w + step * m);
-                    const double t = m / K, b = 1.0 - t * t * (3.0 - 2.0 * t);
+                    const double t = (m - 1) / (K - 1), b = 1.0 - t * t * (3.0 - 2.0 * t);
                     const double d = std::fabs(arc[k] - arc[iw]);
                     q[k] = {q[k].x + b * (p[iw].x + d * n.x - q[k].x), q[k].y + b * (p[iw].y + d * n.y - q[k].y)};
                 }
