@@ -214,9 +214,7 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
     const Args a = parse(argc, argv);
     rerun_with_huge_pages(whole_argv, static_cast<double>(a.ni) * a.nj, a.quiet);
     const std::vector<Output> outputs = outputs_of("airfoil", a.formats);
-    double h = a.first;
-    if (h == 0 && eg2d_first_cell_height(a.yplus, a.reynolds, 1.0, &h) != EG2D_OK)
-        throw Failure(EXIT_GEOMETRY, std::string("airfoil: ") + eg2d_last_error(nullptr));
+    const double h = first_cell("airfoil", a.first, a.yplus, a.reynolds, 1.0);
     eg2d_curve *raw = nullptr;
     const bool naca = is_naca4(a.source);
     // A NACA code is the standard open section with its base kept blunt, or

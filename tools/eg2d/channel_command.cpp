@@ -10,35 +10,46 @@
 #include <vector>
 
 #include "failure.hpp"
+#include "formula.hpp"
 #include "front_end.hpp"
 #include "grid_views.hpp"
-#include "piece_curve.hpp"
 #include "progress.hpp"
-#include "side_spec.hpp"
+#include "channel_check.hpp"
+#include "channel_walls.hpp"
 #include "wall_summary.hpp"
 
 namespace eg2dtool {
 
 const char *const channel_help =
-    "usage: eg2d channel --lower WALL --upper WALL --size NIxNJ\n"
+    "usage: eg2d channel (--lower WALL --upper WALL | --centreline CURVE --width W) --size NIxNJ\n"
     "                   (--first-cell H | --yplus Y --reynolds RE [--length L])\n"
-    "                   [--symmetry-upper] [--growth G] [--levels N] [--format LIST] [-o DIR] [--quiet]\n"
+    "                   [--symmetry-upper] [--spline] [--inlet-spacing A] [--outlet-spacing B]\n"
+    "                   [--growth G] [--levels N] [--format LIST] [-o DIR] [--quiet]\n"
     "\n"
     "A single-block grid of an internal flow (a channel, duct or diffuser) between two\n"
-    "walls, wall-resolved on both (the graded wall layer), with the inlet (IMIN) and\n"
-    "outlet (IMAX) straight between the walls' ends, written as a family of nested grids\n"
-    "in the formats flow solvers read.\n"
+    "walls, wall-resolved on both (the library's graded wall layer), with the inlet\n"
+    "(IMIN) and outlet (IMAX) straight between the walls' ends, written as a family of\n"
+    "nested grids in the formats flow solvers read.\n"
     "  --lower, --upper\n"
-    "                 the walls, each from inlet to outlet: a point file (x y per line) or\n"
-    "                 two expressions \"x(s);y(s)\" in s from 0 to 1 (muParser: sin, cos,\n"
-    "                 pi, ...); the NI nodes are placed uniformly in arc length along\n"
-    "                 the polyline or the expressions' curve\n"
+    "                 the walls, each from the inlet to the outlet, the upper on the left\n"
+    "                 of the lower: a point file (x y per line) or two expressions\n"
+    "                 \"x(s);y(s)\" in s from 0 to 1 (muParser: sin, cos, pi, ...)\n"
+    "  --centreline, --width\n"
+    "                 or a centreline (a point file or \"x(s);y(s)\") and the width across\n"
+    "                 it, a number or an expression in s (its arc length from 0 to 1):\n"
+    "                 each wall half the width from the centreline along its normal\n"
+    "  --spline       a point file's points joined by a cubic spline (default: straight)\n"
+    "  --inlet-spacing, --outlet-spacing\n"
+    "                 the spacing of the nodes along the walls at the inlet, the outlet\n"
+    "                 (length units; Vinokur 1983's two-sided stretching; the other end\n"
+    "                 uniform when only one is given). Default: uniform in arc length\n"
     "  --size         the finest grid, NI x NJ nodes (NJ across the channel)\n"
-    "  --first-cell   the first cell's height at both walls, in the walls' length unit\n"
+    "  --first-cell   the first cell's height at the walls, in the walls' length unit\n"
     "  --yplus, --reynolds, --length\n"
     "                 or the first cell from y+ at the Reynolds number based on --length\n"
-    "                 (default the lower wall's length), by the turbulent flat-plate skin\n"
-    "                 friction Cf = (2 log10(Re) - 0.65)^-2.3 (Schlichting 1979)\n"
+    "                 (default the lower wall's length; the centreline's), by the turbulent\n"
+    "                 flat-plate skin friction Cf = (2 log10(Re) - 0.65)^-2.3 (Schlichting\n"
+    "                 1979), as eg2d airfoil does\n"
     "  --symmetry-upper\n"
     "                 the upper side is a symmetry plane (a half channel): no wall layer\n"
     "  --growth       the largest growth of a wall layer's cells accepted (default 1.2);\n"
@@ -51,20 +62,30 @@ const char *const channel_help =
     "                 pictures svg and png: the domain and the lower wall's inlet corner);\n"
     "                 default plot3d. A report (text and JSON) is always written\n"
     "  -o DIR         the output directory (default .)\n"
-    "Patches: lower_wall and upper_wall (walls; upper: symmetry with --symmetry-upper),\n"
-    "  inlet (inflow) and outlet (outflow), in every format that has boundary conditions.\n"
+    "Patches: lower_wall and upper_wall (walls; with --symmetry-upper the upper is\n"
+    "  symmetry), inlet (inflow) and outlet (outflow), in every format that has\n"
+    "  boundary conditions (SU2 markers, the OpenFOAM boundary file, CGNS BCs).\n"
     "Files: DIR/channel-NIxNJ.EXT per level and format (the extensions of eg2d run).\n"
-    "Exit codes: 2 a bad command line, 3 a bad expression, 8 a point file that cannot be\n"
-    "  read, 4 a wall layer that grows too fast (or walls the library refuses).\n"
+    "After the files, one line per wall: its first cell and its growth over 30 cells.\n"
+    "Exit codes: 0 done; 2 a bad command line; 3 a bad expression or point file; 4 walls\n"
+    "  that cross or run opposite ways, a domain the library refuses, or a wall layer\n"
+    "  that grows too fast (then only with the files written); 5, 6, 7 not converged,\n"
+    "  diverged, folded; 8 a file that cannot be read or written. Nothing is written but\n"
+    "  for exit 0 and a wall layer's exit 4.\n"
     "\n"
-    "example:\n"
+    "examples:\n"
     "  eg2d channel --lower \"4*s;0\" --upper \"4*s;1\" --size 257x129 --first-cell 1e-4 \\\n"
-    "       --levels 2 --format su2,openfoam,cgns -o out\n";
+    "       --levels 2 --format su2,openfoam,cgns -o out\n"
+    "  eg2d channel --lower lower.dat --upper upper.dat --size 257x129 --yplus 1 \\\n"
+    "       --reynolds 1e6 --format openfoam,svg -o diffuser\n"
+    "  eg2d channel --centreline \"4*s;0.5*sin(pi*s)\" --width \"1 + 0.5*s\" --size 257x129 \\\n"
+    "       --first-cell 1e-4 -o bend\n";
 
 namespace {
 
 struct Args {
-    std::string lower, upper, out_dir = ".", formats = "plot3d";
+    WallOptions walls;
+    std::string out_dir = ".", formats = "plot3d";
     int ni = 0, nj = 0, levels = 1;
     double yplus = 0, reynolds = 0, length = 0, first = 0, growth = 1.2;
     bool quiet = false, symmetry = false;
@@ -78,16 +99,20 @@ Args parse(int argc, char **argv) {
     Args a;
     for (int k = 1; k < argc; ++k) {
         const std::string arg = argv[k];
-        if (arg == "--quiet" || arg == "--symmetry-upper") {
-            (arg == "--quiet" ? a.quiet : a.symmetry) = true;
+        if (arg == "--quiet" || arg == "--symmetry-upper" || arg == "--spline") {
+            (arg == "--quiet" ? a.quiet : arg == "--spline" ? a.walls.spline : a.symmetry) = true;
             continue;
         }
         if (arg.size() < 2 || arg[0] != '-') usage("unexpected argument \"" + arg + "\" (the walls are --lower and --upper)");
         if (k + 1 >= argc) usage(arg + " needs a value");
         const std::string v = argv[++k];
         if (arg == "-o") a.out_dir = v;
-        else if (arg == "--lower") a.lower = v;
-        else if (arg == "--upper") a.upper = v;
+        else if (arg == "--lower") a.walls.lower = v;
+        else if (arg == "--upper") a.walls.upper = v;
+        else if (arg == "--centreline" || arg == "--centerline") a.walls.centreline = v;
+        else if (arg == "--width") a.walls.width = v;
+        else if (arg == "--inlet-spacing") a.walls.inlet_spacing = number(arg, v);
+        else if (arg == "--outlet-spacing") a.walls.outlet_spacing = number(arg, v);
         else if (arg == "--format") a.formats = v;
         else if (arg == "--yplus") a.yplus = number(arg, v);
         else if (arg == "--reynolds") a.reynolds = number(arg, v);
@@ -98,40 +123,21 @@ Args parse(int argc, char **argv) {
         else if (arg == "--size") parse_size("channel", v, a.ni, a.nj);
         else usage("unknown option " + arg);
     }
-    if (a.lower.empty()) usage("no --lower (a point file or \"x(s);y(s)\")");
-    if (a.upper.empty()) usage("no --upper (a point file or \"x(s);y(s)\")");
+    const WallOptions &w = a.walls;
+    if (!w.centreline.empty() || !w.width.empty()) {
+        if (!w.lower.empty() || !w.upper.empty()) usage("give --lower and --upper, or --centreline and --width, not both");
+        if (w.centreline.empty()) usage("--width needs --centreline (a point file or \"x(s);y(s)\")");
+        if (w.width.empty()) usage("--centreline needs --width (a number or an expression in s)");
+    } else {
+        if (w.lower.empty()) usage("no --lower (a point file or \"x(s);y(s)\")");
+        if (w.upper.empty()) usage("no --upper (a point file or \"x(s);y(s)\")");
+    }
     if (a.ni == 0) usage("no --size");
     const bool from_yplus = a.yplus > 0 || a.reynolds > 0 || a.length > 0;
     if ((a.first > 0) == from_yplus) usage("give --first-cell, or --yplus with --reynolds (and --length)");
     if (from_yplus && (a.yplus <= 0 || a.reynolds <= 0)) usage("--yplus needs --reynolds, and --reynolds --yplus");
     check_levels("channel", a.ni, a.nj, a.levels);
     return a;
-}
-
-// The n nodes of a wall uniformly in arc length: a side piece of the case
-// files' kind (a formula pair or a point file's polyline) through the
-// library's curves, its failures naming the option.
-void wall_nodes(const std::string &option, const std::string &wall, int n, std::vector<double> &x, std::vector<double> &y) {
-    SidePiece p;
-    p.where = Location{"channel", option, 0, 0};
-    const std::size_t semicolon = wall.find(';');
-    if (semicolon != std::string::npos) {
-        p.x = wall.substr(0, semicolon);
-        p.y = wall.substr(semicolon + 1);
-        p.x_at = p.y_at = p.where;
-    } else {
-        read_point_file(wall, p.where, p.px, p.py);
-        p.curve = "polyline";
-    }
-    p.distribution.given = true;
-    p.distribution.kind = EG2D_DIST_UNIFORM;
-    curve_nodes(p, n, Constants{}, x, y);
-}
-
-double polyline_length(const std::vector<double> &x, const std::vector<double> &y) {
-    double length = 0;
-    for (std::size_t k = 1; k < x.size(); ++k) length += std::hypot(x[k] - x[k - 1], y[k] - y[k - 1]);
-    return length;
 }
 
 // The patches of a level of ni x nj nodes: both walls (the upper a symmetry
@@ -163,13 +169,12 @@ int run_channel(int argc, char **argv) {
         }
     const Args a = parse(argc, argv);
     const std::vector<Output> outputs = outputs_of("channel", a.formats);
-    std::vector<double> lx, ly, ux, uy;
-    wall_nodes("--lower", a.lower, a.ni, lx, ly);
-    wall_nodes("--upper", a.upper, a.ni, ux, uy);
-    const double length = a.length > 0 ? a.length : polyline_length(lx, ly);
-    double h = a.first;
-    if (h == 0 && eg2d_first_cell_height(a.yplus, a.reynolds, length, &h) != EG2D_OK)
-        throw Failure(EXIT_USAGE, std::string("channel: --yplus, --reynolds: ") + eg2d_last_error(nullptr));
+    const Walls walls = channel_walls(a.walls, a.ni);
+    check_channel_walls(walls);
+    const std::vector<double> &lx = walls.lx, &ly = walls.ly, &ux = walls.ux, &uy = walls.uy;
+    const double length = a.length > 0 ? a.length : a.walls.centreline.empty() ? polyline_length(lx, ly)
+                                                                              : centreline_length(walls);
+    const double h = first_cell("channel", a.first, a.yplus, a.reynolds, length);
 
     eg2d_grid *raw = nullptr;
     if (eg2d_create(a.ni, a.nj, &raw) != EG2D_OK)
@@ -199,9 +204,10 @@ int run_channel(int argc, char **argv) {
     if (!a.symmetry) check(g, eg2d_set_wall_spacing(g, EG2D_SIDE_JMAX, h), "channel: the first cell");
     check(g, eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), "channel: the wall control");
     if (!a.quiet)
-        std::printf("channel %dx%d, first cell %.4g (%s), lower wall %.6g long, %s\n", a.ni, a.nj, h,
-                    a.first > 0 ? "--first-cell" : "from y+", polyline_length(lx, ly),
-                    a.symmetry ? "upper side a symmetry plane" : "two walls");
+        std::printf("channel %dx%d, first cell %.4g (%s), lower wall %.6g long, upper %.6g, %s\n", a.ni, a.nj, h,
+                    a.first > 0 ? "--first-cell" : ("from y+ at Re " + fmt(a.reynolds) + " on length " + fmt(length)).c_str(),
+                    polyline_length(lx, ly), polyline_length(ux, uy),
+                    a.symmetry ? "the upper side a symmetry plane" : "two walls");
     Progress progress(isatty(STDOUT_FILENO) != 0, a.quiet);
     check(g, eg2d_set_monitor(g, Progress::monitor, &progress), "monitor");
     const int status = eg2d_solve(g);

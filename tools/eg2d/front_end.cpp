@@ -6,6 +6,7 @@
 
 #include "failure.hpp"
 #include "features.hpp"
+#include "formula.hpp"
 #include "grid_lines.hpp"
 #include "runner.hpp"
 #include "text_output.hpp"
@@ -23,6 +24,15 @@ double positive_number(const std::string &command, const std::string &option, co
     if (value.empty() || !end || *end || !std::isfinite(v) || v <= 0)
         front_end_usage(command, option + " expects a positive number, found \"" + value + "\"");
     return v;
+}
+
+double first_cell(const std::string &command, double first, double yplus, double reynolds, double length) {
+    double h = first;
+    if (h > 0) return h;
+    if (eg2d_first_cell_height(yplus, reynolds, length, &h) != EG2D_OK)
+        throw Failure(EXIT_USAGE, command + ": --yplus " + fmt(yplus) + ", --reynolds " + fmt(reynolds) + ": " +
+                                      eg2d_last_error(nullptr));
+    return h;
 }
 
 void parse_size(const std::string &command, const std::string &v, int &ni, int &nj) {

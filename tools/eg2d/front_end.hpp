@@ -33,6 +33,12 @@ struct Output {
 // A positive finite number of an option, or a usage failure naming it.
 double positive_number(const std::string &command, const std::string &option, const std::string &value);
 
+// The first cell's height: `first` when given (> 0), else the height for
+// y+ at the Reynolds number based on `length`, by the library's turbulent
+// flat-plate estimate (eg2d_first_cell_height: Schlichting 1979).
+// Failure(EXIT_USAGE) naming --yplus and --reynolds when the library refuses them.
+double first_cell(const std::string &command, double first, double yplus, double reynolds, double length);
+
 // --size NIxNJ (9 <= NI, 5 <= NJ, both <= 100000).
 void parse_size(const std::string &command, const std::string &value, int &ni, int &nj);
 
