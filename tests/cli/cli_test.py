@@ -1621,8 +1621,8 @@ class Channel(unittest.TestCase):
                      "--lower", "4*s;0", "--upper", "4*s;1+")
         self.failure(3, 'channel: --lower: bad formula "sinh(s": Missing parenthesis',
                      "--lower", "4*s;sinh(s", "--upper", "4*s;1")
-        self.failure(3, 'channel: --width: "1 - 2*s" is -0.015625 at s = 0.5078125, not positive',
-                     "--centreline", "4*s;0", "--width", "1 - 2*s")
+        self.failure(3, 'channel: --width: "0.3 - s" is -0.0125 at s = 0.3125, not positive',
+                     "--centreline", "4*s;0", "--width", "0.3 - s")
 
     def test_unreadable_file_and_bad_walls(self):
         self.failure(8, "channel: --lower: eg2d_read_points: D/none.dat: cannot open: No such file or directory",
