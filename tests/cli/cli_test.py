@@ -1638,6 +1638,18 @@ class Channel(unittest.TestCase):
         self.failure(2, "channel: give --lower and --upper, or --centreline and --width, not both (eg2d channel "
                         "--help shows the usage)", "--lower", "4*s;0", "--upper", "4*s;1", "--width", "1")
 
+    def test_docs_pictures_are_current(self):
+        # docs/channel.md's pictures are what its command draws now
+        docs = os.path.join(EXAMPLES, os.pardir, "docs", "channel")
+        with tempfile.TemporaryDirectory() as d:
+            self.channel(d, "--centreline", "4*s;0.5*sin(pi*s)", "--width", "1 + 0.5*s", "--size", "129x65",
+                         "--first-cell", "1e-3", "--inlet-spacing", "0.01", "--outlet-spacing", "0.05", "--format", "svg")
+            for view in ("domain", "inlet-corner"):
+                name = f"channel-129x65-{view}.svg"
+                with open(os.path.join(d, name)) as new, open(os.path.join(docs, name)) as old:
+                    self.assertTrue(new.read() == old.read(), f"docs/channel/{name} is not what eg2d draws now: "
+                                    "make it again with docs/channel.md's command")
+
     def test_help(self):
         code, out, _ = run("channel", "--help")
         self.assertEqual(code, 0)
