@@ -287,14 +287,7 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
         status = eg2d_solve(g);
     }
     progress.finish();
-    int events = 0;
-    eg2d_get_run_info(g, EG2D_RUN_EVENTS, &events);
-    for (int k = 0; k < events && !a.quiet; ++k) {
-        char text[1024];
-        int at = 0;
-        eg2d_get_run_event(g, k, &at, text, sizeof text);
-        std::printf("note (iteration %d): %s\n", at, text);
-    }
+    if (!a.quiet) print_run_notes(g);
     check(g, status, a.method == "hyperbolic" ? "the march" : "the solve");
     const int body0 = cgrid ? wake : 0, body1 = cgrid ? a.ni - 1 - wake : a.ni - 1;
     const double growth = wall_growth(g, a.ni, a.nj, body0, body1);

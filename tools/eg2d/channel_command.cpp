@@ -212,14 +212,7 @@ int run_channel(int argc, char **argv) {
     check(g, eg2d_set_monitor(g, Progress::monitor, &progress), "monitor");
     const int status = eg2d_solve(g);
     progress.finish();
-    int events = 0;
-    eg2d_get_run_info(g, EG2D_RUN_EVENTS, &events);
-    for (int k = 0; k < events && !a.quiet; ++k) {
-        char text[1024];
-        int at = 0;
-        eg2d_get_run_event(g, k, &at, text, sizeof text);
-        std::printf("note (iteration %d): %s\n", at, text);
-    }
+    if (!a.quiet) print_run_notes(g);
     check(g, status, "channel: the solve");
 
     write_levels(g, EG2D_TOPO_SINGLE, a.ni, a.nj, a.levels, a.out_dir, "channel", outputs,

@@ -1,6 +1,7 @@
 #include "front_end.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 
@@ -97,6 +98,17 @@ std::vector<Output> outputs_of(const std::string &command, const std::string &li
 
 void check(eg2d_grid *g, int status, const std::string &what) {
     if (status != EG2D_OK) throw Failure(exit_code_for_status(status), what + ": " + eg2d_last_error(g));
+}
+
+void print_run_notes(eg2d_grid *g) {
+    int events = 0;
+    eg2d_get_run_info(g, EG2D_RUN_EVENTS, &events);
+    for (int k = 0; k < events; ++k) {
+        char text[1024];
+        int at = 0;
+        eg2d_get_run_event(g, k, &at, text, sizeof text);
+        std::printf("note (iteration %d): %s\n", at, text);
+    }
 }
 
 void write_levels(eg2d_grid *g, int topology, int ni, int nj, int levels, const std::string &dir,

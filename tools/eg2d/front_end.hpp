@@ -55,6 +55,9 @@ std::vector<Output> outputs_of(const std::string &command, const std::string &li
 // A failed library call: Failure with the status's exit code, "WHAT: the library's message".
 void check(eg2d_grid *g, int status, const std::string &what);
 
+// The run's events (eg2d_get_run_event), "note (iteration N): TEXT" each.
+void print_run_notes(eg2d_grid *g);
+
 // What a level is written with besides the grid's formats and reports:
 // level 0 is the finest; base is DIR/NAME-CIxCJ.
 using LevelHook = std::function<void(int level, eg2d_grid *level_grid, const std::string &base, int ci, int cj)>;
