@@ -1493,6 +1493,7 @@ class Channel(unittest.TestCase):
                 base = os.path.join(d, f"channel-{ni}x{nj}")
                 self.assertEqual(self.su2_markers(base + ".su2"),
                                  {"lower_wall": ni - 1, "upper_wall": ni - 1, "inlet": nj - 1, "outlet": nj - 1})
+                self.check_su2_meshio(base + ".su2", ni, nj)
                 self.assertEqual(self.foam_patches(base + "_foam"),
                                  {"lower_wall": ("wall", ni - 1), "upper_wall": ("wall", ni - 1),
                                   "inlet": ("patch", nj - 1), "outlet": ("patch", nj - 1),
@@ -1508,6 +1509,17 @@ class Channel(unittest.TestCase):
                                          env=env).stdout
                     self.assertIn("Mesh OK.", out)
                     self.assertIn("Total volume = 4.", out)
+
+    def check_su2_meshio(self, path, ni, nj):
+        """meshio reads PATH (where installed): ni nj points, the quadrilaterals, every boundary edge once."""
+        try:
+            import meshio
+        except ImportError:
+            return
+        mesh = meshio.read(path)
+        self.assertEqual(mesh.points.shape[0], ni * nj)
+        self.assertEqual(sum(len(c.data) for c in mesh.cells if c.type == "quad"), (ni - 1) * (nj - 1))
+        self.assertEqual(sum(len(c.data) for c in mesh.cells if c.type == "line"), 2 * (ni - 1) + 2 * (nj - 1))
 
     def check_cgns(self, path, bcs):
         """cgnscheck (where installed) finds no error in PATH, and each BC of bcs with its type."""

@@ -5,17 +5,17 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <string>
 #include <vector>
 
+#include "channel_check.hpp"
+#include "channel_walls.hpp"
 #include "failure.hpp"
 #include "formula.hpp"
 #include "front_end.hpp"
 #include "grid_views.hpp"
+#include "huge_pages.hpp"
 #include "progress.hpp"
-#include "channel_check.hpp"
-#include "channel_walls.hpp"
 #include "wall_summary.hpp"
 
 namespace eg2dtool {
@@ -161,13 +161,14 @@ std::vector<View> channel_views(const GridLines &lines) {
 
 }  // namespace
 
-int run_channel(int argc, char **argv) {
+int run_channel(int argc, char **argv, char **whole_argv) {
     for (int k = 1; k < argc; ++k)
         if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") {
             std::fputs(channel_help, stdout);
             return EXIT_OK;
         }
     const Args a = parse(argc, argv);
+    rerun_with_huge_pages(whole_argv, static_cast<double>(a.ni) * a.nj, a.quiet);
     const std::vector<Output> outputs = outputs_of("channel", a.formats);
     const Walls walls = channel_walls(a.walls, a.ni);
     check_channel_walls(walls);

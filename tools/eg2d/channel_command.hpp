@@ -8,7 +8,8 @@ namespace eg2dtool {
 
 extern const char *const channel_help;
 
-// argv[0] is "channel". Returns the exit code; throws Failure.
-int run_channel(int argc, char **argv);
+// argv[0] is "channel"; whole_argv is main's (a large grid runs the command
+// again with huge pages, as eg2d airfoil does). Returns the exit code; throws Failure.
+int run_channel(int argc, char **argv, char **whole_argv);
 
 }  // namespace eg2dtool

@@ -207,7 +207,7 @@ int guarded(Body body) {
 
 int main(int argc, char **argv) {
     if (argc > 1 && !std::strcmp(argv[1], "airfoil")) return guarded([&] { return run_airfoil(argc - 1, argv + 1, argv); });
-    if (argc > 1 && !std::strcmp(argv[1], "channel")) return guarded([&] { return run_channel(argc - 1, argv + 1); });
+    if (argc > 1 && !std::strcmp(argv[1], "channel")) return guarded([&] { return run_channel(argc - 1, argv + 1, argv); });
     for (int k = 1; k < argc; ++k) {
         if (!std::strcmp(argv[k], "--help") || !std::strcmp(argv[k], "-h")) {
             std::fputs(help_text, stdout);
