@@ -1600,6 +1600,23 @@ class Channel(unittest.TestCase):
                              {"lower_wall": 64, "symmetry": 64, "inlet": 32, "outlet": 32})
             self.assertEqual(sorted(self.wall_lines(out)), ["lower_wall"])
 
+    def test_spline_through_point_files(self):
+        """--spline joins a point file's 11 points by a spline: the wall's nodes lie closer to the
+        smooth curve the points were taken from than the straight segments' do."""
+        def wall(x, sign):
+            return 0.5 + sign * (1 - 0.5 * math.cos(math.pi * x / 10))
+        with tempfile.TemporaryDirectory() as d:
+            for name, sign in (("lo.dat", -1), ("up.dat", 1)):
+                with open(os.path.join(d, name), "w") as f:
+                    f.write("".join(f"{x} {wall(x, sign)!r}\n" for x in range(11)))
+            deviation = {}
+            for flag in ("--spline", "--quiet"):
+                self.channel(d, "--lower", os.path.join(d, "lo.dat"), "--upper", os.path.join(d, "up.dat"), flag,
+                             "--size", "129x65", "--first-cell", "1e-3", "--format", "vts")
+                lower = vts_points(os.path.join(d, "channel-129x65.vts"))[:129]
+                deviation[flag] = max(abs(y - wall(x, -1)) for x, y in lower)
+            self.assertLess(deviation["--spline"], 0.5 * deviation["--quiet"], deviation)
+
     def test_short_wall_layer_exits_4(self):
         """NJ too small for the first cell: exit 4, the files written, the NJ that would do
         named; with that NJ the command exits 0 and the layer grows by at most 1.2."""
