@@ -206,11 +206,7 @@ void trailing_edge_note(double gap, bool sharpen) {
 }  // namespace
 
 int run_airfoil(int argc, char **argv, char **whole_argv) {
-    for (int k = 1; k < argc; ++k)
-        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") {
-            std::fputs(airfoil_help, stdout);
-            return EXIT_OK;
-        }
+    if (help_asked(argc, argv, airfoil_help)) return EXIT_OK;
     const Args a = parse(argc, argv);
     rerun_with_huge_pages(whole_argv, static_cast<double>(a.ni) * a.nj, a.quiet);
     const std::vector<Output> outputs = outputs_of("airfoil", a.formats);

@@ -162,11 +162,7 @@ std::vector<View> channel_views(const GridLines &lines) {
 }  // namespace
 
 int run_channel(int argc, char **argv, char **whole_argv) {
-    for (int k = 1; k < argc; ++k)
-        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") {
-            std::fputs(channel_help, stdout);
-            return EXIT_OK;
-        }
+    if (help_asked(argc, argv, channel_help)) return EXIT_OK;
     const Args a = parse(argc, argv);
     rerun_with_huge_pages(whole_argv, static_cast<double>(a.ni) * a.nj, a.quiet);
     const std::vector<Output> outputs = outputs_of("channel", a.formats);

@@ -15,6 +15,15 @@
 
 namespace eg2dtool {
 
+bool help_asked(int argc, char **argv, const char *help) {
+    for (int k = 1; k < argc; ++k)
+        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") {
+            std::fputs(help, stdout);
+            return true;
+        }
+    return false;
+}
+
 void front_end_usage(const std::string &command, const std::string &message) {
     throw Failure(EXIT_USAGE, command + ": " + message + " (eg2d " + command + " --help shows the usage)");
 }

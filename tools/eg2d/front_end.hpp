@@ -27,6 +27,9 @@ struct Output {
     bool views = false;
 };
 
+// Whether --help or -h is among the arguments; then prints `help` on stdout.
+bool help_asked(int argc, char **argv, const char *help);
+
 // Failure(EXIT_USAGE) "COMMAND: MESSAGE (eg2d COMMAND --help shows the usage)".
 [[noreturn]] void front_end_usage(const std::string &command, const std::string &message);
 
