@@ -1471,6 +1471,245 @@ class Airfoil(unittest.TestCase):
             self.assertIn("--levels", out)
 
 
+class Channel(unittest.TestCase):
+    """eg2d channel: a channel between two walls given as expressions or point
+    files, or round a centreline; its patches in SU2, OpenFOAM and CGNS (read
+    back by checkMesh and cgnscheck where installed), the first cell from y+,
+    the wall layer's exit 4 and the errors that write nothing."""
+
+    STRAIGHT = ("--lower", "4*s;0", "--upper", "4*s;1")
+
+    def channel(self, d, *args, code=0):
+        got, out, err = run("channel", *args, "-o", d, "--quiet")
+        self.assertEqual(got, code, out + err)
+        return out, err
+
+    def report(self, path):
+        import json
+        with open(path + ".report.json") as f:
+            return json.load(f)
+
+    def su2_markers(self, path):
+        with open(path) as f:
+            return dict((tag, int(n)) for tag, n in re.findall(r"MARKER_TAG= (\S+)\nMARKER_ELEMS= (\d+)", f.read()))
+
+    def foam_patches(self, case):
+        """{name: (type, nFaces)} of the case's constant/polyMesh/boundary."""
+        with open(os.path.join(case, "constant", "polyMesh", "boundary")) as f:
+            text = f.read()
+        return {name: (kind, int(n)) for name, kind, n in
+                re.findall(r"^    (\w+)\n    \{\n        type\s+(\w+);.*?nFaces\s+(\d+);", text, re.M | re.S)}
+
+    def wall_lines(self, out):
+        """{wall: (first cell median, growth)} of the printed wall layer summary."""
+        return {name: (float(first), float(growth)) for name, first, growth in
+                re.findall(r"^wall layer (\w+): first cell (\S+) \(median;.*\), growth (\S+) over 30 cells", out, re.M)}
+
+    def test_straight_channel_in_solver_formats(self):
+        """Two levels of a straight channel from expressions: the four patches with
+        their edge counts in SU2 and OpenFOAM, cgnscheck's BCs, checkMesh OK."""
+        with tempfile.TemporaryDirectory() as d:
+            self.channel(d, *self.STRAIGHT, "--size", "129x65", "--first-cell", "1e-3", "--levels", "2",
+                         "--format", "openfoam,su2,cgns")
+            for ni, nj in ((129, 65), (65, 33)):
+                base = os.path.join(d, f"channel-{ni}x{nj}")
+                self.assertEqual(self.su2_markers(base + ".su2"),
+                                 {"lower_wall": ni - 1, "upper_wall": ni - 1, "inlet": nj - 1, "outlet": nj - 1})
+                self.check_su2_meshio(base + ".su2", ni, nj)
+                self.assertEqual(self.foam_patches(base + "_foam"),
+                                 {"lower_wall": ("wall", ni - 1), "upper_wall": ("wall", ni - 1),
+                                  "inlet": ("patch", nj - 1), "outlet": ("patch", nj - 1),
+                                  "frontAndBack": ("empty", 2 * (ni - 1) * (nj - 1))})
+                self.assertEqual(self.report(base)["folded_cells"], 0)
+                self.check_cgns(base + ".cgns", {"lower_wall": "BCWall", "upper_wall": "BCWall",
+                                                 "inlet": "BCInflow", "outlet": "BCOutflow"})
+                Airfoil.check_mesh(self, base + "_foam")
+                if shutil_which("checkMesh"):  # this straight channel's cells are rectangles
+                    env = dict(os.environ)
+                    env.setdefault("WM_PROJECT_DIR", "/usr/share/openfoam")
+                    out = subprocess.run(["checkMesh", "-case", base + "_foam"], capture_output=True, text=True,
+                                         env=env).stdout
+                    self.assertIn("Mesh OK.", out)
+                    self.assertIn("Total volume = 4.", out)
+
+    def check_su2_meshio(self, path, ni, nj):
+        """meshio reads PATH (where installed): ni nj points, the quadrilaterals, every boundary edge once."""
+        try:
+            import meshio
+        except ImportError:
+            return
+        mesh = meshio.read(path)
+        self.assertEqual(mesh.points.shape[0], ni * nj)
+        self.assertEqual(sum(len(c.data) for c in mesh.cells if c.type == "quad"), (ni - 1) * (nj - 1))
+        self.assertEqual(sum(len(c.data) for c in mesh.cells if c.type == "line"), 2 * (ni - 1) + 2 * (nj - 1))
+
+    def check_cgns(self, path, bcs):
+        """cgnscheck (where installed) finds no error in PATH, and each BC of bcs with its type."""
+        cgnscheck = shutil_which("cgnscheck")
+        if not cgnscheck:
+            return
+        p = subprocess.run([cgnscheck, "-v", path], capture_output=True, text=True)
+        out = p.stdout + p.stderr
+        self.assertEqual([l for l in out.splitlines() if "ERROR" in l.upper()], [])
+        self.assertIn("checking complete", out)
+        for name, kind in bcs.items():
+            self.assertRegex(out, f'checking BC "{name}"\n    BC Type={kind}\n')
+
+    def diffuser_walls(self, d):
+        """A planar diffuser from 1 to 3 wide over x in [0, 10], symmetric about y = 0.5:
+        two point files (200 segments each; a cosine ramp from x = 2 to 8); their paths
+        and the lower wall's length."""
+        paths, length = [], 0.0
+        for name, sign in (("lower.dat", -1), ("upper.dat", 1)):
+            points = []
+            for k in range(201):
+                x = 10 * k / 200
+                t = min(max((x - 2) / 6, 0), 1)
+                points.append((x, 0.5 + sign * (1.5 - 0.5 * math.cos(math.pi * t))))
+            with open(os.path.join(d, name), "w") as f:
+                f.write("# x y\n" + "".join(f"{x!r} {y!r}\n" for x, y in points))
+            paths.append(os.path.join(d, name))
+            if sign < 0:
+                length = sum(math.dist(p, q) for p, q in zip(points, points[1:]))
+        return paths[0], paths[1], length
+
+    def test_diffuser_from_point_files_at_yplus_1(self):
+        """257x129 at y+ 1, Re 1e6 on the lower wall's length: the first cell within 1% of
+        the flat-plate estimate eg2d.h states, the layer's growth at most 1.2 on both walls."""
+        with tempfile.TemporaryDirectory() as d:
+            lower, upper, length = self.diffuser_walls(d)
+            out, _ = self.channel(d, "--lower", lower, "--upper", upper, "--size", "257x129", "--yplus", "1",
+                                  "--reynolds", "1e6", "--format", "vts")
+            cf = (2 * math.log10(1e6) - 0.65) ** -2.3
+            h = length / (1e6 * math.sqrt(cf / 2))
+            walls = self.wall_lines(out)
+            self.assertEqual(sorted(walls), ["lower_wall", "upper_wall"])
+            for name, (first, growth) in walls.items():
+                self.assertLess(abs(first / h - 1), 0.01, name)
+                self.assertLessEqual(growth, 1.2, name)
+            r = self.report(os.path.join(d, "channel-257x129"))
+            self.assertEqual(r["folded_cells"], 0)
+            self.assertLess(abs(r["wall"]["first_cell_height"]["min"] / h - 1), 0.01)
+            self.assertLess(abs(r["wall"]["first_cell_height"]["max"] / h - 1), 0.01)
+            self.assertLessEqual(r["wall"]["growth_max"], 1.2)
+            # the walls' ends are the files' ends: the inlet from (0, -0.5) to (0, 1.5), the outlet 3 wide
+            p = vts_points(os.path.join(d, "channel-257x129.vts"))
+            for (x, y), want in ((p[0], (0, -0.5)), (p[256], (10, -1.5)), (p[257 * 128], (0, 1.5)),
+                                 (p[-1], (10, 2.5))):
+                self.assertLess(math.dist((x, y), want), 1e-9)
+
+    def test_centreline_width_and_spacings(self):
+        """Walls half the width either side of the centreline; --inlet-spacing and
+        --outlet-spacing are the first and last spacings along the walls; the coarser level
+        is every other node of the finer; --symmetry-upper names the upper patch symmetry."""
+        with tempfile.TemporaryDirectory() as d:
+            self.channel(d, "--centreline", "4*s;0", "--width", "1 + s", "--size", "65x33", "--first-cell", "1e-2",
+                         "--growth", "10", "--inlet-spacing", "0.01", "--outlet-spacing", "0.2", "--levels", "2",
+                         "--format", "vts,su2")
+            p = vts_points(os.path.join(d, "channel-65x33.vts"))
+            lower, upper = p[:65], p[65 * 32:]
+            for (xl, yl), (xu, yu) in zip(lower, upper):
+                self.assertAlmostEqual(xl, xu, delta=1e-12)
+                self.assertAlmostEqual(yl, -0.5 * (1 + xl / 4), delta=1e-12)
+                self.assertAlmostEqual(yu, 0.5 * (1 + xu / 4), delta=1e-12)
+            self.assertAlmostEqual(lower[1][0] - lower[0][0], 0.01, delta=1e-9)
+            self.assertAlmostEqual(lower[64][0] - lower[63][0], 0.2, delta=1e-9)
+            coarse = vts_points(os.path.join(d, "channel-33x17.vts"))
+            self.assertEqual(coarse, [p[i + 65 * j] for j in range(0, 33, 2) for i in range(0, 65, 2)])
+            out, _ = self.channel(d, *self.STRAIGHT, "--size", "65x33", "--first-cell", "1e-2", "--symmetry-upper",
+                                  "--format", "su2")
+            self.assertEqual(self.su2_markers(os.path.join(d, "channel-65x33.su2")),
+                             {"lower_wall": 64, "symmetry": 64, "inlet": 32, "outlet": 32})
+            self.assertEqual(sorted(self.wall_lines(out)), ["lower_wall"])
+
+    def test_spline_through_point_files(self):
+        """--spline joins a point file's 11 points by a spline: the wall's nodes lie closer to the
+        smooth curve the points were taken from than the straight segments' do."""
+        def wall(x, sign):
+            return 0.5 + sign * (1 - 0.5 * math.cos(math.pi * x / 10))
+        with tempfile.TemporaryDirectory() as d:
+            for name, sign in (("lo.dat", -1), ("up.dat", 1)):
+                with open(os.path.join(d, name), "w") as f:
+                    f.write("".join(f"{x} {wall(x, sign)!r}\n" for x in range(11)))
+            deviation = {}
+            for flag in ("--spline", "--quiet"):
+                self.channel(d, "--lower", os.path.join(d, "lo.dat"), "--upper", os.path.join(d, "up.dat"), flag,
+                             "--size", "129x65", "--first-cell", "1e-3", "--format", "vts")
+                lower = vts_points(os.path.join(d, "channel-129x65.vts"))[:129]
+                deviation[flag] = max(abs(y - wall(x, -1)) for x, y in lower)
+            self.assertLess(deviation["--spline"], 0.5 * deviation["--quiet"], deviation)
+
+    def test_short_wall_layer_exits_4(self):
+        """NJ too small for the first cell: exit 4, the files written, the NJ that would do
+        named; with that NJ the command exits 0 and the layer grows by at most 1.2."""
+        with tempfile.TemporaryDirectory() as d:
+            _, err = self.channel(d, *self.STRAIGHT, "--size", "65x17", "--first-cell", "1e-4", "--format", "su2",
+                                  code=4)
+            m = re.search(r"the wall layer at lower_wall grows by (\S+) within 30 cells, more than 1.2: nj >= (\d+) "
+                          r"would meet it \(the files are written\)", err)
+            self.assertIsNotNone(m, err)
+            self.assertGreater(float(m.group(1)), 1.2)
+            self.assertTrue(os.path.isfile(os.path.join(d, "channel-65x17.su2")))
+            nj = int(m.group(2))
+            self.assertGreater(nj, 17)
+            out, err = self.channel(d, *self.STRAIGHT, "--size", f"65x{nj}", "--first-cell", "1e-4", "--format", "su2")
+            for name, (first, growth) in self.wall_lines(out).items():
+                self.assertAlmostEqual(first, 1e-4, delta=1e-8)
+                self.assertLessEqual(growth, 1.2)
+
+    def failure(self, code, message, *args):
+        """The command fails with CODE and exactly MESSAGE (D: the directory), writing nothing."""
+        with tempfile.TemporaryDirectory() as d:
+            out_dir = os.path.join(d, "out")
+            got, out, err = run("channel", *[a.replace("D/", d + "/") for a in args], "--size", "65x33",
+                                "--first-cell", "1e-3", "-o", out_dir)
+            self.assertEqual(err, "eg2d: " + message.replace("D/", d + "/") + "\n")
+            self.assertEqual(got, code)
+            self.assertFalse(os.path.exists(out_dir), "a failed run wrote files")
+
+    def test_bad_expression_exits_3(self):
+        self.failure(3, 'channel: --upper: bad formula "1+": Unexpected end of expression at position 3',
+                     "--lower", "4*s;0", "--upper", "4*s;1+")
+        self.failure(3, 'channel: --lower: bad formula "sinh(s": Missing parenthesis',
+                     "--lower", "4*s;sinh(s", "--upper", "4*s;1")
+        self.failure(3, 'channel: --width: "0.3 - s" is -0.0125 at s = 0.3125, not positive',
+                     "--centreline", "4*s;0", "--width", "0.3 - s")
+
+    def test_unreadable_file_and_bad_walls(self):
+        self.failure(8, "channel: --lower: eg2d_read_points: D/none.dat: cannot open: No such file or directory",
+                     "--lower", "D/none.dat", "--upper", "4*s;1")
+        self.failure(4, "channel: the lower wall and the upper wall cross between (2, 0) and (2.0625, 0)",
+                     "--lower", "4*s;0", "--upper", "4*s;1-2*s")
+        self.failure(4, "channel: the walls run opposite ways: the lower wall runs from (0, 0) to (4, 0), the upper "
+                        "from (4, 1) to (0, 1); give both from the inlet to the outlet",
+                     "--lower", "4*s;0", "--upper", "4-4*s;1")
+        self.failure(4, "channel: the upper wall lies to the right of the lower wall (looking from the inlet to the "
+                        "outlet): the lower wall runs from (0, 1) to (4, 1), the upper from (0, 0) to (4, 0); swap "
+                        "--lower and --upper", "--lower", "4*s;1", "--upper", "4*s;0")
+        self.failure(2, "channel: give --lower and --upper, or --centreline and --width, not both (eg2d channel "
+                        "--help shows the usage)", "--lower", "4*s;0", "--upper", "4*s;1", "--width", "1")
+
+    def test_docs_pictures_are_current(self):
+        # docs/channel.md's pictures are what its command draws now
+        docs = os.path.join(EXAMPLES, os.pardir, "docs", "channel")
+        with tempfile.TemporaryDirectory() as d:
+            self.channel(d, "--centreline", "4*s;0.5*sin(pi*s)", "--width", "1 + 0.5*s", "--size", "129x65",
+                         "--first-cell", "1e-3", "--inlet-spacing", "0.01", "--outlet-spacing", "0.05", "--format", "svg")
+            for view in ("domain", "inlet-corner"):
+                name = f"channel-129x65-{view}.svg"
+                with open(os.path.join(d, name)) as new, open(os.path.join(docs, name)) as old:
+                    self.assertTrue(new.read() == old.read(), f"docs/channel/{name} is not what eg2d draws now: "
+                                    "make it again with docs/channel.md's command")
+
+    def test_help(self):
+        code, out, _ = run("channel", "--help")
+        self.assertEqual(code, 0)
+        for option in ("--lower", "--centreline", "--yplus", "--levels", "--symmetry-upper", "Exit codes"):
+            self.assertIn(option, out)
+        code, out, _ = run("--help")
+        self.assertIn("eg2d channel --lower WALL --upper WALL", out)
+
+
 def shutil_which(name):
     import shutil
     return shutil.which(name)

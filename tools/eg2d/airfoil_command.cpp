@@ -16,6 +16,7 @@
 
 #include "failure.hpp"
 #include "features.hpp"
+#include "front_end.hpp"
 #include "grid_views.hpp"
 #include "huge_pages.hpp"
 #include "progress.hpp"
@@ -80,21 +81,8 @@ const char *const airfoil_help =
 
 namespace {
 
-struct GridDeleter {
-    void operator()(eg2d_grid *g) const { eg2d_destroy(g); }
-};
-using GridPtr = std::unique_ptr<eg2d_grid, GridDeleter>;
 struct CurveDeleter {
     void operator()(eg2d_curve *c) const { eg2d_curve_destroy(c); }
-};
-
-// An output: a format of the command's table (features.cpp, the names and
-// extensions case files use), with flags; plot3d3d is Plot3D one cell thick;
-// svg and png are the command's own pictures, four views each (views).
-struct Output {
-    std::string name, extension;
-    int id;
-    bool views = false;
 };
 
 struct Args {
@@ -104,17 +92,9 @@ struct Args {
     bool quiet = false;
 };
 
-[[noreturn]] void usage(const std::string &message) {
-    throw Failure(EXIT_USAGE, "airfoil: " + message + " (eg2d airfoil --help shows the usage)");
-}
+[[noreturn]] void usage(const std::string &message) { front_end_usage("airfoil", message); }
 
-double number(const std::string &option, const std::string &value) {
-    char *end = nullptr;
-    const double v = std::strtod(value.c_str(), &end);
-    if (value.empty() || !end || *end || !std::isfinite(v) || v <= 0)
-        usage(option + " expects a positive number, found \"" + value + "\"");
-    return v;
-}
+double number(const std::string &option, const std::string &value) { return positive_number("airfoil", option, value); }
 
 Args parse(int argc, char **argv) {
     Args a;
@@ -140,20 +120,9 @@ Args parse(int argc, char **argv) {
             else if (arg == "--farfield") a.farfield = number(arg, v);
             else if (arg == "--le-spacing") a.le = number(arg, v);
             else if (arg == "--te-spacing") a.tes = number(arg, v);
-            else if (arg == "--levels") {
-                const double n = number(arg, v);
-                if (n != std::floor(n) || n > 12) usage("--levels expects a whole number from 1 to 12, found \"" + v + "\"");
-                a.levels = static_cast<int>(n);
-            } else if (arg == "--size") {
-                char *end = nullptr;
-                const long ni = std::strtol(v.c_str(), &end, 10);
-                long nj = -1;
-                if (end && *end == 'x') nj = std::strtol(end + 1, &end, 10);
-                if (!end || *end || ni < 9 || nj < 5 || ni > 100000 || nj > 100000)
-                    usage("--size expects NIxNJ with 9 <= NI <= 100000 and 5 <= NJ <= 100000, found \"" + v + "\"");
-                a.ni = static_cast<int>(ni);
-                a.nj = static_cast<int>(nj);
-            } else {
+            else if (arg == "--levels") a.levels = parse_levels("airfoil", v);
+            else if (arg == "--size") parse_size("airfoil", v, a.ni, a.nj);
+            else {
                 usage("unknown option " + arg);
             }
         } else if (a.source.empty()) {
@@ -171,16 +140,7 @@ Args parse(int argc, char **argv) {
         usage("--method expects hybrid, elliptic or hyperbolic, found \"" + a.method + "\"");
     if (a.te.empty()) a.te = "blunt";
     if (a.te != "blunt" && a.te != "sharpen") usage("--te expects blunt or sharpen, found \"" + a.te + "\"");
-    const int step = 1 << (a.levels - 1);
-    if ((a.ni - 1) % step || (a.nj - 1) % step || (a.ni - 1) / step + 1 < 9 || (a.nj - 1) / step + 1 < 5) {
-        int most = 1;
-        while ((a.ni - 1) % (1 << most) == 0 && (a.nj - 1) % (1 << most) == 0 && (a.ni - 1) / (1 << most) + 1 >= 9 &&
-               (a.nj - 1) / (1 << most) + 1 >= 5)
-            ++most;
-        usage("--levels " + std::to_string(a.levels) + " needs NI-1 and NJ-1 divisible by " + std::to_string(step) +
-              " and a coarsest grid of at least 9x5; " + std::to_string(a.ni) + "x" + std::to_string(a.nj) +
-              " allows at most " + std::to_string(most) + " (e.g. 385x97 allows 6, 257x129 allows 6, 1793x513 allows 9)");
-    }
+    check_levels("airfoil", a.ni, a.nj, a.levels);
     return a;
 }
 
@@ -193,38 +153,6 @@ std::string stem(const std::string &path) {
     std::string s = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
     const std::size_t dot = s.find_last_of('.');
     return dot == std::string::npos || dot == 0 ? s : s.substr(0, dot);
-}
-
-void check(eg2d_grid *g, int status, const std::string &what) {
-    if (status != EG2D_OK) throw Failure(exit_code_for_status(status), what + ": " + eg2d_last_error(g));
-}
-
-std::vector<Output> outputs_of(const std::string &list) {
-    std::vector<Output> out;
-    std::stringstream in(list);
-    std::string name;
-    while (std::getline(in, name, ',')) {
-        if (name == "png" && !png_available())
-            throw Failure(EXIT_UNSUPPORTED, "airfoil: --format png is not in this build: it needs cairo (Debian's "
-                                            "libcairo2-dev) when eg2d is configured; svg draws the same views");
-        if (name == "svg" || name == "png") {
-            out.push_back({name, "." + name, -1, true});
-            continue;
-        }
-        if (name == "plot3d3d") {
-            out.push_back({name, "-3d.xyz", EG2D_FORMAT_PLOT3D | EG2D_PLOT3D_EXTRUDED});
-            continue;
-        }
-        const Feature *f = nullptr;
-        for (const Feature &k : formats())
-            if (name == k.name && k.tool == 0 && k.id != EG2D_FORMAT_REPORT && k.id != EG2D_FORMAT_REPORT_JSON) f = &k;
-        if (!f) usage("--format: unknown format \"" + name + "\" (plot3d, plot3d3d, plot3d-ascii, cgns, su2, openfoam, vts, "
-                      "svg, png, gmv, matlab)");
-        if (!f->available) throw Failure(EXIT_UNSUPPORTED, "airfoil: --format " + name + " is not in this build");
-        out.push_back({name, f->extension, f->id});
-    }
-    if (out.empty()) usage("--format needs at least one format");
-    return out;
 }
 
 // The largest ratio of consecutive cell heights over the first 30 cells of
@@ -275,37 +203,14 @@ void trailing_edge_note(double gap, bool sharpen) {
                     "(--te sharpen closes it)\n", gap);
 }
 
-// The pictures (svg, png) of one level: the same four views in each.
-void write_views(const eg2d_grid *g, const std::vector<Output> &outputs, const std::string &base, const std::string &title) {
-    bool any = false;
-    for (const Output &o : outputs) any = any || o.views;
-    if (!any) return;
-    const GridLines lines = grid_lines(g);
-    for (const View &v : airfoil_views(lines)) {
-        const std::vector<Polyline> shown = view_lines(lines, v);
-        for (const Output &o : outputs) {
-            if (!o.views) continue;
-            const std::string path = base + "-" + v.name + o.extension;
-            write_text_in_place(path, o.name == "png" ? view_png(v, shown)
-                                                      : view_svg(v, shown, "eg2d " + title + ": " + v.name));
-        }
-    }
-}
-
 }  // namespace
 
 int run_airfoil(int argc, char **argv, char **whole_argv) {
-    for (int k = 1; k < argc; ++k)
-        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") {
-            std::fputs(airfoil_help, stdout);
-            return EXIT_OK;
-        }
+    if (help_asked(argc, argv, airfoil_help)) return EXIT_OK;
     const Args a = parse(argc, argv);
     rerun_with_huge_pages(whole_argv, static_cast<double>(a.ni) * a.nj, a.quiet);
-    const std::vector<Output> outputs = outputs_of(a.formats);
-    double h = a.first;
-    if (h == 0 && eg2d_first_cell_height(a.yplus, a.reynolds, 1.0, &h) != EG2D_OK)
-        throw Failure(EXIT_GEOMETRY, std::string("airfoil: ") + eg2d_last_error(nullptr));
+    const std::vector<Output> outputs = outputs_of("airfoil", a.formats);
+    const double h = first_cell("airfoil", a.first, a.yplus, a.reynolds, 1.0);
     eg2d_curve *raw = nullptr;
     const bool naca = is_naca4(a.source);
     // A NACA code is the standard open section with its base kept blunt, or
@@ -378,50 +283,16 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
         status = eg2d_solve(g);
     }
     progress.finish();
-    int events = 0;
-    eg2d_get_run_info(g, EG2D_RUN_EVENTS, &events);
-    for (int k = 0; k < events && !a.quiet; ++k) {
-        char text[1024];
-        int at = 0;
-        eg2d_get_run_event(g, k, &at, text, sizeof text);
-        std::printf("note (iteration %d): %s\n", at, text);
-    }
+    if (!a.quiet) print_run_notes(g);
     check(g, status, a.method == "hyperbolic" ? "the march" : "the solve");
     const int body0 = cgrid ? wake : 0, body1 = cgrid ? a.ni - 1 - wake : a.ni - 1;
     const double growth = wall_growth(g, a.ni, a.nj, body0, body1);
 
-    make_directory(a.out_dir);
-    double span = 1.0;
-    eg2d_get_parameter(g, EG2D_PARAM_SPAN, &span);
-    for (int level = 0; level < a.levels; ++level) {
-        const int s = 1 << level, ci = (a.ni - 1) / s + 1, cj = (a.nj - 1) / s + 1;
-        GridPtr coarse;
-        eg2d_grid *lg = g;
-        if (level > 0) {  // every s-th node of the finest
-            std::vector<double> x(static_cast<std::size_t>(a.ni) * a.nj), y(x.size()), cx, cy;
-            eg2d_get_coordinates(g, x.data(), y.data());
-            for (int j = 0; j < a.nj; j += s)
-                for (int i = 0; i < a.ni; i += s) {
-                    cx.push_back(x[static_cast<std::size_t>(i) + static_cast<std::size_t>(a.ni) * j]);
-                    cy.push_back(y[static_cast<std::size_t>(i) + static_cast<std::size_t>(a.ni) * j]);
-                }
-            eg2d_grid *raw_coarse = nullptr;
-            if (eg2d_create(ci, cj, &raw_coarse) != EG2D_OK)
-                throw Failure(EXIT_MEMORY, std::string("airfoil: ") + eg2d_last_error(nullptr));
-            coarse.reset(raw_coarse);
-            lg = coarse.get();
-            check(lg, eg2d_set_topology(lg, cgrid ? EG2D_TOPO_C : EG2D_TOPO_O), "level topology");
-            check(lg, eg2d_set_coordinates(lg, cx.data(), cy.data()), "level " + std::to_string(level));
-            check(lg, eg2d_set_parameter(lg, EG2D_PARAM_SPAN, span), "span");
-        }
-        const std::string base = a.out_dir + "/" + name + "-" + std::to_string(ci) + "x" + std::to_string(cj);
-        for (const Output &o : outputs)
-            if (!o.views) check(lg, eg2d_write(lg, (base + o.extension).c_str(), o.id), base + o.extension);
-        write_views(lg, outputs, base, name + " " + std::to_string(ci) + "x" + std::to_string(cj));
-        for (const Feature &f : formats())  // the reports, always
-            if (f.id == EG2D_FORMAT_REPORT || f.id == EG2D_FORMAT_REPORT_JSON)
-                check(lg, eg2d_write(lg, (base + f.extension).c_str(), f.id), base + f.extension);
+    write_levels(g, cgrid ? EG2D_TOPO_C : EG2D_TOPO_O, a.ni, a.nj, a.levels, a.out_dir, name, outputs, {},
+                 [&](int level, eg2d_grid *lg, const std::string &base, int ci, int cj) {
+        write_views(lg, outputs, base, name + " " + std::to_string(ci) + "x" + std::to_string(cj), airfoil_views);
         // A C-grid of one of the TMR family's sizes is compared with it.
+        const int s = 1 << level;
         const std::string tmr = cgrid ? tmr_comparison(lg, ci, cj, wake / s, a.farfield, a.levels - 1 - level) : std::string();
         if (!tmr.empty()) {
             std::ofstream file(base + ".tmr.txt");
@@ -435,7 +306,7 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
                 std::printf("%s%s", std::string(std::istreambuf_iterator<char>(report), {}).c_str(), tmr.c_str());
             }
         }
-    }
+    });
     if (growth > a.growth) {
         std::fprintf(stderr,
                      "eg2d: airfoil: the wall layer grows by up to %.3f over its first 30 cells, more than --growth %g: "

@@ -11,12 +11,12 @@ struct Location {
     int line = 0;      // 1-based; 0 when unknown
     int column = 0;
 
-    // "FILE:LINE:COLUMN: key 'KEY'" (the prefix of every case-file message).
+    // "FILE:LINE:COLUMN: key 'KEY'" (the prefix of every case-file message;
+    // "FILE" alone when there is no key, e.g. "channel: --lower" of a command line).
     std::string str() const {
         std::string s = file;
         if (line > 0) s += ":" + std::to_string(line) + ":" + std::to_string(column);
-        s += ": ";
-        if (!key.empty()) s += "key '" + key + "'";
+        if (!key.empty()) s += ": key '" + key + "'";
         return s;
     }
     Location child(const std::string &name, int l, int c) const { return Location{file, key.empty() ? name : key + "." + name, l, c}; }

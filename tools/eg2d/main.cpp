@@ -13,6 +13,7 @@
 
 #include "airfoil_command.hpp"
 #include "case_file.hpp"
+#include "channel_command.hpp"
 #include "demos.hpp"
 #include "failure.hpp"
 #include "features.hpp"
@@ -25,6 +26,7 @@ namespace {
 const char *help_text =
     "usage: eg2d run CASE.toml [-o DIR] [--size NIxNJ] [--quiet]\n"
     "       eg2d airfoil SOURCE --size NIxNJ (--yplus Y --reynolds RE | --first-cell H) [...]\n"
+    "       eg2d channel --lower WALL --upper WALL --size NIxNJ (--first-cell H | --yplus Y --reynolds RE) [...]\n"
     "       eg2d demo [NAME] [-o DIR] [--size NIxNJ] [--quiet]\n"
     "       eg2d demo --list\n"
     "       eg2d --help | --version      (--version lists what this build offers)\n"
@@ -39,6 +41,9 @@ const char *help_text =
     "           (NAME.png: the grid drawn by cairo, where the build has it)\n"
     "  airfoil  an O- or C-grid round a NACA section or a coordinate file, wall-resolved,\n"
     "           as nested levels in solver formats (eg2d airfoil --help)\n"
+    "  channel  a channel, duct or diffuser grid between two walls (or round a centreline),\n"
+    "           wall-resolved, with inlet, outlet, wall and symmetry patches, as nested\n"
+    "           levels in solver formats (eg2d channel --help)\n"
     "  demo     runs a built-in case of the gallery (the case files of examples/;\n"
     "           default: swan, the elliptic-grid course notes' swan domain) with no file at all\n"
     "\n"
@@ -202,6 +207,7 @@ int guarded(Body body) {
 
 int main(int argc, char **argv) {
     if (argc > 1 && !std::strcmp(argv[1], "airfoil")) return guarded([&] { return run_airfoil(argc - 1, argv + 1, argv); });
+    if (argc > 1 && !std::strcmp(argv[1], "channel")) return guarded([&] { return run_channel(argc - 1, argv + 1, argv); });
     for (int k = 1; k < argc; ++k) {
         if (!std::strcmp(argv[k], "--help") || !std::strcmp(argv[k], "-h")) {
             std::fputs(help_text, stdout);

@@ -12,18 +12,6 @@
 
 namespace eg2dtool {
 
-namespace {
-
-const std::vector<std::string> piece_keys = {"x",        "y",     "points",       "file",    "naca",  "airfoil",
-                                             "curve",    "closed_te", "distribution", "reverse", "share",   "sliding"};
-
-std::string point(double x, double y) {
-    std::ostringstream s;
-    s.precision(10);
-    s << "(" << x << ", " << y << ")";
-    return s.str();
-}
-
 // A point file through the library's reader (eg2d_read_points: "x y" per line).
 void read_point_file(const std::string &path, const Location &where, std::vector<double> &px,
                      std::vector<double> &py) {
@@ -36,6 +24,18 @@ void read_point_file(const std::string &path, const Location &where, std::vector
     }
     if (status != EG2D_OK) throw Failure(exit_code_for_status(status), where.str() + ": " + eg2d_last_error(nullptr));
     if (px.size() < 2) throw Failure(EXIT_CASE, where.str() + ": \"" + path + "\" holds fewer than 2 points");
+}
+
+namespace {
+
+const std::vector<std::string> piece_keys = {"x",        "y",     "points",       "file",    "naca",  "airfoil",
+                                             "curve",    "closed_te", "distribution", "reverse", "share",   "sliding"};
+
+std::string point(double x, double y) {
+    std::ostringstream s;
+    s.precision(10);
+    s << "(" << x << ", " << y << ")";
+    return s.str();
 }
 
 SidePiece parse_piece(const toml::table &table, const Location &where, const std::string &dir,

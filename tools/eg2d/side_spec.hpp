@@ -60,6 +60,12 @@ const std::vector<std::pair<std::string, int>> &side_names(int topology);
 SideSpec parse_side(const toml::node &node, int side, const std::string &name, const Location &where,
                     const std::string &dir, const Constants &constants);
 
+// The points of a point file through the library's reader (eg2d_read_points:
+// "x y" per line); Failure naming `where` (EXIT_IO when it cannot be read,
+// EXIT_CASE for fewer than 2 points).
+void read_point_file(const std::string &path, const Location &where, std::vector<double> &px,
+                     std::vector<double> &py);
+
 // The n nodes of a side. closed: the side is a closed curve (O-grid), so the last
 // node is snapped onto the first when they agree to roundoff.
 void side_nodes(const SideSpec &spec, int n, bool closed, const Constants &constants, std::vector<double> &x,

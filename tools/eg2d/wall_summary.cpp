@@ -15,33 +15,34 @@ std::string side_label(int topology, int side) {
 }
 }  // namespace
 
+bool print_wall_layer(const eg2d_grid *g, int side, const std::string &name, double height, double limit) {
+    auto figure = [&](int what) {
+        double v = 0;
+        eg2d_get_wall_layer(g, side, what, &v);
+        return v;
+    };
+    if (figure(EG2D_WALL_NODES) == 0) {
+        std::printf("wall layer %s: no node to measure\n", name.c_str());
+        return false;
+    }
+    const double growth = figure(EG2D_WALL_GROWTH), needed = figure(EG2D_WALL_NODES_NEEDED);
+    std::printf("wall layer %s: first cell %.4e (median; %.4e to %.4e, asked %.4e), growth %.4f over %d cells, "
+                "angle %.3f deg\n", name.c_str(), figure(EG2D_WALL_FIRST_MEDIAN), figure(EG2D_WALL_FIRST_MIN),
+                figure(EG2D_WALL_FIRST_MAX), height, growth, EG2D_WALL_ROWS, figure(EG2D_WALL_ANGLE));
+    if (growth <= limit) return false;
+    const bool across_j = side == EG2D_SIDE_JMIN || side == EG2D_SIDE_JMAX;
+    std::fprintf(stderr, "eg2d: the wall layer at %s grows by %.3f within %d cells, more than %g", name.c_str(), growth,
+                 EG2D_WALL_ROWS, limit);
+    if (needed > 0) std::fprintf(stderr, ": %s >= %.0f would meet it", across_j ? "nj" : "ni", needed);
+    std::fprintf(stderr, " (the files are written)\n");
+    return true;
+}
+
 bool print_wall_layers(const eg2d_grid *g, const Case &c) {
     bool short_layer = false;
-    for (const WallSpacing &w : c.wall_spacings) {
-        if (!(w.height > 0)) continue;
-        auto figure = [&](int what) {
-            double v = 0;
-            eg2d_get_wall_layer(g, w.side, what, &v);
-            return v;
-        };
-        const std::string name = side_label(c.topology, w.side);
-        if (figure(EG2D_WALL_NODES) == 0) {
-            std::printf("wall layer %s: no node to measure\n", name.c_str());
-            continue;
-        }
-        const double growth = figure(EG2D_WALL_GROWTH), needed = figure(EG2D_WALL_NODES_NEEDED);
-        std::printf("wall layer %s: first cell %.4e (median; %.4e to %.4e, asked %.4e), growth %.4f over %d cells, "
-                    "angle %.3f deg\n", name.c_str(), figure(EG2D_WALL_FIRST_MEDIAN), figure(EG2D_WALL_FIRST_MIN),
-                    figure(EG2D_WALL_FIRST_MAX), w.height, growth, EG2D_WALL_ROWS, figure(EG2D_WALL_ANGLE));
-        if (growth > c.wall_growth_limit) {
+    for (const WallSpacing &w : c.wall_spacings)
+        if (w.height > 0 && print_wall_layer(g, w.side, side_label(c.topology, w.side), w.height, c.wall_growth_limit))
             short_layer = true;
-            const bool across_j = w.side == EG2D_SIDE_JMIN || w.side == EG2D_SIDE_JMAX;
-            std::fprintf(stderr, "eg2d: the wall layer at %s grows by %.3f within %d cells, more than %g", name.c_str(),
-                         growth, EG2D_WALL_ROWS, c.wall_growth_limit);
-            if (needed > 0) std::fprintf(stderr, ": %s >= %.0f would meet it", across_j ? "nj" : "ni", needed);
-            std::fprintf(stderr, " (the files are written)\n");
-        }
-    }
     return short_layer;
 }
 

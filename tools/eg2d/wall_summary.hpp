@@ -4,10 +4,17 @@
 // 30 cells, or that the library says needs more nodes, makes the command
 // exit with EXIT_GEOMETRY, the files written, as `eg2d airfoil` does.
 #pragma once
+#include <string>
+
 #include "case_file.hpp"
 #include "eg2d.h"
 
 namespace eg2dtool {
+
+// Prints the line of one wall side, named `name`, asked a first cell `height`;
+// true when its layer grows by more than `limit` (then the node count the
+// library says would do goes to stderr, "nj >= N" or "ni >= N").
+bool print_wall_layer(const eg2d_grid *g, int side, const std::string &name, double height, double limit);
 
 // Prints one line per wall side; true when some layer falls short.
 bool print_wall_layers(const eg2d_grid *g, const Case &c);
