@@ -1172,7 +1172,11 @@ EG2D_API int eg2d_set_orthogonality(eg2d_grid *grid, int method);
  * unit); 0 asks for orthogonality only; a negative height makes the side no
  * wall again. While no side has been made a wall, EG2D_ORTHO_WALL treats
  * every side of the topology as a wall with height 0. May be called before
- * or after eg2d_set_orthogonality. */
+ * or after eg2d_set_orthogonality. A height >= 0 on a grid with no
+ * orthogonality control turns EG2D_ORTHO_WALL on (a wall asked for is a
+ * wall control asked for); eg2d_set_orthogonality(grid, EG2D_ORTHO_NONE)
+ * afterwards turns it off, and EG2D_ORTHO_MIDDLECOFF_THOMAS set before is
+ * kept (the heights wait for EG2D_ORTHO_WALL). */
 EG2D_API int eg2d_set_wall_spacing(eg2d_grid *grid, int side, double height);
 
 /* Adaptive control from a parameter-space grid (Khattri (2006)): s, t are an ni*nj

@@ -121,8 +121,12 @@ EG2D_API int eg2d_set_wall_spacing(eg2d_grid *grid, int side, double height) {
         std::array<double, 4> next = grid->wall_height;
         next[side] = height < 0.0 ? -1.0 : height;
         ControlSet set = grid->gen.controls();
-        if (is_wall_control(set.find(ControlKind::Orthogonality)))
-            set.put(make_wall_control(wall_sides(next)));  // a wall control in use takes the new sides
+        // A wall control in use takes the new sides; with no orthogonality
+        // control yet, a wall asked for is one (a first cell set without
+        // EG2D_ORTHO_WALL did nothing, silently: 0.02-1 chord first cells on
+        // NACA 0012 385x97 at y+ 1).
+        Control *ortho = set.find(ControlKind::Orthogonality);
+        if (is_wall_control(ortho) || (!ortho && next[side] >= 0.0)) set.put(make_wall_control(wall_sides(next)));
         grid->gen.controls() = std::move(set);
         grid->wall_height = next;
         grid->gen.changed_controls();

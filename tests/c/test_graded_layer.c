@@ -222,6 +222,29 @@ static void test_unclustered_wall_corner_says_so(void **state) {
     eg2d_destroy(g);
 }
 
+/* A first cell asked with no orthogonality control set is a wall control
+ * asked for (the documented recipe without EG2D_ORTHO_WALL did nothing); an
+ * explicit EG2D_ORTHO_NONE afterwards removes it. */
+static void test_wall_spacing_alone_is_a_wall(void **state) {
+    (void)state;
+    for (int none = 0; none < 2; ++none) {
+        eg2d_grid *g = made(65, 33, EG2D_TOPO_SINGLE);
+        assert_int_equal(domain_set_channel(g), EG2D_OK);
+        assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 1e-3), EG2D_OK);
+        if (none) assert_int_equal(eg2d_set_orthogonality(g, EG2D_ORTHO_NONE), EG2D_OK);
+        assert_int_equal(eg2d_solve(g), EG2D_OK);
+        double x[65 * 33], y[65 * 33];
+        assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+        const double first = y[65 + 32] - y[32];  /* the middle column's first cell */
+        if (none) {
+            if (!(first > 2e-3)) fail_msg("EG2D_ORTHO_NONE: first cell %g", first);
+        } else {
+            if (!(fabs(first / 1e-3 - 1) < 1e-3)) fail_msg("first cell %g, asked 1e-3", first);
+        }
+        eg2d_destroy(g);
+    }
+}
+
 static eg2d_grid *channel(int ni, int nj, double h) {
     eg2d_grid *g = made(ni, nj, EG2D_TOPO_SINGLE);
     assert_int_equal(domain_set_channel(g), EG2D_OK);
@@ -286,7 +309,7 @@ int main(void) {
         cmocka_unit_test(test_bend_two_walls), cmocka_unit_test(test_s_diffuser),
         cmocka_unit_test(test_body_in_pipe),
         cmocka_unit_test(test_cavity_corners), cmocka_unit_test(test_corner_walls_clustered_sides),
-        cmocka_unit_test(test_short_layer_says_so),
+        cmocka_unit_test(test_short_layer_says_so), cmocka_unit_test(test_wall_spacing_alone_is_a_wall),
         cmocka_unit_test(test_short_layer_monitor), cmocka_unit_test(test_unclustered_wall_corner_says_so),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
