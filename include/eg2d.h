@@ -1335,9 +1335,14 @@ EG2D_API int eg2d_get_controls(const eg2d_grid *grid, double *P, double *Q);
  * The default patches (eg2d_set_patch) then name the wall (the section and
  * base), the far field and the outflow. EG2D_ERR_ARGUMENT when ni leaves
  * fewer than 9 nodes on the section or the spacings do not fit it; the
- * handle is then unchanged. For a wall-resolved grid set the first cell with
- * eg2d_set_wall_spacing(grid, EG2D_SIDE_JMIN, h) (eg2d_first_cell_height)
- * and solve: the default wall layer is the hybrid one (EG2D_ORTHO_WALL). */
+ * handle is then unchanged. The EG2D_PARAM_AIRFOIL_* parameters may be set
+ * before or after: set after, they make the boundary again (the same as set
+ * before; a value it cannot take is refused with the handle unchanged)
+ * while the boundary is still the one eg2d_set_airfoil made, and no longer
+ * once a side has been set otherwise. For a wall-resolved grid set the
+ * first cell with eg2d_set_wall_spacing(grid, EG2D_SIDE_JMIN, h)
+ * (eg2d_first_cell_height) and solve: the default wall layer is the hybrid
+ * one (the wall control, EG2D_ORTHO_WALL, comes with the height). */
 EG2D_API int eg2d_set_airfoil(eg2d_grid *grid, const eg2d_curve *section, int topology);
 
 /*=====================================================================

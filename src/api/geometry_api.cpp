@@ -5,8 +5,8 @@
 #include <memory>
 #include <vector>
 
+#include "api/airfoil_apply.hpp"
 #include "api/handle.hpp"
-#include "geometry/airfoil_boundary.hpp"
 #include "geometry/curve.hpp"
 #include "geometry/distribution.hpp"
 #include "geometry/side_curve.hpp"
@@ -163,22 +163,7 @@ EG2D_API int eg2d_set_airfoil(eg2d_grid *grid, const eg2d_curve *section, int to
         require_curve(section);
         require(topology == EG2D_TOPO_O || topology == EG2D_TOPO_C,
                 format("topology = %d: an airfoil grid is EG2D_TOPO_O (1) or EG2D_TOPO_C (2)", topology));
-        const Settings &s = grid->gen.settings;
-        AirfoilSpec spec;
-        spec.topology = static_cast<Topology>(topology);
-        spec.farfield = s.airfoil_farfield;
-        spec.le_spacing = s.airfoil_le_spacing;
-        spec.te_spacing = s.airfoil_te_spacing;
-        spec.wake = static_cast<int>(s.airfoil_wake_nodes);
-        spec.trailing_edge = static_cast<TrailingEdge>(static_cast<int>(s.airfoil_trailing_edge));
-        const Grid &g = grid->gen.grid();
-        std::vector<double> x, y;
-        airfoil_boundary(section->arc, spec, g.ni(), g.nj(), x, y);
-        Grid probe(g.ni(), g.nj());  // the ring's checks (crossings, the cut) before the handle changes
-        probe.set_topology(spec.topology);
-        probe.set_boundary(x.data(), y.data());
-        grid->gen.set_topology(spec.topology);
-        grid->gen.set_boundary(x.data(), y.data());
+        apply_airfoil(grid, std::make_shared<const ArcLength>(section->arc), topology, grid->gen.settings);
     });
 }
 

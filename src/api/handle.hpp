@@ -4,12 +4,15 @@
 #pragma once
 #include <array>
 #include <cmath>
+#include <memory>
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "base/error.hpp"
 #include "generator/generator.hpp"
+#include "geometry/curve.hpp"
 #include "eg2d.h"
 
 struct eg2d_grid {
@@ -21,6 +24,14 @@ struct eg2d_grid {
     std::array<double, 4> wall_height{{-1.0, -1.0, -1.0, -1.0}};
     // Wall-clock seconds of the last eg2d_iterate/eg2d_solve (for the report formats).
     double run_seconds = 0.0;
+    // The last eg2d_set_airfoil: its section, topology and the boundary it
+    // made. An EG2D_PARAM_AIRFOIL_* set afterwards makes it again while the
+    // boundary is still that one (the settings act whatever their order).
+    struct Airfoil {
+        std::shared_ptr<const eg2d::ArcLength> section;
+        int topology = 0;
+        std::vector<double> x, y;
+    } airfoil;
 };
 
 namespace eg2d {

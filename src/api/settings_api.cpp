@@ -1,4 +1,5 @@
 // System, solver and parameters.
+#include "api/airfoil_apply.hpp"
 #include "api/handle.hpp"
 #include "api/parameters.hpp"
 #include "solvers/solver.hpp"
@@ -15,7 +16,7 @@ int set_param(eg2d_grid *grid, const char *function, int param, double value) {
         Settings next = grid->gen.settings;
         next.*(p->field) = value;
         check_settings(next);
-        grid->gen.settings = next;
+        set_settings_remaking_airfoil(grid, next);
     });
 }
 }  // namespace

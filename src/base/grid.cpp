@@ -216,6 +216,18 @@ void Grid::read_side(Side s, const double *fx, const double *fy, std::vector<dou
     }
 }
 
+bool Grid::boundary_is(const double *px, const double *py) const {
+    std::vector<double> a, b;
+    for (int k = 0; k < 4; ++k) {
+        const Side s = static_cast<Side>(k);
+        if (!has_side(s)) continue;
+        if (!side_set(s)) return false;
+        read_side(s, px, py, a, b);
+        if (a != user_x_[k] || b != user_y_[k]) return false;
+    }
+    return true;
+}
+
 void Grid::restore_boundary() {
     for (int si = 0; si < 4; ++si)
         if (side_set(static_cast<Side>(si))) write_side(static_cast<Side>(si), user_x_[si].data(), user_y_[si].data());

@@ -40,6 +40,10 @@ public:
     void set_boundary(const double *px, const double *py);   // ring of ni*nj arrays
     void set_coordinates(const double *px, const double *py);  // whole grid
 
+    // Whether every side of the topology is set and holds, as set, the
+    // points of the ring px, py (ni*nj arrays).
+    bool boundary_is(const double *px, const double *py) const;
+
     // Puts the user's points back on every set side. Solving moves some of
     // them (a C-grid's wake cut is solved for, sliding sides slide), and a
     // new start must begin from the boundary as set, as a fresh handle does.

@@ -123,6 +123,54 @@ static void test_open_trailing_edge(void **state) {
 }
 
 /* What cannot be made is refused, and the handle keeps what it had. */
+/* The airfoil's settings act whatever their order: set after
+ * eg2d_set_airfoil they make its boundary again (a far field of 500 set
+ * afterwards was 100, with EG2D_OK), identical to the grid they make set
+ * before; once the user has replaced a side, no longer. */
+static void test_settings_after_set_airfoil(void **state) {
+    const int ni = 129, nj = 33, n = ni * nj;
+    double *x1 = alloc(n), *y1 = alloc(n), *x2 = alloc(n), *y2 = alloc(n);
+    eg2d_curve *c = naca0012(EG2D_NACA_CLOSED_TE);
+    eg2d_grid *before, *after;
+    (void)state;
+    assert_int_equal(eg2d_create(ni, nj, &before), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(before, EG2D_PARAM_AIRFOIL_FARFIELD, 500), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(before, EG2D_PARAM_AIRFOIL_WAKE_NODES, 24), EG2D_OK);
+    assert_int_equal(eg2d_set_airfoil(before, c, EG2D_TOPO_C), EG2D_OK);
+    assert_int_equal(eg2d_create(ni, nj, &after), EG2D_OK);
+    assert_int_equal(eg2d_set_airfoil(after, c, EG2D_TOPO_C), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(after, EG2D_PARAM_AIRFOIL_FARFIELD, 500), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(after, EG2D_PARAM_AIRFOIL_WAKE_NODES, 24), EG2D_OK);
+    assert_int_equal(eg2d_initialize(before, EG2D_INIT_TFI), EG2D_OK);
+    assert_int_equal(eg2d_initialize(after, EG2D_INIT_TFI), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(before, x1, y1), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(after, x2, y2), EG2D_OK);
+    assert_true(fabs(x1[0] - 501) < 1e-9);
+    assert_memory_equal(x1, x2, sizeof(double) * (size_t)n);
+    assert_memory_equal(y1, y2, sizeof(double) * (size_t)n);
+    /* A bad value is refused with the boundary unchanged. */
+    assert_int_equal(eg2d_set_parameter(after, EG2D_PARAM_AIRFOIL_WAKE_NODES, 70), EG2D_ERR_ARGUMENT);
+    assert_int_equal(eg2d_initialize(after, EG2D_INIT_TFI), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(after, x2, y2), EG2D_OK);
+    assert_memory_equal(x1, x2, sizeof(double) * (size_t)n);
+    double wake = 0;
+    assert_int_equal(eg2d_get_parameter(after, EG2D_PARAM_AIRFOIL_WAKE_NODES, &wake), EG2D_OK);
+    assert_true(wake == 24);
+    /* The user's own JMAX replaces the airfoil's: the far field no longer moves it. */
+    double *sx = alloc(ni), *sy = alloc(ni);
+    for (int i = 0; i < ni; ++i) sx[i] = x1[(nj - 1) * ni + i], sy[i] = y1[(nj - 1) * ni + i];
+    sy[ni / 2] += 1.0;
+    assert_int_equal(eg2d_set_side(after, EG2D_SIDE_JMAX, sx, sy), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(after, EG2D_PARAM_AIRFOIL_FARFIELD, 100), EG2D_OK);
+    assert_int_equal(eg2d_initialize(after, EG2D_INIT_TFI), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(after, x2, y2), EG2D_OK);
+    assert_true(fabs(x2[0] - 501) < 1e-9 && y2[(nj - 1) * ni + ni / 2] == sy[ni / 2]);
+    free(sx), free(sy);
+    eg2d_destroy(before), eg2d_destroy(after);
+    eg2d_curve_destroy(c);
+    free(x1), free(y1), free(x2), free(y2);
+}
+
 static void test_refused(void **state) {
     eg2d_grid *g;
     eg2d_curve *c = naca0012(EG2D_NACA_CLOSED_TE);
@@ -197,6 +245,7 @@ int main(void) {
         cmocka_unit_test(test_c_grid_boundary),
         cmocka_unit_test(test_open_trailing_edge),
         cmocka_unit_test(test_refused),
+        cmocka_unit_test(test_settings_after_set_airfoil),
         cmocka_unit_test(test_wall_resolved),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,0 +1,42 @@
+#include "api/airfoil_apply.hpp"
+
+#include "geometry/airfoil_boundary.hpp"
+
+namespace eg2d {
+namespace api {
+
+void apply_airfoil(eg2d_grid *grid, std::shared_ptr<const ArcLength> section, int topology, const Settings &s) {
+    AirfoilSpec spec;
+    spec.topology = static_cast<Topology>(topology);
+    spec.farfield = s.airfoil_farfield;
+    spec.le_spacing = s.airfoil_le_spacing;
+    spec.te_spacing = s.airfoil_te_spacing;
+    spec.wake = static_cast<int>(s.airfoil_wake_nodes);
+    spec.trailing_edge = static_cast<TrailingEdge>(static_cast<int>(s.airfoil_trailing_edge));
+    const Grid &g = grid->gen.grid();
+    std::vector<double> x, y;
+    airfoil_boundary(*section, spec, g.ni(), g.nj(), x, y);
+    Grid probe(g.ni(), g.nj());  // the ring's checks (crossings, the cut) before the handle changes
+    probe.set_topology(spec.topology);
+    probe.set_boundary(x.data(), y.data());
+    eg2d_grid::Airfoil memory{std::move(section), topology, x, y};
+    grid->gen.set_topology(spec.topology);
+    grid->gen.set_boundary(x.data(), y.data());
+    grid->airfoil = std::move(memory);
+}
+
+void set_settings_remaking_airfoil(eg2d_grid *grid, const Settings &next) {
+    const eg2d_grid::Airfoil &a = grid->airfoil;
+    const Settings &now = grid->gen.settings;
+    const bool airfoil_changed = next.airfoil_farfield != now.airfoil_farfield ||
+                                 next.airfoil_le_spacing != now.airfoil_le_spacing ||
+                                 next.airfoil_te_spacing != now.airfoil_te_spacing ||
+                                 next.airfoil_wake_nodes != now.airfoil_wake_nodes ||
+                                 next.airfoil_trailing_edge != now.airfoil_trailing_edge;
+    if (airfoil_changed && a.section && grid->gen.grid().boundary_is(a.x.data(), a.y.data()))
+        apply_airfoil(grid, a.section, a.topology, next);  // throws before anything changed
+    grid->gen.settings = next;
+}
+
+}  // namespace api
+}  // namespace eg2d
