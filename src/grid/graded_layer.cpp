@@ -296,7 +296,13 @@ void grade_family(Grid &g, bool columns, GradedLayer &out, std::string &moved, s
         L.points = line_points(g, columns, l);
         L.arc = arc_lengths(L.points);
         try {
-            L.cells = layer_cells(nodes - 1, a, b, L.arc.back());
+            // Lines alike (a straight channel's) share their cells: the
+            // ratio's search per line was a fifth of such a run.
+            const Line *prev = l > 0 ? &all[static_cast<std::size_t>(l - 1)] : nullptr;
+            const double pa = l > 0 && !lo.empty() ? lo[static_cast<std::size_t>(l - 1)] : 0.0;
+            const double pb = l > 0 && !hi.empty() ? hi[static_cast<std::size_t>(l - 1)] : 0.0;
+            L.cells = prev && pa == a && pb == b && prev->arc.back() == L.arc.back() ? prev->cells
+                                                                                   : layer_cells(nodes - 1, a, b, L.arc.back());
         } catch (const Error &e) {
             fail(Failure::Argument, format("graded wall layer: the %s %d (length %.6g) cannot take first cells %.6g "
                                            "and %.6g in %d cells: %s", columns ? "column" : "row", l, L.arc.back(),
@@ -378,17 +384,21 @@ std::string corner_notes(const Grid &g, const std::array<double, 4> &height) {
     return out;
 }
 
-// The largest deviation of a cell's corner angle from 90 degrees (a folded
-// corner counts as more than 90).
-double start_skewness(const Grid &g) {
+// Whether every cell's corners are within `degrees` of 90 and turn with the
+// grid (none folded or flat): |cos| <= sin(degrees) at each, no atan2 (the
+// check took a tenth of a straight channel's whole run).
+bool near_square(const Grid &g, double degrees) {
     const int o = grid_orientation(g);
-    double most = 0.0;
+    const double s = std::sin(degrees * std::acos(-1.0) / 180.0), s2 = s * s;
     for (int j = 0; j < g.nj() - 1; ++j)
         for (int i = 0; i < g.ni() - 1; ++i) {
             const Cell c = Cell::at(g, i, j);
-            for (int m = 0; m < 4; ++m) most = std::max(most, std::fabs(c.corner_angle(m, o) - 90.0));
+            for (int m = 0; m < 4; ++m) {
+                const Cell::Corner k = c.corner(m, o);
+                if (!(k.cross > 0.0) || k.dot * k.dot > s2 * k.lengths2) return false;
+            }
         }
-    return most;
+    return true;
 }
 
 // The start kept: every interior node's controls inverted from it, frozen.
@@ -450,7 +460,7 @@ GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height) {
                 out.psi[node_index(ni, ni - 1, j)] = out.psi[node_index(ni, 0, j)];
             }
         }
-    if (start_skewness(g) <= kKeepStartSkew) {
+    if (near_square(g, kKeepStartSkew)) {
         Grid turned = g;
         turn_to_normals(turned, out);
         if (fold_summary(turned).folded == 0) g = std::move(turned);
