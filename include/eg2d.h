@@ -1292,6 +1292,14 @@ EG2D_API int eg2d_get_controls(const eg2d_grid *grid, double *P, double *Q);
 #define EG2D_AIRFOIL_TE_BLUNT   0  /* kept as a blunt base: straight, part of the wall */
 #define EG2D_AIRFOIL_TE_SHARPEN 1  /* each surface moved towards the base's midpoint in
                                       proportion to its distance along the chord */
+#define EG2D_PARAM_AIRFOIL_O_TE_BASE     425  /* O-grid: [0, 0.01] chords, default 5e-5: a sharp
+                                                 trailing edge (or one sharpened) is cut back
+                                                 along the chord, at most 0.005 chords, to a
+                                                 straight base this thick, part of the wall, so
+                                                 that the edge is two corners of about 90 degrees
+                                                 (a single node leaves two cells of about 172);
+                                                 0 keeps the sharp edge a single node. C-grids
+                                                 keep a sharp edge on their cut */
 /* Sets the topology (EG2D_TOPO_O or EG2D_TOPO_C) and the whole boundary of
  * an airfoil grid round `section`, a curve from its trailing edge along one
  * surface to the leading edge and back along the other (eg2d_curve_naca4,

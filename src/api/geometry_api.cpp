@@ -171,6 +171,7 @@ EG2D_API int eg2d_set_airfoil(eg2d_grid *grid, const eg2d_curve *section, int to
         spec.te_spacing = s.airfoil_te_spacing;
         spec.wake = static_cast<int>(s.airfoil_wake_nodes);
         spec.trailing_edge = static_cast<TrailingEdge>(static_cast<int>(s.airfoil_trailing_edge));
+        spec.o_te_base = s.airfoil_o_te_base;
         const Grid &g = grid->gen.grid();
         std::vector<double> x, y;
         airfoil_boundary(section->arc, spec, g.ni(), g.nj(), x, y);

@@ -29,7 +29,7 @@ namespace eg2dtool {
 const char *const airfoil_help =
     "usage: eg2d airfoil SOURCE --size NIxNJ (--yplus Y --reynolds RE | --first-cell H)\n"
     "                   [--topology c|o] [--farfield R] [--le-spacing S] [--te-spacing S]\n"
-    "                   [--te blunt|sharpen] [--growth G] [--levels N]\n"
+    "                   [--te blunt|sharpen] [--te-base T] [--growth G] [--levels N]\n"
     "                   [--method hybrid|elliptic|hyperbolic] [--format LIST] [-o DIR] [--quiet]\n"
     "\n"
     "An O- or C-grid round an airfoil (eg2d_set_airfoil), wall-resolved, written as a\n"
@@ -51,6 +51,11 @@ const char *const airfoil_help =
     "                 cells about --te-spacing apart (default; on a C-grid the cut leaves\n"
     "                 its midpoint along its normal) or sharpened (each surface moved\n"
     "                 towards the base's midpoint); the run says which\n"
+    "  --te-base      O-grid: a sharp (or sharpened) trailing edge is cut back along the\n"
+    "                 chord to a straight base T chords thick, part of the wall (default\n"
+    "                 5e-5): a single edge node leaves its two cells corners of about 172\n"
+    "                 degrees, which OpenFOAM's checkMesh fails on skewness; 0 keeps the\n"
+    "                 sharp edge; the run says which\n"
     "  --growth       the largest growth of the wall layer's cells accepted (default 1.2);\n"
     "                 a grid whose first 30 cells grow faster is reported and exits 4\n"
     "  --levels       N nested grids, each coarser one every other node of the next: NI-1\n"
@@ -101,6 +106,7 @@ struct Args {
     std::string source, out_dir = ".", topology = "c", method = "hybrid", te, formats = "plot3d";
     int ni = 0, nj = 0, levels = 1;
     double yplus = 0, reynolds = 0, first = 0, growth = 1.2, farfield = 100, le = 0, tes = 0;
+    double te_base = -1;  // O-grid: the base a sharp trailing edge is cut to; < 0: the library's default
     bool quiet = false;
 };
 
@@ -140,6 +146,7 @@ Args parse(int argc, char **argv) {
             else if (arg == "--farfield") a.farfield = number(arg, v);
             else if (arg == "--le-spacing") a.le = number(arg, v);
             else if (arg == "--te-spacing") a.tes = number(arg, v);
+            else if (arg == "--te-base") a.te_base = v == "0" ? 0.0 : number(arg, v);
             else if (arg == "--levels") {
                 const double n = number(arg, v);
                 if (n != std::floor(n) || n > 12) usage("--levels expects a whole number from 1 to 12, found \"" + v + "\"");
@@ -331,6 +338,9 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
     if (a.tes > 0) check(g, eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_TE_SPACING, a.tes), "--te-spacing");
     check(g, eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_TRAILING_EDGE,
                                 a.te == "blunt" ? EG2D_AIRFOIL_TE_BLUNT : EG2D_AIRFOIL_TE_SHARPEN), "--te");
+    if (a.te_base >= 0) check(g, eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_O_TE_BASE, a.te_base), "--te-base");
+    double te_base = 0;
+    eg2d_get_parameter(g, EG2D_PARAM_AIRFOIL_O_TE_BASE, &te_base);
     int wake = 0;
     if (cgrid) {  // about 0.21 (ni-1) nodes a side, on every level's node
         wake = step * std::max(1, static_cast<int>(std::lround(0.21 * (a.ni - 1) / step)));
@@ -351,6 +361,11 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
                     gap <= 1e-7 ? "sharp" : (a.te == "blunt" ? "blunt" : "sharpened"), a.method.c_str());
         if (naca && a.te == "sharpen") std::printf("note: the NACA section closed sharply at chord 1 (--te sharpen)\n");
         trailing_edge_note(gap, a.te == "sharpen");
+        if (!cgrid && (gap <= 1e-7 || a.te == "sharpen"))
+            std::printf(te_base > 0 ? "note: the O-grid's sharp trailing edge cut back to a base %.3g chords thick, part "
+                                      "of the wall (--te-base 0 keeps it sharp)\n"
+                                    : "note: the O-grid's trailing edge kept sharp (--te-base 0): its two cells have "
+                                      "corners of about 180 degrees less half its angle\n", te_base);
     }
     Progress progress(isatty(STDOUT_FILENO) != 0, a.quiet);
     check(g, eg2d_set_monitor(g, Progress::monitor, &progress), "monitor");
