@@ -78,30 +78,29 @@ std::vector<P> surface(const ArcLength &c, double s0, double s1, int n, double d
 constexpr double kMaxTeCut = 0.005;
 
 // The normalized arc length between s_from and s_to (the trailing edge's end
-// first) at which the section is `back` chords before the trailing edge
-// along the chord (u = 1 - back): the first crossing from the trailing
-// edge, by sampling, then bisection.
-double at_chord(const ArcLength &c, double s_from, double s_to, P le, P e, double chord, double back) {
-    auto u = [&](double s) {
+// first) at which the section is `back` chords before the trailing edge te
+// along the direction b (te - p).b = back: the first crossing from the
+// trailing edge, by sampling, then bisection.
+double cut_at(const ArcLength &c, double s_from, double s_to, P te, P b, double chord, double back) {
+    auto along = [&](double s) {
         const P p = point(c, s);
-        return ((p.x - le.x) * e.x + (p.y - le.y) * e.y) / chord;
+        return ((te.x - p.x) * b.x + (te.y - p.y) * b.y) / chord;
     };
-    const double target = u(s_from) - back;
     const int samples = 2000;
-    double a = s_from, b = s_to;
+    double a = s_from, z = s_to;
     for (int k = 1; k <= samples; ++k) {
         const double s = s_from + (s_to - s_from) * k / samples;
-        if (u(s) <= target) {
-            b = s;
+        if (along(s) >= back) {
+            z = s;
             break;
         }
         a = s;
     }
     for (int it = 0; it < 100; ++it) {
-        const double m = 0.5 * (a + b);
-        (u(m) > target ? a : b) = m;
+        const double m = 0.5 * (a + z);
+        (along(m) < back ? a : z) = m;
     }
-    return 0.5 * (a + b);
+    return 0.5 * (a + z);
 }
 
 // The n points after a on the straight line to b, uniform (b the last).
@@ -146,10 +145,21 @@ void airfoil_boundary(const ArcLength &c, const AirfoilSpec &spec, int ni, int n
     };
     const bool cut = !cgrid && !blunt && spec.o_te_base > 0.0;
     if (cut) {
-        auto ends = [&](double back, double &a, double &b) {
-            a = at_chord(c, 0.0, s_le, le, e, chord, back);
-            b = at_chord(c, 1.0, s_le, le, e, chord, back);
-            return dist(sharpened(point(c, a), lower_corner), sharpened(point(c, b), upper_corner)) / chord;
+        // Across the edge's bisector (the surfaces' directions over the
+        // last kMaxTeCut chords), so that its two corners turn alike: cut
+        // across the chord, S1223's base (its edge 25 degrees below the
+        // chord) left corners of unequal turn, and checkMesh's skewness at
+        // the sharper one was 4.14.
+        const double ds = kMaxTeCut * chord / c.length();
+        const P pl = point(c, ds), pu = point(c, 1.0 - ds);
+        const double ll = dist(pl, te), lu = dist(pu, te);
+        P b{(te.x - pl.x) / ll + (te.x - pu.x) / lu, (te.y - pl.y) / ll + (te.y - pu.y) / lu};
+        const double lb = std::hypot(b.x, b.y);
+        b = lb > 0.0 ? P{b.x / lb, b.y / lb} : e;
+        auto ends = [&](double back, double &a, double &z) {
+            a = cut_at(c, 0.0, s_le, te, b, chord, back);
+            z = cut_at(c, 1.0, s_le, te, b, chord, back);
+            return dist(sharpened(point(c, a), lower_corner), sharpened(point(c, z), upper_corner)) / chord;
         };
         double lo_back = 0.0, hi_back = kMaxTeCut;
         if (ends(hi_back, s0, s1) > spec.o_te_base)

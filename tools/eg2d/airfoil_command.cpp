@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "face_check.hpp"
 #include "failure.hpp"
 #include "features.hpp"
 #include "grid_views.hpp"
@@ -271,6 +272,15 @@ SectionShape section_shape(const eg2d_curve *c) {
     return s;
 }
 
+// printf into a string.
+template <class... Args>
+std::string format_text(const char *f, Args... args) {
+    const int n = std::snprintf(nullptr, 0, f, args...);
+    std::string out(static_cast<std::size_t>(std::max(n, 0)), '\0');
+    std::snprintf(out.data(), out.size() + 1, f, args...);
+    return out;
+}
+
 // Says what becomes of an open trailing edge.
 void trailing_edge_note(double gap, bool sharpen) {
     if (gap <= 1e-7) return;
@@ -406,6 +416,10 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
     const double growth = wall_growth(g, a.ni, a.nj, body0, body1);
 
     make_directory(a.out_dir);
+    // OpenFOAM's checkMesh limits (aspect ratio aside): what each level's
+    // faces are checked against, as a solver would (face_check.hpp).
+    constexpr double kNonorthLimit = 70.0, kSkewLimit = 4.0;
+    std::string past_limits;
     double span = 1.0;
     eg2d_get_parameter(g, EG2D_PARAM_SPAN, &span);
     for (int level = 0; level < a.levels; ++level) {
@@ -430,6 +444,20 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
             check(lg, eg2d_set_parameter(lg, EG2D_PARAM_SPAN, span), "span");
         }
         const std::string base = a.out_dir + "/" + name + "-" + std::to_string(ci) + "x" + std::to_string(cj);
+        std::vector<double> lx(static_cast<std::size_t>(ci) * cj), ly(lx.size());
+        eg2d_get_coordinates(lg, lx.data(), ly.data());
+        const FaceCheck fv = check_faces(ci, cj, lx, ly, !cgrid, wake / s, kNonorthLimit, kSkewLimit);
+        const std::string fv_line = format_text(
+            "solver check    faces as OpenFOAM's checkMesh measures them: non-orthogonality max %.3g (limit %g), "
+            "skewness max %.3g (limit %g)%s\n", fv.nonorth_max, kNonorthLimit, fv.skew_max, kSkewLimit,
+            fv.past == 0 ? "" : format_text(": %d face(s) past, the worst of cell (%d, %d): non-orthogonality %.3g, "
+                                            "skewness %.3g", fv.past, fv.worst_i, fv.worst_j, fv.worst_nonorth,
+                                            fv.worst_skew).c_str());
+        if (fv.past > 0 && past_limits.empty())
+            past_limits = format_text("%dx%d has %d face(s) past checkMesh's limits (non-orthogonality %g, skewness %g), "
+                                      "the worst of cell (%d, %d): non-orthogonality %.3g, skewness %.3g",
+                                      ci, cj, fv.past, kNonorthLimit, kSkewLimit, fv.worst_i, fv.worst_j,
+                                      fv.worst_nonorth, fv.worst_skew);
         for (const Output &o : outputs)
             if (!o.views) check(lg, eg2d_write(lg, (base + o.extension).c_str(), o.id), base + o.extension);
         write_views(lg, outputs, base, name + " " + std::to_string(ci) + "x" + std::to_string(cj));
@@ -447,7 +475,10 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
             std::printf("level %d: %dx%d -> %s.*\n", level, ci, cj, base.c_str());
             if (level == 0) {
                 std::ifstream report(base + ".report.txt");
-                std::printf("%s%s", std::string(std::istreambuf_iterator<char>(report), {}).c_str(), tmr.c_str());
+                std::printf("%s%s%s", std::string(std::istreambuf_iterator<char>(report), {}).c_str(), fv_line.c_str(),
+                            tmr.c_str());
+            } else if (fv.past > 0) {
+                std::printf("%s", fv_line.c_str());
             }
         }
     }
@@ -455,9 +486,10 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
         std::fprintf(stderr,
                      "eg2d: airfoil: the wall layer grows by up to %.3f over its first 30 cells, more than --growth %g: "
                      "raise NJ or lower --farfield (the files are written)\n", growth, a.growth);
-        return EXIT_GEOMETRY;
     }
-    return EXIT_OK;
+    if (!past_limits.empty())
+        std::fprintf(stderr, "eg2d: airfoil: %s (the files are written)\n", past_limits.c_str());
+    return growth > a.growth || !past_limits.empty() ? EXIT_GEOMETRY : EXIT_OK;
 }
 
 }  // namespace eg2dtool
