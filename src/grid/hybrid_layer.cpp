@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "base/cell.hpp"
 #include "base/error.hpp"
@@ -190,6 +191,11 @@ double pinch_angle(const Grid &m, int from) {
 void march_with_retries(const Grid &g, Grid &m, Settings s, double least, std::string &note) {
     const bool ogrid = g.topology() == Topology::O;
     const int held = hybrid_layer_rows(g.nj());
+    struct Pinched {
+        Grid m;
+        std::string note;
+    };
+    std::unique_ptr<Pinched> pinched;  // the first march that did not fold, if its lines nearly met
     std::vector<double> tries{std::max(s.march_smoothing, least)};
     for (double r : kRetrySmoothing)
         if (r > tries.back()) tries.push_back(r);
@@ -215,6 +221,7 @@ void march_with_retries(const Grid &g, Grid &m, Settings s, double least, std::s
             say_resumed();
             const double pinch = ogrid && k + 1 < tries.size() && tries[k + 1] > tries[k] ? pinch_angle(m, held) : 0.0;
             if (pinch > kPinchAngle) {
+                if (!pinched) pinched = std::make_unique<Pinched>(Pinched{m, note});
                 note += format("%swall layer (hybrid): the march's lines nearly meet above the held rows (faces %.3g "
                                "degrees from their cells' line); marched again with EG2D_PARAM_MARCH_SMOOTHING %g",
                                note.empty() ? "" : "; ", pinch, tries[k + 1]);
@@ -223,6 +230,11 @@ void march_with_retries(const Grid &g, Grid &m, Settings s, double least, std::s
             return;
         } catch (const Error &e) {
             say_resumed();
+            if (e.failure() == Failure::Folded && pinched) {  // the retries fold: the first march, as it was
+                m = pinched->m;
+                note = pinched->note;
+                return;
+            }
             if (e.failure() != Failure::Folded || k + 1 == tries.size()) throw;
             note += format("%swall layer (hybrid): %s; marched again with EG2D_PARAM_MARCH_SMOOTHING %g",
                            note.empty() ? "" : "; ", e.what(), tries[k + 1]);
