@@ -1311,7 +1311,9 @@ EG2D_API int eg2d_get_controls(const eg2d_grid *grid, double *P, double *Q);
  *   trailing edge kept as a straight base with nodes about that spacing
  *   apart, the section's first cells at its corners the base's spacing
  *   (EG2D_AIRFOIL_TE_BLUNT) or closed (EG2D_AIRFOIL_TE_SHARPEN).
- *   O-grid: JMIN the section (and base), JMAX the circle of radius R + 1/2
+ *   O-grid: JMIN the section (and base; a sharp or sharpened trailing edge
+ *   cut back to a base EG2D_PARAM_AIRFOIL_O_TE_BASE thick, unless that is
+ *   0), JMAX the circle of radius R + 1/2
  *   about the mid-chord (R = EG2D_PARAM_AIRFOIL_FARFIELD), uniform in angle from
  *   the trailing edge's direction.
  *   C-grid: JMIN the lower cut (EG2D_PARAM_AIRFOIL_WAKE_NODES nodes from the
