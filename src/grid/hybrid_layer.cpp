@@ -156,7 +156,7 @@ constexpr double kPinchAngle = 75.0;
 
 double pinch_angle(const Grid &m, int from) {
     const int ni = m.ni(), nj = m.nj();
-    auto centroid = [&](int i, int j, double &cx, double &cy) {
+    auto centroid = [&](int i, int j, double &cx, double &cy) {  // false for a cell of no area
         const Cell c = Cell::at(m, i, j);
         double a = 0;
         cx = cy = 0;
@@ -165,15 +165,16 @@ double pinch_angle(const Grid &m, int from) {
             const double w = c.x[k] * c.y[n] - c.x[n] * c.y[k];
             a += w, cx += (c.x[k] + c.x[n]) * w, cy += (c.y[k] + c.y[n]) * w;
         }
+        if (!(a != 0.0)) return false;
         cx /= 3 * a, cy /= 3 * a;
+        return true;
     };
     double worst = 0;
     for (int j = from; j < nj - 1; ++j)
         for (int i = 0; i < ni - 1; ++i) {
             const int e = i + 1 < ni - 1 ? i + 1 : 0;  // round the cut
             double ax, ay, bx, by;
-            centroid(i, j, ax, ay);
-            centroid(e, j, bx, by);
+            if (!centroid(i, j, ax, ay) || !centroid(e, j, bx, by)) continue;
             const double fx = m.x[at(ni, i + 1, j + 1)] - m.x[at(ni, i + 1, j)];
             const double fy = m.y[at(ni, i + 1, j + 1)] - m.y[at(ni, i + 1, j)];
             const double dx = bx - ax, dy = by - ay, d = std::hypot(dx, dy), f = std::hypot(fx, fy);

@@ -31,6 +31,7 @@ struct Grid2 {
             const double c = p.x * r.y - r.x * p.y;
             a += c, cx += (p.x + r.x) * c, cy += (p.y + r.y) * c;
         }
+        if (!(a != 0.0)) return {0.25 * (q[0].x + q[1].x + q[2].x + q[3].x), 0.25 * (q[0].y + q[1].y + q[2].y + q[3].y)};
         return {cx / (3 * a), cy / (3 * a)};
     }
 };
@@ -44,9 +45,10 @@ void measure(V a, V b, V own, const V *nei, double &nonorth, double &skew) {
     nonorth = 0;
     if (nei) {
         d = *nei - own;
-        nonorth = std::acos(std::min(1.0, std::fabs(dot(n, d)) / (norm(n) * norm(d)))) * (180.0 / 3.14159265358979323846);
+        const double nd = norm(n) * norm(d);
+        nonorth = nd > 0 ? std::acos(std::min(1.0, std::fabs(dot(n, d)) / nd)) * (180.0 / 3.14159265358979323846) : 90.0;
     } else {
-        const double along = dot(n, cpf) / dot(n, n);
+        const double along = dot(n, n) > 0 ? dot(n, cpf) / dot(n, n) : 0.0;
         d = {n.x * along, n.y * along};
     }
     const double t = dot(n, cpf) / (dot(n, d) + 1e-300);
