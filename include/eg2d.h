@@ -1304,6 +1304,14 @@ EG2D_API int eg2d_get_controls(const eg2d_grid *grid, double *P, double *Q);
 #define EG2D_AIRFOIL_TE_BLUNT   0  /* kept as a blunt base: straight, part of the wall */
 #define EG2D_AIRFOIL_TE_SHARPEN 1  /* each surface moved towards the base's midpoint in
                                       proportion to its distance along the chord */
+#define EG2D_PARAM_AIRFOIL_O_TE_BASE     425  /* O-grid: [0, 0.01] chords, default 5e-5: a sharp
+                                                 trailing edge (or one sharpened) is cut back
+                                                 along the chord, at most 0.005 chords, to a
+                                                 straight base this thick, part of the wall, so
+                                                 that the edge is two corners of about 90 degrees
+                                                 (a single node leaves two cells of about 172);
+                                                 0 keeps the sharp edge a single node. C-grids
+                                                 keep a sharp edge on their cut */
 /* Sets the topology (EG2D_TOPO_O or EG2D_TOPO_C) and the whole boundary of
  * an airfoil grid round `section`, a curve from its trailing edge along one
  * surface to the leading edge and back along the other (eg2d_curve_naca4,
@@ -1315,7 +1323,9 @@ EG2D_API int eg2d_get_controls(const eg2d_grid *grid, double *P, double *Q);
  *   trailing edge kept as a straight base with nodes about that spacing
  *   apart, the section's first cells at its corners the base's spacing
  *   (EG2D_AIRFOIL_TE_BLUNT) or closed (EG2D_AIRFOIL_TE_SHARPEN).
- *   O-grid: JMIN the section (and base), JMAX the circle of radius R + 1/2
+ *   O-grid: JMIN the section (and base; a sharp or sharpened trailing edge
+ *   cut back to a base EG2D_PARAM_AIRFOIL_O_TE_BASE thick, unless that is
+ *   0), JMAX the circle of radius R + 1/2
  *   about the mid-chord (R = EG2D_PARAM_AIRFOIL_FARFIELD), uniform in angle from
  *   the trailing edge's direction.
  *   C-grid: JMIN the lower cut (EG2D_PARAM_AIRFOIL_WAKE_NODES nodes from the

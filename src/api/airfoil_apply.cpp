@@ -13,6 +13,7 @@ void apply_airfoil(eg2d_grid *grid, std::shared_ptr<const ArcLength> section, in
     spec.te_spacing = s.airfoil_te_spacing;
     spec.wake = static_cast<int>(s.airfoil_wake_nodes);
     spec.trailing_edge = static_cast<TrailingEdge>(static_cast<int>(s.airfoil_trailing_edge));
+    spec.o_te_base = s.airfoil_o_te_base;
     const Grid &g = grid->gen.grid();
     std::vector<double> x, y;
     airfoil_boundary(*section, spec, g.ni(), g.nj(), x, y);
@@ -32,7 +33,8 @@ void set_settings_remaking_airfoil(eg2d_grid *grid, const Settings &next) {
                                  next.airfoil_le_spacing != now.airfoil_le_spacing ||
                                  next.airfoil_te_spacing != now.airfoil_te_spacing ||
                                  next.airfoil_wake_nodes != now.airfoil_wake_nodes ||
-                                 next.airfoil_trailing_edge != now.airfoil_trailing_edge;
+                                 next.airfoil_trailing_edge != now.airfoil_trailing_edge ||
+                                 next.airfoil_o_te_base != now.airfoil_o_te_base;
     if (airfoil_changed && a.section && grid->gen.grid().boundary_is(a.x.data(), a.y.data()))
         apply_airfoil(grid, a.section, a.topology, next);  // throws before anything changed
     grid->gen.settings = next;

@@ -74,6 +74,8 @@ const ParameterInfo kParameters[] = {
      &Settings::airfoil_wake_nodes},
     {EG2D_PARAM_AIRFOIL_TRAILING_EDGE, "airfoil_trailing_edge", 0.0, 1.0, false, false, true, false,
      &Settings::airfoil_trailing_edge},
+    {EG2D_PARAM_AIRFOIL_O_TE_BASE, "airfoil_o_te_base", 0.0, 0.01, false, false, false, false,
+     &Settings::airfoil_o_te_base},
     // Approximate factorisation (src/solvers/af.cpp).
     {EG2D_PARAM_AF_DTAU_MIN, "af_dtau_min", 0.0, 1e12, true, false, false, false, &Settings::af_dtau_min},
     {EG2D_PARAM_AF_DTAU_MAX, "af_dtau_max", 0.0, 1e12, true, false, false, true, &Settings::af_dtau_max},

@@ -49,6 +49,7 @@ struct Settings {
     double airfoil_te_spacing = 0;    // chords; 0: automatic
     double airfoil_wake_nodes = 0;    // C-grid cut nodes a side; 0: automatic
     double airfoil_trailing_edge = 0; // EG2D_AIRFOIL_TE_BLUNT (0) or _SHARPEN (1)
+    double airfoil_o_te_base = 5e-5;  // chords: an O-grid's sharp trailing edge cut to a base this thick; 0 keeps it
     double svg_quality = -1;          // EG2D_QUALITY_* colouring SVG cells, -1 none
     double span = 1.0;                // thickness of the one cell layer of the 3-D files
 

@@ -66,6 +66,43 @@ std::vector<P> surface(const ArcLength &c, double s0, double s1, int n, double d
     return out;
 }
 
+// An O-grid's sharp trailing edge is a single wall node with two cells:
+// its 344 degrees (NACA 0012) outside the section are split into two
+// corners of about 172 degrees, and every ring of the march carries that V
+// out along the edge's line. OpenFOAM's checkMesh read NACA 0012 257x129 at
+// y+ 1 with skewness 17.1 (limit 4) there. Cut back to a base 5e-5 chords
+// thick (two corners of about 98 degrees, as an open section's base) the
+// same grid passed: skewness 2.08, non-orthogonality 20.7. The cut is
+// searched along the chord, at most this far back (a cusped edge that
+// stays thinner than the base is cut there).
+constexpr double kMaxTeCut = 0.005;
+
+// The normalized arc length between s_from and s_to (the trailing edge's end
+// first) at which the section is `back` chords before the trailing edge te
+// along the direction b (te - p).b = back: the first crossing from the
+// trailing edge, by sampling, then bisection.
+double cut_at(const ArcLength &c, double s_from, double s_to, P te, P b, double chord, double back) {
+    auto along = [&](double s) {
+        const P p = point(c, s);
+        return ((te.x - p.x) * b.x + (te.y - p.y) * b.y) / chord;
+    };
+    const int samples = 2000;
+    double a = s_from, z = s_to;
+    for (int k = 1; k <= samples; ++k) {
+        const double s = s_from + (s_to - s_from) * k / samples;
+        if (along(s) >= back) {
+            z = s;
+            break;
+        }
+        a = s;
+    }
+    for (int it = 0; it < 100; ++it) {
+        const double m = 0.5 * (a + z);
+        (along(m) < back ? a : z) = m;
+    }
+    return 0.5 * (a + z);
+}
+
 // The n points after a on the straight line to b, uniform (b the last).
 void segment(std::vector<P> &out, P a, P b, int n) {
     for (int k = 1; k <= n; ++k) out.push_back({a.x + (b.x - a.x) * k / n, a.y + (b.y - a.y) * k / n});
@@ -92,8 +129,49 @@ void airfoil_boundary(const ArcLength &c, const AirfoilSpec &spec, int ni, int n
     if (!(chord > 0.0)) fail(Failure::Argument, "eg2d_set_airfoil: the section has no chord (its leading edge is its trailing edge)");
     const P e{(te.x - le.x) / chord, (te.y - le.y) / chord}, n{-e.y, e.x};
     auto frame = [&](double u, double v) { return P{le.x + chord * (u * e.x + v * n.x), le.y + chord * (u * e.y + v * n.y)}; };
-    const double gap = dist(lower, upper) / chord;
-    const bool blunt = gap > kClosedGap && spec.trailing_edge == TrailingEdge::Blunt;
+    double gap = dist(lower, upper) / chord;
+    bool blunt = gap > kClosedGap && spec.trailing_edge == TrailingEdge::Blunt;
+    // An O-grid's sharp trailing edge cut back to a base (kMaxTeCut): the
+    // surfaces from s0 and to s1, the least cut along the chord at which
+    // they are spec.o_te_base apart (after sharpening, for a section
+    // sharpened), by bisection on the cut.
+    double s0 = 0.0, s1 = 1.0;
+    const P lower_corner = lower, upper_corner = upper;  // what sharpening moves towards te
+    const bool open = gap > kClosedGap;
+    auto sharpened = [&](P p, P corner) {
+        if (!open) return p;
+        const double u = std::clamp(((p.x - le.x) * e.x + (p.y - le.y) * e.y) / chord, 0.0, 1.0);
+        return P{p.x + u * (te.x - corner.x), p.y + u * (te.y - corner.y)};
+    };
+    const bool cut = !cgrid && !blunt && spec.o_te_base > 0.0;
+    if (cut) {
+        // Across the edge's bisector (the surfaces' directions over the
+        // last kMaxTeCut chords), so that its two corners turn alike: cut
+        // across the chord, S1223's base (its edge 25 degrees below the
+        // chord) left corners of unequal turn, and checkMesh's skewness at
+        // the sharper one was 4.14.
+        const double ds = kMaxTeCut * chord / c.length();
+        const P pl = point(c, ds), pu = point(c, 1.0 - ds);
+        const double ll = dist(pl, te), lu = dist(pu, te);
+        P b{(te.x - pl.x) / ll + (te.x - pu.x) / lu, (te.y - pl.y) / ll + (te.y - pu.y) / lu};
+        const double lb = std::hypot(b.x, b.y);
+        b = lb > 0.0 ? P{b.x / lb, b.y / lb} : e;
+        auto ends = [&](double back, double &a, double &z) {
+            a = cut_at(c, 0.0, s_le, te, b, chord, back);
+            z = cut_at(c, 1.0, s_le, te, b, chord, back);
+            return dist(sharpened(point(c, a), lower_corner), sharpened(point(c, z), upper_corner)) / chord;
+        };
+        double lo_back = 0.0, hi_back = kMaxTeCut;
+        if (ends(hi_back, s0, s1) > spec.o_te_base)
+            for (int it = 0; it < 60; ++it) {
+                const double m = 0.5 * (lo_back + hi_back);
+                (ends(m, s0, s1) < spec.o_te_base ? lo_back : hi_back) = m;
+            }
+        gap = ends(hi_back, s0, s1);
+        lower = sharpened(point(c, s0), lower_corner);
+        upper = sharpened(point(c, s1), upper_corner);
+        blunt = true;
+    }
 
     // Cut nodes a side; base cells (the whole base on an O-grid, each half on a C-grid).
     const int wake = cgrid ? (spec.wake > 0 ? spec.wake : automatic_wake(ni)) : 0;
@@ -121,9 +199,14 @@ void airfoil_boundary(const ArcLength &c, const AirfoilSpec &spec, int ni, int n
                     ni, nj, nb, cgrid ? format(" with %d cut nodes a side", wake).c_str() : "",
                     cgrid ? " or lower EG2D_PARAM_AIRFOIL_WAKE_NODES" : ""));
     const int nl = (nb + 1) / 2, nu = nb + 1 - nl;  // the leading edge in both
-    std::vector<P> lo = surface(c, 0.0, s_le, nl, te_ds * chord, le_ds * chord);
-    std::vector<P> up = surface(c, s_le, 1.0, nu, le_ds * chord, te_ds * chord);
-    if (!blunt) {  // a sharp trailing edge, or one sharpened: the surfaces end at its midpoint
+    std::vector<P> lo = surface(c, s0, s_le, nl, te_ds * chord, le_ds * chord);
+    std::vector<P> up = surface(c, s_le, s1, nu, le_ds * chord, te_ds * chord);
+    if (cut) {  // a section sharpened, then cut: its surfaces as sharpened
+        for (P &p : lo) p = sharpened(p, lower_corner);
+        for (P &p : up) p = sharpened(p, upper_corner);
+        lo.front() = lower;
+        up.back() = upper;
+    } else if (!blunt) {  // a sharp trailing edge, or one sharpened: the surfaces end at its midpoint
         for (std::vector<P> *side : {&lo, &up}) {
             const P corner = side == &lo ? lower : upper;
             for (P &p : *side) {

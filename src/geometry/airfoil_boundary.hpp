@@ -21,7 +21,12 @@ struct AirfoilSpec {
     double te_spacing = 0;     // chords; 0: automatic
     int wake = 0;              // C-grid: cut nodes a side (the trailing edge's index); 0: automatic
     TrailingEdge trailing_edge = TrailingEdge::Blunt;
+    // O-grid: a sharp trailing edge (or one sharpened) cut back to a straight
+    // base this many chords thick (EG2D_PARAM_AIRFOIL_O_TE_BASE); 0 keeps
+    // the edge a single node.
+    double o_te_base = 5e-5;
 };
+
 
 // The boundary ring of an ni x nj grid (ni*nj arrays, Fortran order; only
 // the ring is written). Throws Argument for a section, size or setting it

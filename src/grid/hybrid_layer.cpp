@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
+#include "base/cell.hpp"
 #include "base/error.hpp"
 #include "base/polyline.hpp"
 #include "grid/hybrid_cgrid.hpp"
@@ -119,10 +121,59 @@ void respace_layer(Grid &m, int rows, const std::vector<double> &first) {
     }
 }
 
+// An O-grid march whose lines nearly meet above the held rows, though no
+// cell folds: the largest angle (degrees) between a face between two cells
+// of a row, from row `from` up, and the line joining the cells' centroids
+// (what a finite-volume solver calls non-orthogonality; Jasak 1996). RAE
+// 2822 257x129 (first cell 4.5e-6) marched at 0.5 with its lines over the
+// aft lower surface pinched to a fifth of their spacing at layers 106-108:
+// 86 degrees there, and the solve above the layer inherited it through the
+// controls; marched at 1, 31.
+constexpr double kPinchAngle = 75.0;
+
+double pinch_angle(const Grid &m, int from) {
+    const int ni = m.ni(), nj = m.nj();
+    auto centroid = [&](int i, int j, double &cx, double &cy) {  // false for a cell of no area
+        const Cell c = Cell::at(m, i, j);
+        double a = 0;
+        cx = cy = 0;
+        for (int k = 0; k < 4; ++k) {
+            const int n = (k + 1) % 4;
+            const double w = c.x[k] * c.y[n] - c.x[n] * c.y[k];
+            a += w, cx += (c.x[k] + c.x[n]) * w, cy += (c.y[k] + c.y[n]) * w;
+        }
+        if (!(a != 0.0)) return false;
+        cx /= 3 * a, cy /= 3 * a;
+        return true;
+    };
+    double worst = 0;
+    for (int j = from; j < nj - 1; ++j)
+        for (int i = 0; i < ni - 1; ++i) {
+            const int e = i + 1 < ni - 1 ? i + 1 : 0;  // round the cut
+            double ax, ay, bx, by;
+            if (!centroid(i, j, ax, ay) || !centroid(e, j, bx, by)) continue;
+            const double fx = m.x[node_index(ni, i + 1, j + 1)] - m.x[node_index(ni, i + 1, j)];
+            const double fy = m.y[node_index(ni, i + 1, j + 1)] - m.y[node_index(ni, i + 1, j)];
+            const double dx = bx - ax, dy = by - ay, d = std::hypot(dx, dy), f = std::hypot(fx, fy);
+            if (!(d > 0.0 && f > 0.0)) continue;
+            // the face's normal is (fy, -fx): the angle from it is 90 less the angle from the face
+            const double c = std::fabs(fy * dx - fx * dy) / (d * f);
+            worst = std::max(worst, std::acos(std::min(1.0, c)) * (180.0 / 3.14159265358979323846));
+        }
+    return worst;
+}
+
 // The march, first resumed with more dissipation from a little before the
 // layer that folds (hyperbolic.hpp), then, while it still folds, marched
 // again from the wall with each value of kRetrySmoothing; each retry is noted.
 void march_with_retries(const Grid &g, Grid &m, Settings s, double least, std::string &note) {
+    const bool ogrid = g.topology() == Topology::O;
+    const int held = hybrid_layer_rows(g.nj());
+    struct Pinched {
+        Grid m;
+        std::string note;
+    };
+    std::unique_ptr<Pinched> pinched;  // the first march that did not fold, if its lines nearly met
     std::vector<double> tries{std::max(s.march_smoothing, least)};
     for (double r : kRetrySmoothing)
         if (r > tries.back()) tries.push_back(r);
@@ -146,9 +197,22 @@ void march_with_retries(const Grid &g, Grid &m, Settings s, double least, std::s
             if (k == 0) hyperbolic_march(m, s, raised, resumed);
             else hyperbolic_march(m, s);
             say_resumed();
+            const double pinch = ogrid && k + 1 < tries.size() && tries[k + 1] > tries[k] ? pinch_angle(m, held) : 0.0;
+            if (pinch > kPinchAngle) {
+                if (!pinched) pinched = std::make_unique<Pinched>(Pinched{m, note});
+                note += format("%swall layer (hybrid): the march's lines nearly meet above the held rows (faces %.3g "
+                               "degrees from their cells' line); marched again with EG2D_PARAM_MARCH_SMOOTHING %g",
+                               note.empty() ? "" : "; ", pinch, tries[k + 1]);
+                continue;
+            }
             return;
         } catch (const Error &e) {
             say_resumed();
+            if (e.failure() == Failure::Folded && pinched) {  // the retries fold: the first march, as it was
+                m = pinched->m;
+                note = pinched->note;
+                return;
+            }
             if (e.failure() != Failure::Folded || k + 1 == tries.size()) throw;
             note += format("%swall layer (hybrid): %s; marched again with EG2D_PARAM_MARCH_SMOOTHING %g",
                            note.empty() ? "" : "; ", e.what(), tries[k + 1]);

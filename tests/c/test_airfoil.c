@@ -122,6 +122,49 @@ static void test_open_trailing_edge(void **state) {
     free(y);
 }
 
+/* An O-grid's sharp trailing edge: cut back to a straight base
+ * EG2D_PARAM_AIRFOIL_O_TE_BASE thick (default 5e-5 chords), across the
+ * edge's bisector (the chord on a symmetric section), a few ten-thousandths
+ * of the chord back, its two cells the surfaces' first; 0 keeps the edge a
+ * single node at (1, 0); C-grids keep it on their cut. */
+static void test_o_grid_sharp_edge_base(void **state) {
+    const int ni = 257, nj = 33;
+    double *x = alloc(ni * nj), *y = alloc(ni * nj), value;
+    eg2d_grid *g;
+    eg2d_curve *c = naca0012(EG2D_NACA_CLOSED_TE);
+    int i;
+    (void)state;
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    assert_int_equal(eg2d_get_parameter(g, EG2D_PARAM_AIRFOIL_O_TE_BASE, &value), EG2D_OK);
+    assert_true(value == 5e-5);
+    assert_int_equal(eg2d_set_airfoil(g, c, EG2D_TOPO_O), EG2D_OK);
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    /* the loop starts at the lower corner; the base: nodes ni-3 (upper corner), ni-2 (its midpoint), ni-1 */
+    assert_true(y[0] < 0 && fabs(y[ni - 3] + y[0]) < 1e-9 && fabs(y[ni - 2]) < 1e-12);
+    assert_true(fabs(dist(x, y, 0, ni - 3) - 5e-5) < 1e-9);
+    assert_true(fabs(x[0] - x[ni - 3]) < 1e-12 && x[0] < 1 - 1e-4 && x[0] > 1 - 5e-4);
+    assert_true(fabs(dist(x, y, 0, 1) / dist(x, y, ni - 3, ni - 2) - 1) < 1e-6);
+    /* kept sharp */
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_O_TE_BASE, 0), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_O_TE_BASE, -1), EG2D_ERR_ARGUMENT);
+    assert_int_equal(eg2d_set_airfoil(g, c, EG2D_TOPO_O), EG2D_OK);
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    assert_true(fabs(x[0] - 1) < 1e-12 && fabs(y[0]) < 1e-12 && dist(x, y, 0, ni - 2) > 1e-4);
+    /* a C-grid's sharp edge stays on its cut, whatever the setting */
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_O_TE_BASE, 5e-5), EG2D_OK);
+    assert_int_equal(eg2d_set_airfoil(g, c, EG2D_TOPO_C), EG2D_OK);
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    i = te_index(x, y, ni);
+    assert_true(fabs(x[i] - 1) < 1e-12 && fabs(y[i]) < 1e-12);
+    eg2d_destroy(g);
+    eg2d_curve_destroy(c);
+    free(x);
+    free(y);
+}
+
 /* What cannot be made is refused, and the handle keeps what it had. */
 /* The airfoil's settings act whatever their order: set after
  * eg2d_set_airfoil they make its boundary again (a far field of 500 set
@@ -244,6 +287,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_c_grid_boundary),
         cmocka_unit_test(test_open_trailing_edge),
+        cmocka_unit_test(test_o_grid_sharp_edge_base),
         cmocka_unit_test(test_refused),
         cmocka_unit_test(test_settings_after_set_airfoil),
         cmocka_unit_test(test_wall_resolved),

@@ -5,6 +5,7 @@ progress and Ctrl-C. Run by ctest with /usr/bin/python3:
     cli_test.py TOOL EXAMPLES_DIR --example NAME SIZE   (one example at a small size)
 """
 import math
+import json
 import os
 import re
 import resource
@@ -1461,7 +1462,9 @@ class Airfoil(unittest.TestCase):
             code, _, err = run("airfoil", "0012", "--size", "97x25", "--first-cell", "1e-5", "--growth", "10",
                                "--format", "png", "-o", d)
             if features()["formats"]["png"]:
-                self.assertEqual(code, 0, err)
+                # 4: 22 faces of this coarse grid past checkMesh's non-orthogonality 70 (84.5), said, written
+                self.assertEqual(code, 4, err)
+                self.assertIn("97x25 has 22 face(s) past checkMesh's limits", err)
                 self.assertTrue(os.path.isfile(os.path.join(d, "naca0012-97x25-le.png")))
             else:  # a build without cairo names what it lacks
                 self.assertEqual(code, 9)
@@ -1708,6 +1711,146 @@ class Channel(unittest.TestCase):
             self.assertIn(option, out)
         code, out, _ = run("--help")
         self.assertIn("eg2d channel --lower WALL --upper WALL", out)
+
+
+AIRFOILS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "airfoils")
+
+
+def closed_section_points(kind, n=100):
+    """A closed (sharp) trailing-edge section, Selig's order: NACA 4-digit
+    "MPTT" or 5-digit "230TT" with the closed thickness (-0.1036 x^4;
+    Abbott & von Doenhoff 1959), or "joukowski" (the circle through 1
+    centred at -0.08 + 0.08i under z + 1/z: a cusped edge)."""
+    if kind == "joukowski":
+        cx, cy = -0.08, 0.08
+        r, a0 = math.hypot(1 - cx, cy), math.atan2(-cy, 1 - cx)
+        pts = []
+        for k in range(2 * n + 1):
+            zx, zy = cx + r * math.cos(a0 + math.pi * k / n), cy + r * math.sin(a0 + math.pi * k / n)
+            q = zx * zx + zy * zy
+            pts.append((zx + zx / q, zy - zy / q))
+        pts[0] = pts[-1] = (2.0, 0.0)
+        return pts
+    t = int(kind[-2:]) / 100
+    yt = lambda x: 5 * t * (0.2969 * math.sqrt(x) - 0.1260 * x - 0.3516 * x**2 + 0.2843 * x**3 - 0.1036 * x**4)
+    if len(kind) == 5:  # 230TT: the camber line of maximum at 0.15 chords (m = 0.2025, k1 = 15.957)
+        m, k1 = 0.2025, 15.957
+        camber = lambda x: ((k1 / 6 * (x**3 - 3 * m * x * x + m * m * (3 - m) * x),
+                             k1 / 6 * (3 * x * x - 6 * m * x + m * m * (3 - m))) if x < m
+                            else (k1 * m**3 / 6 * (1 - x), -k1 * m**3 / 6))
+    else:
+        m, p = int(kind[0]) / 100, int(kind[1]) / 10
+        camber = lambda x: ((0.0, 0.0) if m == 0 else
+                            (m / p**2 * (2 * p * x - x * x), 2 * m / p**2 * (p - x)) if x < p else
+                            (m / (1 - p)**2 * (1 - 2 * p + 2 * p * x - x * x), 2 * m / (1 - p)**2 * (p - x)))
+    xs = [0.5 * (1 - math.cos(math.pi * k / n)) for k in range(n + 1)]
+    def point(x, side):
+        c, slope = camber(x)
+        a = math.atan(slope)
+        return x - side * yt(x) * math.sin(a), c + side * yt(x) * math.cos(a)
+    return [point(x, 1) for x in reversed(xs)] + [point(x, -1) for x in xs[1:]]
+
+
+def write_points(path, name, pts):
+    with open(path, "w") as f:
+        f.write(name + "\n")
+        for x, y in pts:
+            f.write(f"{x:.8f} {y:.8f}\n")
+
+
+def read_points(path):
+    with open(path) as f:
+        return [tuple(float(v) for v in line.split()) for line in f.readlines()[1:] if line.strip()]
+
+
+class SharpTrailingEdge(unittest.TestCase):
+    """O-grids round a closed (sharp) trailing edge: cut back to a base 5e-5
+    chords thick they pass OpenFOAM's checkMesh (aspect ratio aside) on
+    sections of eight families at 257x129, y+ 1, Re 6e6; kept sharp
+    (--te-base 0) the command names the faces past checkMesh's limits and
+    exits 4; a file's direction and start point do not change the grid."""
+
+    def sections(self, d):
+        files = {}
+        for kind in ("0012", "4412", "23012", "joukowski"):
+            files[kind] = os.path.join(d, f"closed{kind}.dat")
+            write_points(files[kind], f"closed {kind}", closed_section_points(kind))
+        for name in ("sd7003", "s1223", "rae2822", "clarky"):
+            files[name] = os.path.join(AIRFOILS, name + ".dat")
+        return files
+
+    def test_o_grids_pass_checkmesh(self):
+        cf = (2 * math.log10(6e6) - 0.65) ** -2.3
+        h = 1 / (6e6 * math.sqrt(cf / 2))
+        with tempfile.TemporaryDirectory() as d:
+            for kind, path in self.sections(d).items():
+                code, out, err = run("airfoil", path, "--topology", "o", "--size", "257x129", "--yplus", "1",
+                                     "--reynolds", "6e6", "--format", "openfoam", "-o", d)
+                self.assertEqual(code, 0, kind + out + err)
+                self.assertIn("sharp trailing edge cut back to a base 5e-05 chords thick", out, kind)
+                self.assertRegex(out, r"solver check .*skewness max [0-9.]+ \(limit 4\)\n", kind)
+                stem = os.path.splitext(os.path.basename(path))[0]
+                with open(os.path.join(d, stem + "-257x129.report.json")) as f:
+                    r = json.load(f)
+                self.assertEqual(r["folded_cells"], 0, kind)
+                # the first cell as asked (in the file's lengths: the Joukowski section's chord is 4)
+                self.assertLess(abs(r["wall"]["first_cell_height"]["min"] / h - 1), 0.02, kind)
+                self.assertLess(abs(r["wall"]["first_cell_height"]["max"] / h - 1), 0.02, kind)
+                self.assertLessEqual(r["wall"]["growth_max"], 1.2, kind)
+                Airfoil.check_mesh(self, os.path.join(d, stem + "-257x129_foam"))
+
+    def test_sharp_edge_kept_is_named_and_exits_4(self):
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "closed0012.dat")
+            write_points(path, "closed 0012", closed_section_points("0012"))
+            code, out, err = run("airfoil", path, "--topology", "o", "--size", "257x129", "--yplus", "1",
+                                 "--reynolds", "6e6", "--te-base", "0", "-o", d)
+            self.assertEqual(code, 4, out + err)
+            self.assertIn("trailing edge kept sharp (--te-base 0)", out)
+            # the two columns beside the edge's line: cells (0, j) and (255, j)
+            m = re.search(r"solver check .*skewness max ([0-9.]+) \(limit 4\): (\d+) face\(s\) past, "
+                          r"the worst of cell \((\d+), (\d+)\)", out)
+            self.assertIsNotNone(m, out)
+            self.assertGreater(float(m.group(1)), 4)
+            self.assertIn(int(m.group(3)), (0, 255))
+            self.assertIn("257x129 has %s face(s) past checkMesh's limits" % m.group(2), err)
+            self.assertIn("(the files are written)", err)
+            self.assertTrue(os.path.isfile(os.path.join(d, "closed0012-257x129.xyz")))
+            # the standard open section's blunt base: nothing past, exit 0
+            code, out, err = run("airfoil", "0012", "--topology", "o", "--size", "129x65", "--first-cell", "1e-5",
+                                 "--growth", "1.3", "-o", d)
+            self.assertEqual(code, 0, out + err)
+            self.assertRegex(out, r"solver check .*\(limit 4\)\n")
+
+    def test_direction_and_start_point(self):
+        """Reversed files (clockwise) and files starting at the leading edge give
+        the grid of Selig's order, point for point, on O- and C-grids, sharp and blunt."""
+        with tempfile.TemporaryDirectory() as d:
+            sharp = read_points(os.path.join(AIRFOILS, "sd7003.dat"))
+            blunt_file = os.path.join(d, "blunt.dat")
+            naca4_selig(blunt_file, 0.04, 0.4, 0.12)
+            blunt = read_points(blunt_file)
+            for name, pts in (("sharp", sharp), ("blunt", blunt)):
+                le = min(range(len(pts)), key=lambda k: pts[k][0])
+                loop = pts[:-1] if pts[0] == pts[-1] else pts
+                variants = {"selig": pts, "reversed": pts[::-1],
+                            "from_le": loop[le:] + loop[:le + 1] if pts[0] == pts[-1] else pts[le:] + pts[:le + 1],
+                            "from_le_reversed": (loop[le:] + loop[:le + 1])[::-1]}
+                for topo, size in (("o", "129x65"), ("c", "161x49")):
+                    grids = {}
+                    for v, p in variants.items():
+                        path = os.path.join(d, f"{name}_{v}.dat")
+                        write_points(path, f"{name} {v}", p)
+                        out = os.path.join(d, f"{name}_{v}_{topo}")
+                        code, text, err = run("airfoil", path, "--topology", topo, "--size", size, "--first-cell",
+                                              "1e-5", "--farfield", "20", "--format", "plot3d-ascii", "-o", out)
+                        self.assertIn(code, (0, 4), text + err)  # 4: a coarse grid's growth or faces, said
+                        with open(os.path.join(out, f"{name}_{v}-{size}.p3d")) as f:
+                            grids[v] = [float(t) for t in f.read().split()]
+                    for v in variants:
+                        self.assertEqual(len(grids[v]), len(grids["selig"]), (name, topo, v))
+                        self.assertLess(max(abs(a - b) for a, b in zip(grids[v], grids["selig"])), 1e-9,
+                                        (name, topo, v))
 
 
 def shutil_which(name):

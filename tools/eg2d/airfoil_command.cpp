@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "face_check.hpp"
 #include "failure.hpp"
 #include "features.hpp"
 #include "front_end.hpp"
@@ -30,7 +31,7 @@ namespace eg2dtool {
 const char *const airfoil_help =
     "usage: eg2d airfoil SOURCE --size NIxNJ (--yplus Y --reynolds RE | --first-cell H)\n"
     "                   [--topology c|o] [--farfield R] [--le-spacing S] [--te-spacing S]\n"
-    "                   [--te blunt|sharpen] [--growth G] [--levels N]\n"
+    "                   [--te blunt|sharpen] [--te-base T] [--growth G] [--levels N]\n"
     "                   [--method hybrid|elliptic|hyperbolic] [--format LIST] [-o DIR] [--quiet]\n"
     "\n"
     "An O- or C-grid round an airfoil (eg2d_set_airfoil), wall-resolved, written as a\n"
@@ -52,6 +53,11 @@ const char *const airfoil_help =
     "                 cells about --te-spacing apart (default; on a C-grid the cut leaves\n"
     "                 its midpoint along its normal) or sharpened (each surface moved\n"
     "                 towards the base's midpoint); the run says which\n"
+    "  --te-base      O-grid: a sharp (or sharpened) trailing edge is cut back along the\n"
+    "                 chord to a straight base T chords thick, part of the wall (default\n"
+    "                 5e-5): a single edge node leaves its two cells corners of about 172\n"
+    "                 degrees, which OpenFOAM's checkMesh fails on skewness; 0 keeps the\n"
+    "                 sharp edge; the run says which\n"
     "  --growth       the largest growth of the wall layer's cells accepted (default 1.2);\n"
     "                 a grid whose first 30 cells grow faster is reported and exits 4\n"
     "  --levels       N nested grids, each coarser one every other node of the next: NI-1\n"
@@ -89,6 +95,7 @@ struct Args {
     std::string source, out_dir = ".", topology = "c", method = "hybrid", te, formats = "plot3d";
     int ni = 0, nj = 0, levels = 1;
     double yplus = 0, reynolds = 0, first = 0, growth = 1.2, farfield = 100, le = 0, tes = 0;
+    double te_base = -1;  // O-grid: the base a sharp trailing edge is cut to; < 0: the library's default
     bool quiet = false;
 };
 
@@ -120,6 +127,7 @@ Args parse(int argc, char **argv) {
             else if (arg == "--farfield") a.farfield = number(arg, v);
             else if (arg == "--le-spacing") a.le = number(arg, v);
             else if (arg == "--te-spacing") a.tes = number(arg, v);
+            else if (arg == "--te-base") a.te_base = v == "0" ? 0.0 : number(arg, v);
             else if (arg == "--levels") a.levels = parse_levels("airfoil", v);
             else if (arg == "--size") parse_size("airfoil", v, a.ni, a.nj);
             else {
@@ -192,6 +200,15 @@ SectionShape section_shape(const eg2d_curve *c) {
     return s;
 }
 
+// printf into a string.
+template <class... Args>
+std::string format_text(const char *f, Args... args) {
+    const int n = std::snprintf(nullptr, 0, f, args...);
+    std::string out(static_cast<std::size_t>(std::max(n, 0)), '\0');
+    std::snprintf(out.data(), out.size() + 1, f, args...);
+    return out;
+}
+
 // Says what becomes of an open trailing edge.
 void trailing_edge_note(double gap, bool sharpen) {
     if (gap <= 1e-7) return;
@@ -236,6 +253,9 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
     if (a.tes > 0) check(g, eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_TE_SPACING, a.tes), "--te-spacing");
     check(g, eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_TRAILING_EDGE,
                                 a.te == "blunt" ? EG2D_AIRFOIL_TE_BLUNT : EG2D_AIRFOIL_TE_SHARPEN), "--te");
+    if (a.te_base >= 0) check(g, eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_O_TE_BASE, a.te_base), "--te-base");
+    double te_base = 0;
+    eg2d_get_parameter(g, EG2D_PARAM_AIRFOIL_O_TE_BASE, &te_base);
     int wake = 0;
     if (cgrid) {  // about 0.21 (ni-1) nodes a side, on every level's node
         wake = step * std::max(1, static_cast<int>(std::lround(0.21 * (a.ni - 1) / step)));
@@ -256,6 +276,11 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
                     gap <= 1e-7 ? "sharp" : (a.te == "blunt" ? "blunt" : "sharpened"), a.method.c_str());
         if (naca && a.te == "sharpen") std::printf("note: the NACA section closed sharply at chord 1 (--te sharpen)\n");
         trailing_edge_note(gap, a.te == "sharpen");
+        if (!cgrid && (gap <= 1e-7 || a.te == "sharpen"))
+            std::printf(te_base > 0 ? "note: the O-grid's sharp trailing edge cut back to a base %.3g chords thick, part "
+                                      "of the wall (--te-base 0 keeps it sharp)\n"
+                                    : "note: the O-grid's trailing edge kept sharp (--te-base 0): its two cells have "
+                                      "corners of about 180 degrees less half its angle\n", te_base);
     }
     Progress progress(isatty(STDOUT_FILENO) != 0, a.quiet);
     check(g, eg2d_set_monitor(g, Progress::monitor, &progress), "monitor");
@@ -288,9 +313,27 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
     const int body0 = cgrid ? wake : 0, body1 = cgrid ? a.ni - 1 - wake : a.ni - 1;
     const double growth = wall_growth(g, a.ni, a.nj, body0, body1);
 
+    // OpenFOAM's checkMesh limits (aspect ratio aside): what each level's
+    // faces are checked against, as a solver would (face_check.hpp).
+    constexpr double kNonorthLimit = 70.0, kSkewLimit = 4.0;
+    std::string past_limits;
     write_levels(g, cgrid ? EG2D_TOPO_C : EG2D_TOPO_O, a.ni, a.nj, a.levels, a.out_dir, name, outputs, {},
                  [&](int level, eg2d_grid *lg, const std::string &base, int ci, int cj) {
         write_views(lg, outputs, base, name + " " + std::to_string(ci) + "x" + std::to_string(cj), airfoil_views);
+        std::vector<double> lx(static_cast<std::size_t>(ci) * cj), ly(lx.size());
+        eg2d_get_coordinates(lg, lx.data(), ly.data());
+        const FaceCheck fv = check_faces(ci, cj, lx, ly, !cgrid, wake / (1 << level), kNonorthLimit, kSkewLimit);
+        const std::string fv_line = format_text(
+            "solver check    faces as OpenFOAM's checkMesh measures them: non-orthogonality max %.3g (limit %g), "
+            "skewness max %.3g (limit %g)%s\n", fv.nonorth_max, kNonorthLimit, fv.skew_max, kSkewLimit,
+            fv.past == 0 ? "" : format_text(": %d face(s) past, the worst of cell (%d, %d): non-orthogonality %.3g, "
+                                            "skewness %.3g", fv.past, fv.worst_i, fv.worst_j, fv.worst_nonorth,
+                                            fv.worst_skew).c_str());
+        if (fv.past > 0 && past_limits.empty())
+            past_limits = format_text("%dx%d has %d face(s) past checkMesh's limits (non-orthogonality %g, skewness %g), "
+                                      "the worst of cell (%d, %d): non-orthogonality %.3g, skewness %.3g",
+                                      ci, cj, fv.past, kNonorthLimit, kSkewLimit, fv.worst_i, fv.worst_j,
+                                      fv.worst_nonorth, fv.worst_skew);
         // A C-grid of one of the TMR family's sizes is compared with it.
         const int s = 1 << level;
         const std::string tmr = cgrid ? tmr_comparison(lg, ci, cj, wake / s, a.farfield, a.levels - 1 - level) : std::string();
@@ -303,7 +346,10 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
             std::printf("level %d: %dx%d -> %s.*\n", level, ci, cj, base.c_str());
             if (level == 0) {
                 std::ifstream report(base + ".report.txt");
-                std::printf("%s%s", std::string(std::istreambuf_iterator<char>(report), {}).c_str(), tmr.c_str());
+                std::printf("%s%s%s", std::string(std::istreambuf_iterator<char>(report), {}).c_str(), fv_line.c_str(),
+                            tmr.c_str());
+            } else if (fv.past > 0) {
+                std::printf("%s", fv_line.c_str());
             }
         }
     });
@@ -311,9 +357,10 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
         std::fprintf(stderr,
                      "eg2d: airfoil: the wall layer grows by up to %.3f over its first 30 cells, more than --growth %g: "
                      "raise NJ or lower --farfield (the files are written)\n", growth, a.growth);
-        return EXIT_GEOMETRY;
     }
-    return EXIT_OK;
+    if (!past_limits.empty())
+        std::fprintf(stderr, "eg2d: airfoil: %s (the files are written)\n", past_limits.c_str());
+    return growth > a.growth || !past_limits.empty() ? EXIT_GEOMETRY : EXIT_OK;
 }
 
 }  // namespace eg2dtool
