@@ -1,7 +1,8 @@
 /* Wall-resolved grids of internal flows side by side (eg2d_bench --internal):
  * NASA TMR's flat plate and bump-in-channel (their boundary points and wall
- * stretches as published), a bend, an S-shaped diffuser, a body in a pipe,
- * two walls meeting at a corner and a cavity (tests/support/internal.h), at
+ * stretches as published), a straight channel with one wall, a bend, an
+ * S-shaped diffuser, a body in a pipe, two walls meeting at a corner and a
+ * cavity (tests/support/internal.h), at
  * the sizes users pick, each solved three ways from the
  * same boundary with the default solver, residual 1e-10:
  *   none     no wall control (the time the layer is measured against);
@@ -20,7 +21,7 @@
 #include "bench.h"
 #include "internal.h"
 
-typedef enum { PLATE, BUMP, BEND, DIFFUSER, PIPE, CAVITY, CORNER } domain;
+typedef enum { PLATE, BUMP, CHANNEL, BEND, DIFFUSER, PIPE, CAVITY, CORNER } domain;
 
 typedef struct {
     const char *name;
@@ -43,6 +44,7 @@ static int set_domain(eg2d_grid *g, const internal_case *c) {
     switch (c->d) {
     case PLATE: return domain_set_tmr(g, EG2D_TEST_DATA, "flatplate_137x97", 1);
     case BUMP: return domain_set_tmr(g, EG2D_TEST_DATA, "bump_177x81", 1);
+    case CHANNEL: return domain_set_channel(g);
     case BEND: return domain_set_bend(g);
     case DIFFUSER: return domain_set_diffuser(g, c->h);
     case PIPE: return domain_set_pipe(g);
@@ -56,7 +58,7 @@ static int set_domain(eg2d_grid *g, const internal_case *c) {
 static void write_case(const eg2d_grid *g, const internal_case *c) {
     const char *dir = getenv("EG2D_BENCH_WRITE");
     if (!dir) return;
-    static const char *const tag[] = {"plate", "bump", "bend", "diffuser", "pipe", "cavity", "corner"};
+    static const char *const tag[] = {"plate", "bump", "channel", "bend", "diffuser", "pipe", "cavity", "corner"};
     char path[512];
     snprintf(path, sizeof path, "%s/%s-%dx%d", dir, tag[c->d], c->ni, c->nj);
     if (eg2d_write(g, path, EG2D_FORMAT_OPENFOAM) != EG2D_OK) fprintf(stderr, "%s: %s\n", path, eg2d_last_error(g));
@@ -114,21 +116,30 @@ void bench_internal(void) {
     static const internal_case cases[] = {
         {"flat plate (TMR)", PLATE, 137, 97, EG2D_TOPO_SINGLE, 1, 2e-6},
         {"bump (TMR)", BUMP, 177, 81, EG2D_TOPO_SINGLE, 1, 4e-6},
+        {"channel, one wall (uniform sides)", CHANNEL, 177, 81, EG2D_TOPO_SINGLE, 1, 1e-5},
+        {"channel, one wall (uniform sides)", CHANNEL, 137, 97, EG2D_TOPO_SINGLE, 1, 1e-5},
+        {"channel, one wall (uniform sides)", CHANNEL, 257, 129, EG2D_TOPO_SINGLE, 1, 1e-5},
+        {"channel, one wall (uniform sides)", CHANNEL, 385, 129, EG2D_TOPO_SINGLE, 1, 1e-5},
         {"bend", BEND, 177, 81, EG2D_TOPO_SINGLE, 5, 1e-4},
         {"bend", BEND, 137, 97, EG2D_TOPO_SINGLE, 5, 5e-5},
         {"bend", BEND, 257, 129, EG2D_TOPO_SINGLE, 5, 1e-5},
         {"bend", BEND, 385, 129, EG2D_TOPO_SINGLE, 5, 1e-5},
         {"diffuser (clustered inlet)", DIFFUSER, 177, 81, EG2D_TOPO_SINGLE, 5, 2e-4},
+        {"diffuser (clustered inlet)", DIFFUSER, 137, 97, EG2D_TOPO_SINGLE, 5, 5e-5},
         {"diffuser (clustered inlet)", DIFFUSER, 257, 129, EG2D_TOPO_SINGLE, 5, 1e-5},
         {"diffuser (clustered inlet)", DIFFUSER, 385, 129, EG2D_TOPO_SINGLE, 5, 1e-5},
         {"pipe with a body (O)", PIPE, 177, 81, EG2D_TOPO_O, 5, 2e-4},
+        {"pipe with a body (O)", PIPE, 137, 97, EG2D_TOPO_O, 5, 5e-5},
         {"pipe with a body (O)", PIPE, 257, 129, EG2D_TOPO_O, 5, 1e-5},
         {"pipe with a body (O)", PIPE, 385, 129, EG2D_TOPO_O, 5, 1e-5},
+        {"corner, walls JMIN and IMIN (sides clustered)", CORNER, 177, 81, EG2D_TOPO_SINGLE, 9, 2e-4},
         {"corner, walls JMIN and IMIN (sides clustered)", CORNER, 137, 97, EG2D_TOPO_SINGLE, 9, 1e-4},
         {"corner, walls JMIN and IMIN (sides clustered)", CORNER, 257, 129, EG2D_TOPO_SINGLE, 9, 1e-4},
         {"corner, walls JMIN and IMIN (sides clustered)", CORNER, 385, 129, EG2D_TOPO_SINGLE, 9, 1e-4},
-        {"cavity (clustered corners)", CAVITY, 129, 129, EG2D_TOPO_SINGLE, 15, 1e-4},
+        {"cavity (clustered corners)", CAVITY, 177, 81, EG2D_TOPO_SINGLE, 15, 2e-4},
+        {"cavity (clustered corners)", CAVITY, 137, 97, EG2D_TOPO_SINGLE, 15, 1e-4},
         {"cavity (clustered corners)", CAVITY, 257, 129, EG2D_TOPO_SINGLE, 15, 1e-4},
+        {"cavity (clustered corners)", CAVITY, 385, 129, EG2D_TOPO_SINGLE, 15, 1e-4},
     };
     printf("Residual 1e-10, the default solver (multigrid); CPU seconds are medians of 3, the ratio is to \"none\" in\n"
            "the same run. Per wall: first cell median (range), growth over 30 cells, angle from the normal (deg).\n\n");
