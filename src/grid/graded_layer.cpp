@@ -460,10 +460,14 @@ GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height) {
                 out.psi[node_index(ni, ni - 1, j)] = out.psi[node_index(ni, 0, j)];
             }
         }
-    if (near_square(g, kKeepStartSkew)) {
-        Grid turned = g;
-        turn_to_normals(turned, out);
-        if (fold_summary(turned).folded == 0) g = std::move(turned);
+    // Kept when near square, turned to the normals when that keeps it so
+    // (one pass over the turned grid checks both).
+    Grid turned = g;
+    turn_to_normals(turned, out);
+    if (near_square(turned, kKeepStartSkew)) {
+        g = std::move(turned);
+        keep_start(g, out);
+    } else if (near_square(g, kKeepStartSkew)) {
         keep_start(g, out);
     }
     return out;

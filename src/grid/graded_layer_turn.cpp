@@ -40,18 +40,22 @@ void turn_to_normals(Grid &g, const GradedLayer &layer) {
         const int lines = static_cast<int>(f.factor.size()), nodes = f.columns ? g.nj() : g.ni();
         const bool lo = !layer.heights[f.columns ? 0 : 3].empty(), hi = !layer.heights[f.columns ? 2 : 1].empty();
         const double K = std::min<double>(kTurnRows, lo && hi ? (nodes - 1) / 2 : nodes - 1);
-        const Grid before = g;
-        auto line = [&](int l) { return f.columns ? grid_column(before, l, nodes - 1) : grid_row(before, l); };
+        // Lines of a family share no nodes, and walls' nodes never move: each
+        // line is read as it is, its neighbours only at the wall.
+        auto wall_node = [&](int l, int k) {
+            const std::size_t n = f.columns ? node_index(g.ni(), l, k) : node_index(g.ni(), k, l);
+            return Vec2{g.x[n], g.y[n]};
+        };
         for (int l = ring ? 0 : 1; l < (ring ? lines : lines - 1); ++l) {
-            const std::vector<Vec2> p = line(l), prev = line(l > 0 ? l - 1 : lines - 1),
-                                    next = line(ring && l + 1 == lines ? 0 : l + 1);
+            const std::vector<Vec2> p = f.columns ? grid_column(g, l, nodes - 1) : grid_row(g, l);
+            const int before = l > 0 ? l - 1 : lines - 1, after = ring && l + 1 == lines ? 0 : l + 1;
             const std::vector<double> arc = arc_lengths(p);
             std::vector<Vec2> q = p;
             for (int end = 0; end < 2; ++end) {
                 if (!(end == 0 ? lo : hi)) continue;
                 const int w = end == 0 ? 0 : nodes - 1, step = end == 0 ? 1 : -1;
                 const std::size_t iw = static_cast<std::size_t>(w);
-                const Vec2 n = wall_normal(prev[iw], p[iw], next[iw], p[static_cast<std::size_t>(w + step)]);
+                const Vec2 n = wall_normal(wall_node(before, w), p[iw], wall_node(after, w), p[static_cast<std::size_t>(w + step)]);
                 if (n.x == 0.0 && n.y == 0.0) continue;
                 for (int m = 1; m < K && m < nodes - 1; ++m) {
                     const std::size_t k = static_cast<std::size_t>(w + step * m);
