@@ -401,6 +401,28 @@ bool near_square(const Grid &g, double degrees) {
     return true;
 }
 
+// The frozen background of a start not kept: each line's one-dimensional
+// Phi, Psi (Thomas & Middlecoff 1980).
+void one_dimensional_controls(const Grid &g, GradedLayer &out) {
+    const int ni = g.ni(), nj = g.nj();
+    const bool ring = g.topology() == Topology::O;
+    for (int j = 1; j < nj - 1; ++j)
+        for (int i = ring ? 0 : 1; i < ni - 1; ++i) {
+            const int a = i == 0 ? ni - 2 : i - 1, b = i + 1;
+            const Vec2 c{g.x[node_index(ni, i, j)], g.y[node_index(ni, i, j)]};
+            const double back = dist({g.x[node_index(ni, a, j)], g.y[node_index(ni, a, j)]}, c),
+                         ahead = dist(c, {g.x[node_index(ni, b, j)], g.y[node_index(ni, b, j)]});
+            const double below = dist({g.x[node_index(ni, i, j - 1)], g.y[node_index(ni, i, j - 1)]}, c),
+                         above = dist(c, {g.x[node_index(ni, i, j + 1)], g.y[node_index(ni, i, j + 1)]});
+            out.phi[node_index(ni, i, j)] = -2.0 * (ahead - back) / (ahead + back);
+            out.psi[node_index(ni, i, j)] = -2.0 * (above - below) / (above + below);
+            if (ring && i == 0) {
+                out.phi[node_index(ni, ni - 1, j)] = out.phi[node_index(ni, 0, j)];
+                out.psi[node_index(ni, ni - 1, j)] = out.psi[node_index(ni, 0, j)];
+            }
+        }
+}
+
 // The start kept: every interior node's controls inverted from it, frozen.
 void keep_start(const Grid &g, GradedLayer &out) {
     const int ni = g.ni(), nj = g.nj();
@@ -420,8 +442,6 @@ void keep_start(const Grid &g, GradedLayer &out) {
 }  // namespace
 
 GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height) {
-    const int ni = g.ni(), nj = g.nj();
-    const bool ring = g.topology() == Topology::O;
     if (g.topology() == Topology::C)
         fail(Failure::Unsupported, "graded wall layer: C-grids have the hybrid layer (hybrid_layer.hpp)");
     GradedLayer out;
@@ -442,26 +462,11 @@ GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height) {
                                 moved.c_str(), kKeepFirst, kGradedGrowth);
     if (!corners.empty()) out.shape.note += (out.shape.note.empty() ? "" : "; ") + corners;
     if (!shaped_by.empty()) out.shape.note += (out.shape.note.empty() ? "wall layer (graded): " : "; ") + shaped_by;
-    // The frozen background: each line's one-dimensional Phi, Psi.
     out.phi.assign(g.size(), 0.0);
     out.psi.assign(g.size(), 0.0);
-    for (int j = 1; j < nj - 1; ++j)
-        for (int i = ring ? 0 : 1; i < ni - 1; ++i) {
-            const int a = i == 0 ? ni - 2 : i - 1, b = i + 1;
-            const Vec2 c{g.x[node_index(ni, i, j)], g.y[node_index(ni, i, j)]};
-            const double back = dist({g.x[node_index(ni, a, j)], g.y[node_index(ni, a, j)]}, c),
-                         ahead = dist(c, {g.x[node_index(ni, b, j)], g.y[node_index(ni, b, j)]});
-            const double below = dist({g.x[node_index(ni, i, j - 1)], g.y[node_index(ni, i, j - 1)]}, c),
-                         above = dist(c, {g.x[node_index(ni, i, j + 1)], g.y[node_index(ni, i, j + 1)]});
-            out.phi[node_index(ni, i, j)] = -2.0 * (ahead - back) / (ahead + back);
-            out.psi[node_index(ni, i, j)] = -2.0 * (above - below) / (above + below);
-            if (ring && i == 0) {
-                out.phi[node_index(ni, ni - 1, j)] = out.phi[node_index(ni, 0, j)];
-                out.psi[node_index(ni, ni - 1, j)] = out.psi[node_index(ni, 0, j)];
-            }
-        }
     // Kept when near square, turned to the normals when that keeps it so
-    // (one pass over the turned grid checks both).
+    // (one pass over the turned grid checks both); else the one-dimensional
+    // background.
     Grid turned = g;
     turn_to_normals(turned, out);
     if (near_square(turned, kKeepStartSkew)) {
@@ -469,6 +474,8 @@ GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height) {
         keep_start(g, out);
     } else if (near_square(g, kKeepStartSkew)) {
         keep_start(g, out);
+    } else {
+        one_dimensional_controls(g, out);
     }
     return out;
 }
