@@ -264,7 +264,8 @@ std::vector<std::vector<double>> blend_sides(std::vector<Line> &lines, bool lo, 
         std::vector<double> f(r.size());
         for (std::size_t k = 0; k < r.size(); ++k) f[k] = std::exp(r[k]);
         const double grows = end_growth(shaped(moved.cells, f, moved.arc.back(), lo, hi), lo, hi);
-        return grows <= std::max(kGradedGrowth, end_growth(actual_cells(kept.arc), lo, hi));
+        // (to round-off: alike sides of a square grow alike)
+        return grows <= std::max(kGradedGrowth, end_growth(actual_cells(kept.arc), lo, hi)) * (1.0 + 1e-9);
     };
     if (!lines.front().kept && adopts(lines.front(), lines.back(), rn)) r0 = rn;
     if (!lines.back().kept && adopts(lines.back(), lines.front(), r0)) rn = r0;
