@@ -1105,11 +1105,11 @@ EG2D_API int eg2d_set_source_arrays(eg2d_grid *grid, const double *P, const doub
  *   normals over their first rows, the controls Phi, Psi are those that
  *   make it an exact solution of the equations, and the control below
  *   closes what is left at the wall. Otherwise the controls are each
- *   line's one-dimensional inversion (Thomas & Middlecoff 1980), which let
- *   the solve smooth the grid; after its first cycle each line is
- *   re-spaced along itself to the layer's cells near the walls, turned to
- *   the normals, and the controls are replaced by those that keep that
- *   grid for the rest of the run. A graded wall has converged when no
+ *   line's one-dimensional inversion (Thomas & Middlecoff 1980), one
+ *   multigrid cycle on them smooths the grid (whatever the solver), and
+ *   then each line is re-spaced along itself to the layer's cells near the
+ *   walls, turned to the normals, and the controls are replaced by those
+ *   that keep that grid for the run. A graded wall has converged when no
  *   node's first cell or angle would change by more than 0.1% of its
  *   height, whatever the tolerance. A wall covers the stretches of its side
  *   whose patches are of type EG2D_PATCH_WALL (the whole side when none

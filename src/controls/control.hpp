@@ -75,6 +75,12 @@ public:
     // True when shape_start re-spaces the start's lines (the graded wall
     // layer): the run then gives it the Winslow grid without controls.
     virtual bool grades(const Grid &, const Settings &) const { return false; }
+    // True when shape_start's shape needs a multigrid cycle of the solve on
+    // the fields it set, whatever the run's solver, before shape_after_cycle
+    // finishes it on the grid that cycle made (the graded layer's start not
+    // kept: grid/graded_layer.hpp's reshape_graded_layer).
+    virtual bool shapes_after_cycle() const { return false; }
+    virtual void shape_after_cycle(Grid &) {}
 };
 
 // The controls of a grid and the fields they add up to.

@@ -177,10 +177,15 @@ public:
         layer_growth_ = shape.rows > 0 ? shape.growth : 0.0;
         return shape;
     }
+    bool shapes_after_cycle() const override { return !graded_.families.empty() && !graded_.frozen; }
+    void shape_after_cycle(Grid &g) override {
+        reshape_graded_layer(g, graded_);
+        restart();  // the updates' state belongs to the lines before
+    }
     bool grades(const Grid &g, const Settings &settings) const override {
         return settings.wall_layer == kAutomaticLayer && graded_applies(g) && !hybrid_candidate(g, settings);
     }
-    double mismatch() const override { return std::max(mismatch_, graded_gap_); }
+    double mismatch() const override { return mismatch_; }
     // A graded layer's first cells of 4e-6 in a domain 50 long (the TMR
     // bump) are within the mismatch test of tolerance 1e-8 (5e-7) with
     // their lines 5 degrees off the normal: each node's gap is measured
@@ -198,16 +203,6 @@ public:
                  const ControlPace &pace) override {
         decay_ = settings.wall_decay;
         const double omega = std::min(1.0, pace.relaxation * settings.wall_relaxation);
-        const bool reshaping = !graded_.families.empty() && !graded_.frozen;
-        graded_gap_ = graded_.families.empty() ? 0.0 : update_graded_layer(g, graded_);
-        // The layer's grid changed under the updates below: their state was
-        // that of the lines before (on the TMR bump's case file, kept, it
-        // left a kink of 1.24 between the first two cells), and measured on
-        // the grid before the change it was a gap of 60% of the first cell.
-        if (reshaping && graded_.frozen) {  // and the grid has yet to reach its new lines: measured next time
-            restart();
-            return;
-        }
         const double step = pace.step * kStepLimit;
         const double orient = boundary_orientation(g);  // J's sign, from the boundary alone (base/folds.hpp)
         for (int side = 0; side < 4; ++side) {
@@ -415,10 +410,9 @@ private:
         ty /= tl;
         const double nx = -ty * sign, ny = tx * sign;
         const Stencil s = conn.stencil(pc.i, pc.j);
-        // A graded wall's height is its layer's (update_graded_layer): until
-        // its controls are final the updates here turn its first line to
-        // the normal only, then they close what is left of the height at
-        // the first node, each node's own (a patch's blend included).
+        // A graded wall's height is its layer's, each node's own (a patch's
+        // blend included); until its controls are final (reshape_graded_layer)
+        // the updates here would turn its first line to the normal only.
         const std::vector<double> &graded = graded_.heights[static_cast<std::size_t>(side)];
         const bool angle_only = height_[side] == 0.0 || (!graded.empty() && !graded_.frozen);
         double h = angle_only ? 0.0 : graded.empty() ? height_[side] : graded[static_cast<std::size_t>(k)];
@@ -544,7 +538,6 @@ private:
 
     std::array<double, 4> height_;
     GradedLayer graded_;
-    double graded_gap_ = 0.0;  // the last graded update's change (update_graded_layer)
     double graded_rel_ = 0.0;  // the last update's relative_gap
     double layer_growth_ = 0.0;  // > 0: a marched layer is held, and this is its growth
     HybridLayer hybrid_;         // the hybrid layer's frozen controls, if it is one

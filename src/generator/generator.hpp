@@ -132,8 +132,10 @@ private:
     // A folded start of the variational system solved with Winslow's first.
     void untangle_start(const ControlFields &fields, const Settings &run_settings);
     // Uncontrolled-or-given Winslow multigrid cycles on the grid until the
-    // tolerance (at most kUntangleCycles); r: the residual at the end.
-    int winslow_cycles(const ControlFields &fields, const Settings &run_settings, double tolerance, double &r);
+    // tolerance, at most `most` of them (from an FMG start if `fresh`); r:
+    // the residual at the end.
+    int winslow_cycles(const ControlFields &fields, const Settings &run_settings, double tolerance, double &r,
+                       int most, bool fresh);
     // One update of the dynamic controls before an iteration; true (and r
     // the residual after it) when the solver converges each iteration.
     bool advance_dynamic_controls(Problem &problem, double extent, double &r);

@@ -1,5 +1,6 @@
-// The graded layer's update during the run (graded_layer.hpp): the lines the
-// solve has shaped, re-spaced along themselves and inverted for the controls.
+// The graded layer's second step for a start not kept (graded_layer.hpp):
+// the lines a cycle of the solve has shaped, re-spaced along themselves,
+// turned to the walls' normals and inverted for the controls.
 #include <algorithm>
 #include <cmath>
 
@@ -10,15 +11,6 @@
 namespace eg2d {
 
 namespace {
-
-// Multigrid cycles on the one-dimensional background before the lines are
-// re-spaced and inverted (update_graded_layer). After one the lines have
-// their shape: the TMR bump (177x81 at 4e-6) then converges in 10 cycles
-// with growth 1.1749 and skewness 14.4 degrees; re-spaced after two, 11,
-// 1.1749 and 14.3. Before, 3-8 rescalings of each line's first cell in the
-// one-dimensional Psi took 11 cycles to growth 1.184 (they closed the
-// drift by about 15% a cycle, then froze it).
-constexpr int kShapeCycles = 1;
 
 // m's lines of family f re-spaced along themselves: the target cells near
 // the walls, the solve's beyond (the target there too put back the start's
@@ -55,27 +47,21 @@ void respace_family(Grid &m, const GradedLayer &layer, const GradedFamily &f) {
 
 }  // namespace
 
-double update_graded_layer(const Grid &g, GradedLayer &layer) {
-    if (layer.frozen) return 0.0;
-    if (layer.updates++ < kShapeCycles) return 0.0;
-    Grid m = g;
-    for (const GradedFamily &f : layer.families) respace_family(m, layer, f);
-    turn_to_normals(m, layer);
+void reshape_graded_layer(Grid &g, GradedLayer &layer) {
+    for (const GradedFamily &f : layer.families) respace_family(g, layer, f);
+    turn_to_normals(g, layer);
     const int ni = g.ni(), nj = g.nj();
     const bool ring = g.topology() == Topology::O;
-    double moved = 0.0;
     for (int j = 1; j < nj - 1; ++j)
         for (int i = ring ? 0 : 1; i < ni - 1; ++i) {
             const std::size_t n = node_index(ni, i, j);
-            invert_controls(m, i, i == 0 ? ni - 2 : i - 1, i + 1, j, layer.phi[n], layer.psi[n]);
-            moved = std::max(moved, std::hypot(m.x[n] - g.x[n], m.y[n] - g.y[n]));
+            invert_controls(g, i, i == 0 ? ni - 2 : i - 1, i + 1, j, layer.phi[n], layer.psi[n]);
             if (ring && i == 0) {
                 layer.phi[node_index(ni, ni - 1, j)] = layer.phi[n];
                 layer.psi[node_index(ni, ni - 1, j)] = layer.psi[n];
             }
         }
     layer.frozen = true;
-    return moved;
 }
 
 }  // namespace eg2d
