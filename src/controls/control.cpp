@@ -51,10 +51,18 @@ bool ControlSet::has_dynamic() const {
 }
 
 void ControlSet::sum_dynamic(const Grid &grid) {
-    ControlFields next = static_;
+    // In place, into the storage it had (same object: a Problem holding a
+    // reference sees it; new vectors each update were a tenth of a straight
+    // channel's graded run, in page faults). A throw leaves it part-summed:
+    // every run starts with update(), which sums it again.
+    for (int t = 0; t < kTermCount; ++t) {
+        std::vector<double> &f = fields_.term[static_cast<std::size_t>(t)];
+        const std::vector<double> &s = static_.term[static_cast<std::size_t>(t)];
+        if (s.empty()) f.clear();  // keeps its capacity for at()
+        else f.assign(s.begin(), s.end());
+    }
     for (const auto &c : controls_)
-        if (c->dynamic()) c->add_to(grid, next);
-    fields_ = std::move(next);  // same object: a Problem holding a reference sees it
+        if (c->dynamic()) c->add_to(grid, fields_);
 }
 
 const ControlFields &ControlSet::update(const Grid &grid, bool start_of_run) {
@@ -83,17 +91,18 @@ double ControlSet::mismatch() const {
     return m;
 }
 
-const ControlFields &ControlSet::advance(const Grid &grid, const Settings &settings, const ControlPace &pace) {
+bool ControlSet::advance(const Grid &grid, const Settings &settings, const ControlPace &pace) {
     const bool changed = unsettled_;
     unsettled_ = false;
+    bool moved = stale_;
     if (stale_) update(grid, true);
     for (const auto &c : controls_)
         if (c->dynamic()) {
-            if (changed) c->restart();
-            c->advance(grid, static_, settings, pace);
+            if (changed) moved = c->restart() || moved;
+            moved = c->advance(grid, static_, settings, pace) || moved;
         }
-    sum_dynamic(grid);
-    return fields_;
+    if (moved) sum_dynamic(grid);
+    return moved;
 }
 
 }  // namespace eg2d

@@ -47,7 +47,11 @@ public:
     virtual bool dynamic() const { return false; }
     // Dynamic terms: one update of the state from the grid, given the sum of
     // every static term (`others`). Called by the run before each iteration.
-    virtual void advance(const Grid &, const ControlFields & /*others*/, const Settings &, const ControlPace &) {}
+    // Returns whether what add_to adds changed (false: a state that already
+    // meets its targets is left as it is, and the residual still holds).
+    virtual bool advance(const Grid &, const ControlFields & /*others*/, const Settings &, const ControlPace &) {
+        return false;
+    }
     // Dynamic terms, after advance(): how far the state still is from the
     // state the grid asks for, as the largest change |dR|/diag of a node
     // equation that closing the gap would make (NUMERICS.md's residual
@@ -65,7 +69,8 @@ public:
     // control's converged coefficients applied to a re-initialised TFI start
     // folded it (NACA0012 129x33, first cell 1e-5: not converged in 100000
     // iterations, 9 folded cells; the same on a new far field).
-    virtual void restart() {}
+    // Returns whether what add_to adds changed.
+    virtual bool restart() { return false; }
     // Builds into the grid what this control fixes before the solve (the
     // wall control's marched layer, held by Grid::hold_rows), with the rows
     // above filled as a start when `fill_above`. The run calls it after an
@@ -103,8 +108,9 @@ public:
 
     // Recomputes the fields if anything changed (or always at the start of a run).
     const ControlFields &update(const Grid &grid, bool start_of_run);
-    // One update of the dynamic terms, then the fields (same object as fields()).
-    const ControlFields &advance(const Grid &grid, const Settings &settings, const ControlPace &pace);
+    // One update of the dynamic terms, then the fields (same object as
+    // fields()); returns whether the fields changed.
+    bool advance(const Grid &grid, const Settings &settings, const ControlPace &pace);
     const ControlFields &fields() const { return fields_; }
     // The largest mismatch() of the dynamic terms (0 without any).
     double mismatch() const;

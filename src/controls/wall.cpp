@@ -191,22 +191,26 @@ public:
     // their lines 5 degrees off the normal: each node's gap is measured
     // against its own height too.
     bool settled() const override { return graded_.families.empty() || (graded_.frozen && graded_rel_ <= kGradedSettled); }
-    void restart() override {
+    bool restart() override {
+        const bool had = has_state();
         for (int side = 0; side < 4; ++side) clear_side(side);
         accel_.restart();
         calm_ = 0;
         last_gap_ = best_gap_ = kNoGap;
         mismatch_ = 0.0;
+        return had;
     }
 
-    void advance(const Grid &g, const ControlFields &others, const Settings &settings,
+    bool advance(const Grid &g, const ControlFields &others, const Settings &settings,
                  const ControlPace &pace) override {
+        bool moved = decay_ != settings.wall_decay && has_state();
         decay_ = settings.wall_decay;
         const double omega = std::min(1.0, pace.relaxation * settings.wall_relaxation);
         const double step = pace.step * kStepLimit;
         const double orient = boundary_orientation(g);  // J's sign, from the boundary alone (base/folds.hpp)
         for (int side = 0; side < 4; ++side) {
             if (!active(g, side)) {
+                moved = moved || !phi_[side].empty();
                 clear_side(side);
                 continue;
             }
@@ -219,6 +223,20 @@ public:
             lastq_[side].resize(n, 0.0);
         }
         std::vector<Node> nodes;
+        // A frozen graded layer that meets its targets already (a start kept
+        // and turned to the normals, graded_layer.hpp) is left as it is: the
+        // fields, and so the run's residual, stand (on a straight channel
+        // the update and the residual after it were a fifth of the run).
+        if (!graded_.families.empty() && graded_.frozen) {
+            for (int side = 0; side < 4; ++side) add_targets(g, others, orient, side, nodes);
+            const double gap = mismatch(nodes), rel = relative_gap(nodes);
+            if (rel <= kGradedSettled && gap <= settings.tolerance * g.extent()) {
+                mismatch_ = gap;
+                graded_rel_ = rel;
+                return moved;
+            }
+            nodes.clear();
+        }
         // Acceleration once the ramp is over (kCalmUpdates damped updates in
         // a row that no step limit cut and that shrank the gap), from every
         // node's target at the state as it is (a fixed point of all walls at
@@ -233,7 +251,7 @@ public:
                 best_gap_ = std::min(best_gap_, gap);
                 mismatch_ = mismatch(nodes);
                 graded_rel_ = relative_gap(nodes);
-                return;
+                return true;
             }
             nodes.clear();
         }
@@ -244,6 +262,7 @@ public:
         last_gap_ = best_gap_ = gap;
         mismatch_ = mismatch(nodes);
         graded_rel_ = relative_gap(nodes);
+        return true;
     }
 
 private:
@@ -329,15 +348,24 @@ private:
     // walls' current contributions count as "others" too).
     void add_targets(const Grid &g, const ControlFields &others, double orient, int side, std::vector<Node> &nodes) const {
         if (!active(g, side)) return;
-        ControlFields rest = others;
-        add_background(g, rest);
-        for (int o = 0; o < 4; ++o)
-            if (o != side) add_side(g, o, rest);
+        // Summed into whole fields only where there is something to sum: with
+        // no other term and no other wall's state the background is read at
+        // each node (a field per wall and update was a tenth of a straight
+        // channel's run).
+        ControlFields rest;
+        const bool summed = !others.empty() || other_state(side);
+        if (summed) {
+            rest = others;
+            add_background(g, rest);
+            for (int o = 0; o < 4; ++o)
+                if (o != side) add_side(g, o, rest);
+        }
         const double sign = (side == 0 || side == 1) ? orient : -orient;
         const int n = wall_length(g, side);
         for (int k = 0; k < n; ++k) {
             Node nd{side, k, 0.0, 0.0, {}, 1.0};
-            if (target(g, side, k, sign, rest, nd.phi, nd.psi, nd.unit, nd.widen)) nodes.push_back(nd);
+            if (target(g, side, k, sign, summed ? &rest : nullptr, nd.phi, nd.psi, nd.unit, nd.widen))
+                nodes.push_back(nd);
         }
     }
 
@@ -365,6 +393,17 @@ private:
         }
     }
 
+    // Whether any coefficient of the state is not zero (add_to adds it), of
+    // any wall or of the walls other than `side`.
+    bool has_state() const { return other_state(-1); }
+    bool other_state(int side) const {
+        for (int o = 0; o < 4; ++o)
+            if (o != side)
+                for (const auto *v : {&phi_, &psi_})
+                    for (double c : (*v)[static_cast<std::size_t>(o)])
+                        if (c != 0.0) return true;
+        return false;
+    }
     void clear_side(int side) {
         for (auto *v : {&phi_, &psi_, &gain_phi_, &gain_psi_, &lastp_, &lastq_}) (*v)[side].clear();
     }
@@ -390,7 +429,8 @@ private:
     // The coefficients that put the depth-1 node at its target.
     // unit: the change of (R_x, R_y)/diag per unit of phi (unit[0..1]) and of
     // psi (unit[2..3]) at that node, for mismatch().
-    bool target(const Grid &g, int side, int k, double sign, const ControlFields &rest, double &phi,
+    // rest: the other terms summed (null: the background alone).
+    bool target(const Grid &g, int side, int k, double sign, const ControlFields *rest, double &phi,
                 double &psi, double unit[4], double &widen_out) const {
         if (k < k_begin(g, side) || k >= k_end(g, side)) return false;
         const Connectivity &conn = g.connectivity();
@@ -440,7 +480,12 @@ private:
         const double xeta = 0.5 * (lx[3] - lx[4]), yeta = 0.5 * (ly[3] - ly[4]);
         // The other terms' C_xi, C_eta at this node, at the target (L has no
         // controls, so m.cxi = m.ceta = 0 before).
-        add_control_terms(rest, s.c, m);
+        if (rest) {
+            add_control_terms(*rest, s.c, m);
+        } else if (graded_.phi.size() == g.size()) {  // as add_control_terms would add it
+            m.cxi += m.alpha * graded_.phi[static_cast<std::size_t>(s.c)];
+            m.ceta += m.gamma * graded_.psi[static_cast<std::size_t>(s.c)];
+        }
         const double oxi = m.cxi, oeta = m.ceta;
         const double rx = -eq.rx - oxi * xxi - oeta * xeta, ry = -eq.ry - oxi * yxi - oeta * yeta;
         const double det = xxi * yeta - xeta * yxi;

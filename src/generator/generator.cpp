@@ -149,7 +149,7 @@ void Generator::shape_start(bool fill_above) {
     // the frozen Phi keeps exactly.
     std::string untangled;
     if (c && fill_above && is_wall_control(c) && c->grades(grid_, settings)) {
-        const long folded = fold_summary(grid_).folded;
+        const long folded = has_folds(grid_) ? fold_summary(grid_).folded : 0;
         double r = 0.0;
         const int cycles = folded > 0 ? winslow_cycles(ControlFields{}, settings, std::max(settings.tolerance, kShapeTolerance),
                                                       r, kUntangleCycles, grid_.held_rows() == 0)
@@ -421,9 +421,9 @@ bool Generator::advance_dynamic_controls(Problem &problem, double extent, double
     const bool cycles = solver_->converges_each_iteration();
     ControlPace pace = cycles ? ControlPace{kCyclePaceRelaxation, kCyclePaceStep, true} : ControlPace{};
     pace.one_gain = solver_->marches_in_time();
-    controls_.advance(grid_, settings, pace);
+    const bool moved = controls_.advance(grid_, settings, pace);
     if (!cycles) return false;
-    r = eg2d::residual(system_, problem.level(), extent).value;
+    if (moved) r = eg2d::residual(system_, problem.level(), extent).value;
     return true;
 }
 

@@ -66,7 +66,10 @@ public:
     std::unique_ptr<eg2d::Control> clone() const override { return std::make_unique<ProbeControl>(*this); }
     void add_to(const eg2d::Grid &, eg2d::ControlFields &) const override {}
     bool dynamic() const override { return true; }
-    void restart() override { ++*restarts_; }
+    bool restart() override {
+        ++*restarts_;
+        return false;
+    }
 
 private:
     int *restarts_;
