@@ -51,6 +51,24 @@ FoldSummary fold_summary(const Grid &g) {
     return s;
 }
 
+bool has_folds(const Grid &g) {
+    // Every corner turning one way leaves the total area that way: none is
+    // folded whichever the orientation; corners turning both ways fold a
+    // cell against either. Zero turns fold nothing, as in is_folded.
+    bool plus = false, minus = false;
+    for (int j = 0; j < g.nj() - 1; ++j)
+        for (int i = 0; i < g.ni() - 1; ++i) {
+            const Cell c = Cell::at(g, i, j);
+            for (int m = 0; m < 4; ++m) {
+                const double turn = c.corner(m, 1).cross;
+                plus = plus || turn > 0.0;
+                minus = minus || turn < 0.0;
+            }
+            if (plus && minus) return true;
+        }
+    return false;
+}
+
 double row_signed_area(const Grid &g, int j) {
     // Row j of an O-grid ends on a copy of its first node: the closing edge adds nothing.
     const std::size_t row = static_cast<std::size_t>(g.ni()) * j;

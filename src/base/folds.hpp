@@ -15,6 +15,9 @@ struct FoldSummary {
 };
 
 FoldSummary fold_summary(const Grid &grid);
+// Whether any cell is folded (fold_summary's folded > 0) in one pass: some
+// corner turns one way and some the other.
+bool has_folds(const Grid &grid);
 
 // +1 for a right-handed grid (total area positive), -1 for a left-handed one.
 int grid_orientation(const Grid &g);

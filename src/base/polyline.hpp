@@ -15,11 +15,16 @@ std::vector<double> arc_lengths(const std::vector<Vec2> &line);
 // The points of `line` at arc lengths s (from its first point), each
 // clamped to the line's ends; linear between its points.
 std::vector<Vec2> points_along(const std::vector<Vec2> &line, const std::vector<double> &s);
+// The same with the line's arc_lengths already at hand.
+std::vector<Vec2> points_along(const std::vector<Vec2> &line, const std::vector<double> &cum, const std::vector<double> &s);
 
 // Column i of a grid, rows 0..last; row j, columns 0..ni-1; one node.
 std::vector<Vec2> grid_column(const Grid &g, int i, int last);
 std::vector<Vec2> grid_row(const Grid &g, int j);
-void set_node(Grid &g, int i, int j, Vec2 p);
+inline void set_node(Grid &g, int i, int j, Vec2 p) {
+    g.x[node_index(g.ni(), i, j)] = p.x;
+    g.y[node_index(g.ni(), i, j)] = p.y;
+}
 
 // A wall node whose path a -> b -> c (node indices into g.x, g.y) turns by
 // more than 45 degrees is a corner (a blunt base's:

@@ -345,7 +345,7 @@ void grade_family(Grid &g, bool columns, GradedLayer &out, std::string &moved, s
         for (int k = 1; k < nodes; ++k)
             want[static_cast<std::size_t>(k)] = want[static_cast<std::size_t>(k - 1)] + L.cells[static_cast<std::size_t>(k - 1)];
         want.back() = L.arc.back();
-        const std::vector<Vec2> p = points_along(L.points, want);
+        const std::vector<Vec2> p = points_along(L.points, L.arc, want);
         for (int k = 1; k < nodes - 1; ++k) set_node(g, columns ? l : k, columns ? k : l, p[static_cast<std::size_t>(k)]);
     }
     if (ring)
@@ -385,20 +385,33 @@ std::string corner_notes(const Grid &g, const std::array<double, 4> &height) {
     return out;
 }
 
-// Whether every cell's corners are within `degrees` of 90 and turn with the
-// grid (none folded or flat): |cos| <= sin(degrees) at each, no atan2 (the
-// check took a tenth of a straight channel's whole run).
+// Whether every cell's corners are within `degrees` of 90 and turn alike
+// (none folded or flat): |cos| <= sin(degrees) at each, no atan2 (the
+// check took a tenth of a straight channel's whole run). Corners that all
+// turn one way make that the grid's orientation: no pass for it first.
 bool near_square(const Grid &g, double degrees) {
-    const int o = grid_orientation(g);
     const double s = std::sin(degrees * std::acos(-1.0) / 180.0), s2 = s * s;
-    for (int j = 0; j < g.nj() - 1; ++j)
-        for (int i = 0; i < g.ni() - 1; ++i) {
-            const Cell c = Cell::at(g, i, j);
-            for (int m = 0; m < 4; ++m) {
-                const Cell::Corner k = c.corner(m, o);
-                if (!(k.cross > 0.0) || k.dot * k.dot > s2 * k.lengths2) return false;
-            }
+    const std::size_t ni = static_cast<std::size_t>(g.ni());
+    double o = 0.0;
+    // Corner m of a cell lies between its edges e[m] (to the next corner)
+    // and -e[m-1] (to the previous one): four edges a cell, not eight.
+    auto square = [&](double ax, double ay, double bx, double by) {
+        const double cross = bx * ay - by * ax, dot = -(ax * bx + ay * by);  // a x (-b), a . (-b)
+        if (o == 0.0) o = cross > 0.0 ? 1.0 : -1.0;
+        return cross * o > 0.0 && dot * dot <= s2 * ((ax * ax + ay * ay) * (bx * bx + by * by));
+    };
+    for (std::size_t j = 0; j + 1 < static_cast<std::size_t>(g.nj()); ++j) {
+        const double *x0 = g.x.data() + j * ni, *x1 = x0 + ni, *y0 = g.y.data() + j * ni, *y1 = y0 + ni;
+        for (std::size_t i = 0; i + 1 < ni; ++i) {
+            const double e0x = x0[i + 1] - x0[i], e0y = y0[i + 1] - y0[i];
+            const double e1x = x1[i + 1] - x0[i + 1], e1y = y1[i + 1] - y0[i + 1];
+            const double e2x = x1[i] - x1[i + 1], e2y = y1[i] - y1[i + 1];
+            const double e3x = x0[i] - x1[i], e3y = y0[i] - y1[i];
+            if (!square(e0x, e0y, e3x, e3y) || !square(e1x, e1y, e0x, e0y) || !square(e2x, e2y, e1x, e1y) ||
+                !square(e3x, e3y, e2x, e2y))
+                return false;
         }
+    }
     return true;
 }
 
@@ -426,17 +439,7 @@ void one_dimensional_controls(const Grid &g, GradedLayer &out) {
 
 // The start kept: every interior node's controls inverted from it, frozen.
 void keep_start(const Grid &g, GradedLayer &out) {
-    const int ni = g.ni(), nj = g.nj();
-    const bool ring = g.topology() == Topology::O;
-    for (int j = 1; j < nj - 1; ++j)
-        for (int i = ring ? 0 : 1; i < ni - 1; ++i) {
-            const std::size_t n = node_index(ni, i, j);
-            invert_controls(g, i, i == 0 ? ni - 2 : i - 1, i + 1, j, out.phi[n], out.psi[n]);
-            if (ring && i == 0) {
-                out.phi[node_index(ni, ni - 1, j)] = out.phi[n];
-                out.psi[node_index(ni, ni - 1, j)] = out.psi[n];
-            }
-        }
+    invert_grid_controls(g, 1, out.phi, out.psi);
     out.frozen = out.kept = true;
 }
 
@@ -468,16 +471,17 @@ GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height) {
     // Kept when near square, turned to the normals when that keeps it so
     // (one pass over the turned grid checks both); else the one-dimensional
     // background.
-    Grid turned = g;
-    turn_to_normals(turned, out);
-    if (near_square(turned, kKeepStartSkew)) {
-        g = std::move(turned);
-        keep_start(g, out);
-    } else if (near_square(g, kKeepStartSkew)) {
-        keep_start(g, out);
-    } else {
-        one_dimensional_controls(g, out);
+    // (Turned in place, its coordinates alone kept to go back to: a copy of
+    // the grid was a twentieth of a straight channel's run.)
+    std::vector<double> x = g.x, y = g.y;
+    turn_to_normals(g, out);
+    const bool turned = near_square(g, kKeepStartSkew);
+    if (!turned) {
+        g.x.swap(x);
+        g.y.swap(y);
     }
+    if (turned || near_square(g, kKeepStartSkew)) keep_start(g, out);
+    else one_dimensional_controls(g, out);
     return out;
 }
 

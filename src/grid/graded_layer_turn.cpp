@@ -36,35 +36,64 @@ Vec2 wall_normal(const Vec2 &before, const Vec2 &w, const Vec2 &after, const Vec
 
 void turn_to_normals(Grid &g, const GradedLayer &layer) {
     const bool ring = g.topology() == Topology::O;
+    const int ni = g.ni();
     for (const GradedFamily &f : layer.families) {
         const int lines = static_cast<int>(f.factor.size()), nodes = f.columns ? g.nj() : g.ni();
         const bool lo = !layer.heights[f.columns ? 0 : 3].empty(), hi = !layer.heights[f.columns ? 2 : 1].empty();
         const double K = std::min<double>(kTurnRows, lo && hi ? (nodes - 1) / 2 : nodes - 1);
-        // Lines of a family share no nodes, and walls' nodes never move: each
-        // line is read as it is, its neighbours only at the wall.
-        auto wall_node = [&](int l, int k) {
-            const std::size_t n = f.columns ? node_index(g.ni(), l, k) : node_index(g.ni(), k, l);
-            return Vec2{g.x[n], g.y[n]};
-        };
-        for (int l = ring ? 0 : 1; l < (ring ? lines : lines - 1); ++l) {
-            const std::vector<Vec2> p = f.columns ? grid_column(g, l, nodes - 1) : grid_row(g, l);
+        // Node k of line l. Lines of a family share no nodes, and walls'
+        // nodes never move: each line is read as it is, its neighbours only
+        // at the wall. The passes below go through the grid in storage
+        // order (line by line, a column family's lines were read with a
+        // stride of a row: a tenth of a straight channel's run).
+        auto at = [&](int l, int k) { return f.columns ? node_index(ni, l, k) : node_index(ni, k, l); };
+        auto point = [&](std::size_t n) { return Vec2{g.x[n], g.y[n]}; };
+        const int first = ring ? 0 : 1, last = ring ? lines : lines - 1;
+        // The normals at both ends of each line, before any node moves.
+        std::vector<Vec2> normal(2 * static_cast<std::size_t>(lines), Vec2{0.0, 0.0});
+        for (int l = first; l < last; ++l) {
             const int before = l > 0 ? l - 1 : lines - 1, after = ring && l + 1 == lines ? 0 : l + 1;
-            const std::vector<double> arc = arc_lengths(p);
-            std::vector<Vec2> q = p;
             for (int end = 0; end < 2; ++end) {
                 if (!(end == 0 ? lo : hi)) continue;
                 const int w = end == 0 ? 0 : nodes - 1, step = end == 0 ? 1 : -1;
-                const std::size_t iw = static_cast<std::size_t>(w);
-                const Vec2 n = wall_normal(wall_node(before, w), p[iw], wall_node(after, w), p[static_cast<std::size_t>(w + step)]);
-                if (n.x == 0.0 && n.y == 0.0) continue;
-                for (int m = 1; m < K && m < nodes - 1; ++m) {
-                    const std::size_t k = static_cast<std::size_t>(w + step * m);
-                    const double t = (m - 1) / (K - 1), b = 1.0 - t * t * (3.0 - 2.0 * t);
-                    const double d = std::fabs(arc[k] - arc[iw]);
-                    q[k] = {q[k].x + b * (p[iw].x + d * n.x - q[k].x), q[k].y + b * (p[iw].y + d * n.y - q[k].y)};
+                normal[2 * static_cast<std::size_t>(l) + static_cast<std::size_t>(end)] =
+                    wall_normal(point(at(before, w)), point(at(l, w)), point(at(after, w)), point(at(l, w + step)));
+            }
+        }
+        // Node m off the wall at `end` of line l, to the point its arc length
+        // d from the wall along the line as it was (prev: that line's node
+        // m-1 before it moved) reaches on the normal, blended in over K rows.
+        // Between two walls their rows do not meet (K is half the line).
+        auto move = [&](int l, int end, int m, Vec2 &prev, double &d) {
+            const int w = end == 0 ? 0 : nodes - 1;
+            const std::size_t iw = at(l, w), k = at(l, end == 0 ? m : w - m);
+            const double dx = g.x[k] - prev.x, dy = g.y[k] - prev.y;
+            prev = point(k);
+            d += std::sqrt(dx * dx + dy * dy);  // as arc_lengths (base/polyline.hpp)
+            const Vec2 n = normal[2 * static_cast<std::size_t>(l) + static_cast<std::size_t>(end)];
+            if (n.x == 0.0 && n.y == 0.0) return;
+            const double t = (m - 1) / (K - 1), b = 1.0 - t * t * (3.0 - 2.0 * t);
+            g.x[k] += b * (g.x[iw] + d * n.x - g.x[k]);
+            g.y[k] += b * (g.y[iw] + d * n.y - g.y[k]);
+        };
+        const int rows = static_cast<int>(std::min<double>(K, nodes - 1));  // m < K and m < nodes - 1
+        for (int end = 0; end < 2; ++end) {
+            if (!(end == 0 ? lo : hi)) continue;
+            const int w = end == 0 ? 0 : nodes - 1;
+            if (f.columns) {  // row by row
+                std::vector<Vec2> prev(static_cast<std::size_t>(lines));
+                std::vector<double> d(static_cast<std::size_t>(lines), 0.0);
+                for (int l = first; l < last; ++l) prev[static_cast<std::size_t>(l)] = point(at(l, w));
+                for (int m = 1; m < rows; ++m)
+                    for (int l = first; l < last; ++l)
+                        move(l, end, m, prev[static_cast<std::size_t>(l)], d[static_cast<std::size_t>(l)]);
+            } else {  // line by line
+                for (int l = first; l < last; ++l) {
+                    Vec2 prev = point(at(l, w));
+                    double d = 0.0;
+                    for (int m = 1; m < rows; ++m) move(l, end, m, prev, d);
                 }
             }
-            for (int k = 1; k < nodes - 1; ++k) set_node(g, f.columns ? l : k, f.columns ? k : l, q[static_cast<std::size_t>(k)]);
         }
         if (ring)
             for (int k = 1; k < nodes - 1; ++k)

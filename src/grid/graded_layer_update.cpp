@@ -50,17 +50,7 @@ void respace_family(Grid &m, const GradedLayer &layer, const GradedFamily &f) {
 void reshape_graded_layer(Grid &g, GradedLayer &layer) {
     for (const GradedFamily &f : layer.families) respace_family(g, layer, f);
     turn_to_normals(g, layer);
-    const int ni = g.ni(), nj = g.nj();
-    const bool ring = g.topology() == Topology::O;
-    for (int j = 1; j < nj - 1; ++j)
-        for (int i = ring ? 0 : 1; i < ni - 1; ++i) {
-            const std::size_t n = node_index(ni, i, j);
-            invert_controls(g, i, i == 0 ? ni - 2 : i - 1, i + 1, j, layer.phi[n], layer.psi[n]);
-            if (ring && i == 0) {
-                layer.phi[node_index(ni, ni - 1, j)] = layer.phi[n];
-                layer.psi[node_index(ni, ni - 1, j)] = layer.psi[n];
-            }
-        }
+    invert_grid_controls(g, 1, layer.phi, layer.psi);
     layer.frozen = true;
 }
 

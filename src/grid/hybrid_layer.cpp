@@ -263,10 +263,10 @@ HybridLayer shape_hybrid_layer(Grid &g, const Settings &settings, double h, bool
     out.phi.assign(g.size(), 0.0);
     out.psi.assign(g.size(), 0.0);
     int clipped = 0;
+    invert_grid_controls(m, rows + 1, out.phi, out.psi);
     for (int j = rows + 1; j < nj - 1; ++j)
         for (int i = i0; i < ni - 1; ++i) {
             double &phi = out.phi[node_index(ni, i, j)], &psi = out.psi[node_index(ni, i, j)];
-            invert_controls(m, i, i == 0 ? ni - 2 : i - 1, i + 1, j, phi, psi);
             if (std::fabs(phi) > kControlBound || std::fabs(psi) > kControlBound) ++clipped;
             phi = std::clamp(phi, -kControlBound, kControlBound);
             psi = std::clamp(psi, -kControlBound, kControlBound);
