@@ -39,8 +39,9 @@
  * leaves the grid exactly as it was, and usable. eg2d_last_error() gives a
  * precise message for the last failed call on a grid.
  * Runs (eg2d_iterate, eg2d_solve) are the exception that keeps its work:
- * NOT_CONVERGED, INTERRUPTED and FOLDED keep the iterations done, and
- * DIVERGED restores the run's last good grid: the latest iterate whose
+ * NOT_CONVERGED at the iteration limit, INTERRUPTED and FOLDED keep the
+ * iterations done, and DIVERGED and a stall (EG2D_PARAM_STALL_ITERATIONS)
+ * restore the run's last good grid: the latest iterate whose
  * residual was below the previous good one's (the start is the first),
  * had halved since or came 10 iterations after it, and that folds no more
  * cells than the start. The message names its iteration, and
@@ -398,6 +399,15 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
                                             the converged grid has folded cells; 0: it does not.
                                             EG2D_SYSTEM_VARIATIONAL: 1 also guards every step
                                             against folding a cell; 0 minimises without it */
+#define EG2D_PARAM_STALL_ITERATIONS   5  /* [0, 1e9], integer, 0 (default) = automatic: eg2d_solve
+                                            ends EG2D_ERR_NOT_CONVERGED when this many iterations
+                                            in a row bring neither the residual nor the wall
+                                            control's remaining change 10% below its best, the
+                                            grid restored to the best iteration and the message
+                                            giving the run's events (their cause). Automatic:
+                                            300 for multigrid; max(500, 2 max(ni, nj)) for the
+                                            other solvers. Not for EG2D_SYSTEM_VARIATIONAL,
+                                            whose minimiser has its own stop test */
 /* The weights a, b, c, d of EG2D_SYSTEM_VARIATIONAL (system parameters 10-19),
  * dimensionless: each in [0, 1e6], not all 0 (a setting that would make
  * them all 0 fails with EG2D_ERR_ARGUMENT: set the new weight before zeroing
@@ -585,8 +595,11 @@ EG2D_API int eg2d_set_monitor(eg2d_grid *grid, eg2d_monitor_fn fn, void *user);
 EG2D_API int eg2d_iterate(eg2d_grid *grid, int iterations, double *residual);
 
 /* Iterates until residual <= tolerance: EG2D_OK, or EG2D_ERR_NOT_CONVERGED
- * after max_iterations (or when the variational system's fold guard stops
- * it, see EG2D_SYSTEM_VARIATIONAL), EG2D_ERR_DIVERGED, EG2D_ERR_INTERRUPTED.
+ * after max_iterations, after EG2D_PARAM_STALL_ITERATIONS without progress
+ * (or when the variational system's fold guard stops it, see
+ * EG2D_SYSTEM_VARIATIONAL), EG2D_ERR_DIVERGED, EG2D_ERR_INTERRUPTED. The
+ * messages of DIVERGED and of a stall end with the run's events (the
+ * fallbacks that led there: eg2d_get_run_event).
  * A converged grid is checked for folded cells (EG2D_ERR_FOLDED, see
  * PARAM_FOLD_CHECK). */
 EG2D_API int eg2d_solve(eg2d_grid *grid);

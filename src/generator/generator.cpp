@@ -10,6 +10,7 @@
 #include "base/folds.hpp"
 #include "base/self_crossing.hpp"
 #include "controls/controls.hpp"
+#include "generator/stall_watch.hpp"
 
 namespace eg2d {
 
@@ -379,6 +380,12 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
     double best = r;
     LastGoodGrid good(grid_, iterations_, r);
     auto done = [&] { return stop_at_tolerance && r <= settings.tolerance && settled(extent, settings.tolerance); };
+    // Only a solve stops on a stall: eg2d_iterate runs the count it is given.
+    const bool watch = stop_at_tolerance && system_ != System::Variational;
+    StallWatch stall(!watch ? 0
+                     : settings.stall_iterations > 0.0 ? static_cast<long>(settings.stall_iterations)
+                                                       : solver_->stall_window(grid_.ni(), grid_.nj()));
+    stall.stalled(0, r, controls_.has_dynamic() ? StallWatch::kUnknown : 0.0);
     for (long it = 0; it < max_iterations; ++it) {
         if (done()) return RunEnd::Converged;
         if (controls_.has_dynamic() && advance_dynamic_controls(problem, extent, r) && done())
@@ -398,6 +405,8 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
         solver_->observe(r, controls_.has_dynamic() ? controls_.mismatch() / extent : 0.0);
         best = std::min(best, r);
         good.offer(grid_, iterations_, r);
+        if (stall.stalled(it + 1, r, controls_.has_dynamic() ? controls_.mismatch() / extent : 0.0))
+            fail_stalled(stall, good);
         if (monitor && monitor(iterations_, r))
             fail(Failure::Interrupted,
                  format("stopped by the monitor at iteration %d (residual %.3g)", iterations_, r));
@@ -438,8 +447,27 @@ void Generator::fail_diverged(const ResidualInfo &ri, double best, const LastGoo
                      ri.value, settings.divergence_factor, best, ri.i, ri.j);
     fail(Failure::Diverged,
          format("%s diverged at iteration %d: %s; the grid is restored to iteration %d, the last good one "
-                "(a lower residual, no more folded cells than the start)",
-                solver_info_->name, failed, where.c_str(), iterations_));
+                "(a lower residual, no more folded cells than the start)%s",
+                solver_info_->name, failed, where.c_str(), iterations_, events_said().c_str()));
+}
+
+std::string Generator::events_said() const {
+    std::string s;
+    for (const RunEvent &e : report_.events)
+        s += format("%s[iteration %d] %s", s.empty() ? "" : "; ", e.iteration, e.message.c_str());
+    return s.empty() ? "" : "; the run's events: " + s;
+}
+
+void Generator::fail_stalled(const StallWatch &stall, const LastGoodGrid &good) {
+    const int stopped = iterations_;
+    iterations_ = good.restore(grid_);
+    solver_->reset();
+    fail(Failure::NotConverged,
+         format("%s made no progress in %ld iterations (to iteration %d: neither the residual, best %.3g, nor the "
+                "wall control's remaining change fell 10%% below its best; EG2D_PARAM_STALL_ITERATIONS); the grid "
+                "is restored to iteration %d, the last good one%s",
+                solver_info_->name, stall.window(), stopped, stall.best_residual(), iterations_,
+                events_said().c_str()));
 }
 
 void Generator::fail_not_converged(long max_iterations, double r, double extent) const {

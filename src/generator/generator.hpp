@@ -23,6 +23,8 @@ namespace eg2d {
 // to it: an iteration that diverges can fold the grid several iterations
 // before its residual shows it (point SOR at omega 1.95 on the swan 17x17:
 // the iterate before the failing one had 215 of 256 cells folded).
+class StallWatch;
+
 class LastGoodGrid {
 public:
     LastGoodGrid(const Grid &g, int iteration, double residual);
@@ -141,6 +143,9 @@ private:
     bool advance_dynamic_controls(Problem &problem, double extent, double &r);
     [[noreturn]] void fail_diverged(const ResidualInfo &ri, double best, const LastGoodGrid &good);
     [[noreturn]] void fail_not_converged(long max_iterations, double r, double extent) const;
+    [[noreturn]] void fail_stalled(const StallWatch &stall, const LastGoodGrid &good);
+    // "; the run's events: ..." (empty without any): a failure's causes.
+    std::string events_said() const;
     // Dynamic controls have been updated since they last changed and are
     // within the tolerance of their target (ControlSet::mismatch() / L).
     bool settled(double extent, double tolerance) const {

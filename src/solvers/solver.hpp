@@ -2,6 +2,7 @@
 // a Problem. It never computes the stopping residual or checks divergence:
 // the Generator does that, the same way for every solver.
 #pragma once
+#include <algorithm>
 #include <memory>
 #include <string>
 
@@ -73,6 +74,13 @@ public:
     // AF alone, not a rule for slow solvers (wall.cpp, damped_update): a new
     // solver should be measured both ways.
     virtual bool marches_in_time() const { return false; }
+    // Iterations without progress (generator/stall_watch.hpp) after which
+    // eg2d_solve gives up, when EG2D_PARAM_STALL_ITERATIONS is automatic.
+    // Sweeps: 500, or twice the longer side's nodes (a sweep's gain per
+    // iteration falls as the grid grows). The largest gap between 10% gains
+    // over the test suite's converged runs: PSOR 280 sweeps (250 wide),
+    // line SOR 199, AF 102 (bench/RESULTS.md).
+    virtual long stall_window(int ni, int nj) const { return std::max(500L, 2L * std::max(ni, nj)); }
 };
 
 struct SolverInfo {
