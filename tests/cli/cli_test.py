@@ -927,7 +927,12 @@ class Progress(unittest.TestCase):
         self.assertIn("converged in", text)
 
     def test_plain_progress_lines_and_ctrl_c(self):
-        """Not a terminal: plain lines. SIGINT after the first line stops the run, writes nothing, exit 130."""
+        """Not a terminal: plain lines. SIGINT after the first line stops the run, writes nothing, exit 130;
+        SIGTERM likewise, exit 143."""
+        for sig, code in ((signal.SIGINT, 130), (signal.SIGTERM, 143)):
+            self.stopped_by(sig, code)
+
+    def stopped_by(self, sig, code):
         with tempfile.TemporaryDirectory() as d:
             path = os.path.join(d, "big.toml")
             with open(os.path.join(EXAMPLES, "swan.toml")) as f:
@@ -940,12 +945,12 @@ class Progress(unittest.TestCase):
                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
             header = p.stdout.readline()
             first = p.stdout.readline()
-            p.send_signal(signal.SIGINT)
+            p.send_signal(sig)
             rest, err = p.communicate(timeout=120)
             self.assertTrue(header.startswith("Swan (the elliptic-grid course notes, A4): 801 x 801"), header)
             self.assertRegex(first, r"^  iteration 1  residual \d\.\d{3}e[-+]\d\d  rate -/iteration\n$")
-            self.assertEqual(p.returncode, 130, rest + err)
-            self.assertRegex(rest, r"(?m)^interrupted at iteration \d+, residual .*: no files written$")
+            self.assertEqual(p.returncode, code, rest + err)
+            self.assertRegex(rest, r"(?m)^interrupted by %s at iteration \d+, residual .*: no files written$" % sig.name)
             self.assertFalse(os.path.exists(out_dir))
 
 

@@ -251,6 +251,12 @@ std::vector<std::string> tool_texts(const eg2d_grid *g, const Case &c, const std
     return texts;
 }
 
+// The failure of a set stopped by SIGINT or SIGTERM.
+Failure interrupted() {
+    return Failure(Progress::interrupt_exit_code(),
+                   std::string("interrupted by ") + Progress::interrupt_name() + ": no files written");
+}
+
 // The output set is written as one unit: every file first into a staging
 // directory beside them, and only when all are written are they renamed
 // into place (a full disk or Ctrl-C part-way leaves the old set as it was,
@@ -278,11 +284,11 @@ void write_outputs(eg2d_grid *g, const Case &c, const RunOptions &o, const std::
     } cleanup{stage, c};
     for (std::size_t k = 0; k < c.outputs.size(); ++k) {
         const auto &out = c.outputs[k];
-        if (Progress::interrupted()) throw Failure(EXIT_INTERRUPTED, "interrupted: no files written");
+        if (Progress::interrupted()) throw interrupted();
         if (out.tool) write_text_file(stage + "/" + out.name, texts[k]);
         else check(g, eg2d_write(g, (stage + "/" + out.name).c_str(), out.format), out.where);
     }
-    if (Progress::interrupted()) throw Failure(EXIT_INTERRUPTED, "interrupted: no files written");
+    if (Progress::interrupted()) throw interrupted();
     // Streams (a FIFO, a character device, or a link to one) first: a FIFO
     // with no reader, the likeliest failure here, then leaves every file as it was.
     for (const bool streams : {true, false})
@@ -415,8 +421,9 @@ int run_case(const Case &c, const RunOptions &o) {
     eg2d_get_iterations(g, &iterations);
     eg2d_get_residual(g, &residual);
     if (status == EG2D_ERR_INTERRUPTED) {
-        std::printf("interrupted at iteration %d, residual %.3e: no files written\n", iterations, residual);
-        return EXIT_INTERRUPTED;
+        std::printf("interrupted by %s at iteration %d, residual %.3e: no files written\n", Progress::interrupt_name(),
+                    iterations, residual);
+        return Progress::interrupt_exit_code();
     }
     if (status == EG2D_OK)
         std::printf("converged in %d iterations, residual %.3e, %.2f s\n", iterations, residual, seconds);
