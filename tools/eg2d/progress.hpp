@@ -1,7 +1,7 @@
 // The progress line of a run (iteration, residual, rate) through eg2d_set_monitor,
 // and the signals that stop a run: SIGINT (Ctrl-C) and SIGTERM make the
-// monitor return nonzero, so the run stops cleanly, and the writing of a
-// run's files stops before its next file.
+// monitor return nonzero, so the run stops cleanly, and an output set
+// (output_set.hpp) stops before its next file and removes its stage.
 #pragma once
 
 #include <chrono>
