@@ -1996,11 +1996,26 @@ class SharpTrailingEdge(unittest.TestCase):
             self.assertIn("257x129 has %s face(s) past checkMesh's limits" % m.group(2), err)
             self.assertIn("(the files are written)", err)
             self.assertTrue(os.path.isfile(os.path.join(d, "closed0012-257x129.xyz")))
+            # the reports say it too: the text report's line as printed, the JSON's figures
+            line = re.search(r"^solver check .*\n", out, re.M).group(0)
+            with open(os.path.join(d, "closed0012-257x129.report.txt")) as f:
+                self.assertTrue(f.read().endswith(line))
+            with open(os.path.join(d, "closed0012-257x129.report.json")) as f:
+                check = json.load(f)["solver_check"]
+            self.assertEqual(check["faces_past"], int(m.group(2)))
+            self.assertEqual(check["worst"]["cell"], [int(m.group(3)), int(m.group(4))])
+            self.assertEqual("%.3g" % check["skewness_max"], m.group(1))  # printed to 3 digits
+            self.assertGreater(check["worst"]["skewness"], 4)
+            self.assertEqual((check["nonorthogonality_limit_deg"], check["skewness_limit"]), (70, 4))
             # the standard open section's blunt base: nothing past, exit 0
             code, out, err = run("airfoil", "0012", "--topology", "o", "--size", "129x65", "--first-cell", "1e-5",
                                  "--growth", "1.3", "-o", d)
             self.assertEqual(code, 0, out + err)
             self.assertRegex(out, r"solver check .*\(limit 4\)\n")
+            with open(os.path.join(d, "naca0012-129x65.report.json")) as f:
+                check = json.load(f)["solver_check"]
+            self.assertEqual((check["faces_past"], check["worst"]), (0, None))
+            self.assertLessEqual(check["skewness_max"], 4)
 
     def test_direction_and_start_point(self):
         """Reversed files (clockwise) and files starting at the leading edge give

@@ -235,6 +235,30 @@ std::vector<PlannedPath> planned_paths(const Args &a, const std::vector<Output> 
     return paths;
 }
 
+// JSON has no infinity or NaN: a value that is not finite is null.
+std::string json_number(double v) { return std::isfinite(v) ? format_text("%.17g", v) : "null"; }
+
+// The face check as the reports' lines: the text report's line (also
+// printed) and the JSON report's member "solver_check".
+ReportLines face_check_lines(const FaceCheck &fv, double nonorth_limit, double skew_limit) {
+    ReportLines r;
+    r.text = format_text(
+        "solver check    faces as OpenFOAM's checkMesh measures them: non-orthogonality max %.3g (limit %g), "
+        "skewness max %.3g (limit %g)%s\n", fv.nonorth_max, nonorth_limit, fv.skew_max, skew_limit,
+        fv.past == 0 ? "" : format_text(": %d face(s) past, the worst of cell (%d, %d): non-orthogonality %.3g, "
+                                        "skewness %.3g", fv.past, fv.worst_i, fv.worst_j, fv.worst_nonorth,
+                                        fv.worst_skew).c_str());
+    r.json = "  \"solver_check\": {\"nonorthogonality_max_deg\": " + json_number(fv.nonorth_max) +
+             ", \"nonorthogonality_limit_deg\": " + json_number(nonorth_limit) +
+             ", \"skewness_max\": " + json_number(fv.skew_max) + ", \"skewness_limit\": " + json_number(skew_limit) +
+             ", \"faces_past\": " + std::to_string(fv.past) + ", \"worst\": " +
+             (fv.past == 0 ? std::string("null")
+                           : format_text("{\"cell\": [%d, %d], \"nonorthogonality_deg\": %s, \"skewness\": %s}",
+                                         fv.worst_i, fv.worst_j, json_number(fv.worst_nonorth).c_str(),
+                                         json_number(fv.worst_skew).c_str())) + "}";
+    return r;
+}
+
 }  // namespace
 
 int run_airfoil(int argc, char **argv, char **whole_argv) {
@@ -345,12 +369,7 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
         std::vector<double> lx(static_cast<std::size_t>(ci) * cj), ly(lx.size());
         eg2d_get_coordinates(lg, lx.data(), ly.data());
         const FaceCheck fv = check_faces(ci, cj, lx, ly, !cgrid, wake / (1 << level), kNonorthLimit, kSkewLimit);
-        const std::string fv_line = format_text(
-            "solver check    faces as OpenFOAM's checkMesh measures them: non-orthogonality max %.3g (limit %g), "
-            "skewness max %.3g (limit %g)%s\n", fv.nonorth_max, kNonorthLimit, fv.skew_max, kSkewLimit,
-            fv.past == 0 ? "" : format_text(": %d face(s) past, the worst of cell (%d, %d): non-orthogonality %.3g, "
-                                            "skewness %.3g", fv.past, fv.worst_i, fv.worst_j, fv.worst_nonorth,
-                                            fv.worst_skew).c_str());
+        const ReportLines lines = face_check_lines(fv, kNonorthLimit, kSkewLimit);
         if (fv.past > 0 && past_limits.empty())
             past_limits = format_text("%dx%d has %d face(s) past checkMesh's limits (non-orthogonality %g, skewness %g), "
                                       "the worst of cell (%d, %d): non-orthogonality %.3g, skewness %.3g",
@@ -361,11 +380,11 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
         const std::string tmr = cgrid ? tmr_comparison(lg, ci, cj, wake / s, a.farfield, a.levels - 1 - level) : std::string();
         if (!tmr.empty()) set.add_text(base + ".tmr.txt", tmr);
         heads.push_back(format_text("level %d: %dx%d -> %s/%s.*\n", level, ci, cj, a.out_dir.c_str(), base.c_str()));
-        tails.push_back(level == 0 ? fv_line + tmr : fv.past > 0 ? fv_line : std::string());
-        return ReportLines();
+        tails.push_back(level == 0 ? tmr : fv.past > 0 ? lines.text : std::string());
+        return lines;
     });
     set.commit();
-    if (!a.quiet)  // the finest level's report in full
+    if (!a.quiet)  // the finest level's report in full, with its face check
         for (std::size_t k = 0; k < heads.size(); ++k)
             std::printf("%s%s%s", heads[k].c_str(), k == 0 ? reports[0].c_str() : "", tails[k].c_str());
     if (growth > a.growth) {
