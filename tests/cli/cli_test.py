@@ -16,6 +16,7 @@ import subprocess
 import sys
 import tempfile
 import textwrap
+import time
 import unittest
 import xml.etree.ElementTree as ET
 
@@ -927,7 +928,12 @@ class Progress(unittest.TestCase):
         self.assertIn("converged in", text)
 
     def test_plain_progress_lines_and_ctrl_c(self):
-        """Not a terminal: plain lines. SIGINT after the first line stops the run, writes nothing, exit 130."""
+        """Not a terminal: plain lines. SIGINT after the first line stops the run, writes nothing, exit 130;
+        SIGTERM likewise, exit 143."""
+        for sig, code in ((signal.SIGINT, 130), (signal.SIGTERM, 143)):
+            self.stopped_by(sig, code)
+
+    def stopped_by(self, sig, code):
         with tempfile.TemporaryDirectory() as d:
             path = os.path.join(d, "big.toml")
             with open(os.path.join(EXAMPLES, "swan.toml")) as f:
@@ -940,12 +946,12 @@ class Progress(unittest.TestCase):
                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
             header = p.stdout.readline()
             first = p.stdout.readline()
-            p.send_signal(signal.SIGINT)
+            p.send_signal(sig)
             rest, err = p.communicate(timeout=120)
             self.assertTrue(header.startswith("Swan (the elliptic-grid course notes, A4): 801 x 801"), header)
             self.assertRegex(first, r"^  iteration 1  residual \d\.\d{3}e[-+]\d\d  rate -/iteration\n$")
-            self.assertEqual(p.returncode, 130, rest + err)
-            self.assertRegex(rest, r"(?m)^interrupted at iteration \d+, residual .*: no files written$")
+            self.assertEqual(p.returncode, code, rest + err)
+            self.assertRegex(rest, r"(?m)^interrupted by %s at iteration \d+, residual .*: no files written$" % sig.name)
             self.assertFalse(os.path.exists(out_dir))
 
 
@@ -1474,6 +1480,180 @@ class Airfoil(unittest.TestCase):
             self.assertIn("--levels", out)
 
 
+class AirfoilOutputSet(unittest.TestCase):
+    """eg2d airfoil writes its family (every level, format, report, picture and
+    TMR comparison) as one set: what would fail after the solve is refused
+    before it, and a failure or a signal part-way leaves the output directory
+    exactly as it was (no .eg2d-set-* stage, no new file), with a message
+    naming the cause and a non-zero exit."""
+
+    ARGS = ("0012", "--size", "97x25", "--first-cell", "1e-4", "--farfield", "20", "--levels", "2")
+
+    def old_directory(self, d):
+        """d/out with an older family's grid and report; returns it and a snapshot function."""
+        out = os.path.join(d, "out")
+        os.mkdir(out)
+        for name in ("naca0012-97x25.xyz", "naca0012-49x13.report.json"):
+            with open(os.path.join(out, name), "w") as f:
+                f.write("old " + name)
+        return out
+
+    def snapshot(self, out):
+        """{name: (file type, bytes)} of every entry of out."""
+        snap = {}
+        for name in os.listdir(out):
+            st = os.lstat(os.path.join(out, name))
+            data = None
+            if stat.S_ISREG(st.st_mode):
+                with open(os.path.join(out, name), "rb") as f:
+                    data = f.read()
+            snap[name] = (stat.S_IFMT(st.st_mode), data)
+        return snap
+
+    def test_fifo_without_a_reader(self):
+        # the report of the finest level (written by the library, amended by
+        # the command) and a TMR comparison (the command's own text, which a
+        # plain stream would have hung on) as FIFOs nobody reads
+        for args, fifo in ((self.ARGS, "naca0012-97x25.report.txt"),
+                           (("0012", "--size", "113x33", "--first-cell", "8e-6", "--farfield", "500",
+                             "--te", "sharpen"), "naca0012-113x33.tmr.txt")):
+            with tempfile.TemporaryDirectory() as d:
+                out = self.old_directory(d)
+                os.mkfifo(os.path.join(out, fifo))
+                before = self.snapshot(out)
+                p = subprocess.run([TOOL, "airfoil", *args, "-o", out, "--quiet"], capture_output=True, text=True,
+                                   timeout=120)
+                self.assertEqual(p.returncode, 8, p.stdout + p.stderr)
+                self.assertEqual(p.stderr, f"eg2d: {out}/{fifo}: a FIFO with no reader: not written\n")
+                self.assertEqual(self.snapshot(out), before)
+
+    def test_missing_cgns_plugin_refused_before_solving(self):
+        with tempfile.TemporaryDirectory() as d:
+            out = self.old_directory(d)
+            before = self.snapshot(out)
+            for target in (out, os.path.join(d, "new")):
+                p = subprocess.run([TOOL, "airfoil", *self.ARGS, "--format", "plot3d,cgns", "-o", target],
+                                   capture_output=True, text=True, timeout=120,
+                                   env={**os.environ, "EG2D_PLUGIN_DIR": "/nonexistent"})
+                self.assertEqual(p.returncode, 9, p.stdout + p.stderr)
+                self.assertRegex(p.stderr, r"(?s)^eg2d: airfoil: --format cgns: .*\(checked before solving; no files "
+                                           r"written\)\n$")
+                self.assertNotIn("iteration", p.stdout)  # nothing was solved
+            self.assertEqual(self.snapshot(out), before)
+            self.assertFalse(os.path.exists(os.path.join(d, "new")))
+
+    def test_full_disk(self):
+        # the file-size limit (EFBIG) as a full disk: the finest grid's files
+        # fail part-way through the set, which is dropped whole; an output
+        # directory the command made is removed again
+        def limit():
+            signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+            resource.setrlimit(resource.RLIMIT_FSIZE, (64 << 10, 64 << 10))
+        with tempfile.TemporaryDirectory() as d:
+            out = self.old_directory(d)
+            before = self.snapshot(out)
+            for target in (out, os.path.join(d, "new", "deeper")):
+                p = subprocess.run([TOOL, "airfoil", "0012", "--size", "385x97", "--first-cell", "1e-5", "--levels",
+                                    "2", "--format", "vts,plot3d", "-o", target, "--quiet"], capture_output=True,
+                                   text=True, timeout=120, preexec_fn=limit)
+                self.assertEqual(p.returncode, 8, p.stdout + p.stderr)
+                self.assertRegex(p.stderr, r"^eg2d: naca0012-385x97\.vts: eg2d_write: .*/\.eg2d-set-\w+/"
+                                           r"naca0012-385x97\.vts: .*File too large")
+            self.assertEqual(self.snapshot(out), before)
+            self.assertFalse(os.path.exists(os.path.join(d, "new")))
+
+    def test_sigterm_during_the_solve(self):
+        # 1793x513 takes about a second after its first iteration is printed
+        with tempfile.TemporaryDirectory() as d:
+            out = self.old_directory(d)
+            before = self.snapshot(out)
+            p = subprocess.Popen([TOOL, "airfoil", "0012", "--size", "1793x513", "--first-cell", "1e-6", "--levels",
+                                  "3", "--format", "plot3d,vts,svg", "-o", out], stdout=subprocess.PIPE,
+                                 stderr=subprocess.PIPE, text=True, env={**os.environ, "EG2D_HUGE_PAGES": "0"})
+            while not p.stdout.readline().startswith("  iteration"):
+                self.assertIsNone(p.poll())
+            p.send_signal(signal.SIGTERM)
+            rest, err = p.communicate(timeout=120)
+            self.assertEqual(p.returncode, 143, rest + err)
+            # by the solve's check, or the set's if the signal came as the files were staged
+            self.assertRegex(err, r"^eg2d: (airfoil: )?interrupted by SIGTERM: no files written\n$")
+            self.assertNotIn("level 0", rest)
+            self.assertEqual(self.snapshot(out), before)
+
+    def test_sigterm_while_writing(self):
+        # the set is staged whole, then the finest grid streamed into a FIFO
+        # whose reader holds it there; SIGTERM then: the stream is finished
+        # (it cannot be taken back), and nothing else of the set is written
+        with tempfile.TemporaryDirectory() as d:
+            out = self.old_directory(d)
+            fifo = os.path.join(out, "naca0012-385x97.xyz")
+            os.mkfifo(fifo)
+            before = self.snapshot(out)
+            reader = os.open(fifo, os.O_RDONLY | os.O_NONBLOCK)
+            try:
+                p = subprocess.Popen([TOOL, "airfoil", "0012", "--size", "385x97", "--first-cell", "1e-5",
+                                      "--levels", "2", "--format", "plot3d,svg", "-o", out, "--quiet"],
+                                     stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                first = b""
+                while not first:  # the pipe (64 kB) fills: the command is blocked in its write
+                    self.assertIsNone(p.poll())
+                    try:
+                        first = os.read(reader, 1)
+                    except BlockingIOError:
+                        time.sleep(0.02)
+                self.assertTrue([n for n in os.listdir(out) if n.startswith(".eg2d-set-")])  # the stage, whole
+                p.send_signal(signal.SIGTERM)
+                got = len(first)
+                while p.poll() is None or got < 597544:
+                    try:
+                        chunk = os.read(reader, 1 << 16)
+                    except BlockingIOError:
+                        time.sleep(0.02)
+                        continue
+                    if not chunk:
+                        break
+                    got += len(chunk)
+            finally:
+                os.close(reader)
+            rest, err = p.communicate(timeout=120)
+            self.assertEqual(p.returncode, 143, rest + err)
+            self.assertEqual(err, f"eg2d: interrupted by SIGTERM: only {fifo} written (in place), no other file\n")
+            self.assertEqual(got, 597544)  # 385x97 Plot3D: the stream went whole
+            self.assertEqual(self.snapshot(out), before)
+
+    CHANNEL = ("channel", "--lower", "s;0", "--upper", "s;1", "--size", "33x17", "--first-cell", "1e-2", "--levels", "2")
+
+    def test_channel_writes_the_same_set(self):
+        # eg2d channel's family goes through the same set: a FIFO nobody reads
+        # among its paths fails it whole; without it, the family is written
+        with tempfile.TemporaryDirectory() as d:
+            out = os.path.join(d, "out")
+            os.mkdir(out)
+            with open(os.path.join(out, "channel-33x17.xyz"), "w") as f:
+                f.write("old")
+            os.mkfifo(os.path.join(out, "channel-17x9.report.json"))
+            before = self.snapshot(out)
+            code, stdout, err = run(*self.CHANNEL, "-o", out, "--quiet")
+            self.assertEqual(code, 8, stdout + err)
+            self.assertEqual(err, f"eg2d: {out}/channel-17x9.report.json: a FIFO with no reader: not written\n")
+            self.assertEqual(self.snapshot(out), before)
+            os.remove(os.path.join(out, "channel-17x9.report.json"))
+            code, stdout, err = run(*self.CHANNEL, "-o", out, "--quiet")
+            self.assertEqual(code, 4, stdout + err)  # 16 rows grow by more than 1.2: said, written
+            self.assertEqual(sorted(os.listdir(out)), sorted(f"channel-{s}.{e}" for s in ("33x17", "17x9")
+                                                            for e in ("xyz", "report.txt", "report.json")))
+
+    def test_empty_output_directory_refused(self):
+        for command in (["airfoil", *self.ARGS], list(self.CHANNEL)):
+            with tempfile.TemporaryDirectory() as d:
+                code, out, err = run(*command, "-o", "", cwd=d)
+                self.assertEqual(code, 2, out + err)
+                self.assertEqual(err, f"eg2d: {command[0]}: -o \"\": an empty output directory name (it would be the "
+                                      f"filesystem root; -o . is the current directory) (eg2d {command[0]} --help "
+                                      "shows the usage)\n")
+                self.assertEqual(os.listdir(d), [])
+
+
 class Channel(unittest.TestCase):
     """eg2d channel: a channel between two walls given as expressions or point
     files, or round a centreline; its patches in SU2, OpenFOAM and CGNS (read
@@ -1816,11 +1996,26 @@ class SharpTrailingEdge(unittest.TestCase):
             self.assertIn("257x129 has %s face(s) past checkMesh's limits" % m.group(2), err)
             self.assertIn("(the files are written)", err)
             self.assertTrue(os.path.isfile(os.path.join(d, "closed0012-257x129.xyz")))
+            # the reports say it too: the text report's line as printed, the JSON's figures
+            line = re.search(r"^solver check .*\n", out, re.M).group(0)
+            with open(os.path.join(d, "closed0012-257x129.report.txt")) as f:
+                self.assertTrue(f.read().endswith(line))
+            with open(os.path.join(d, "closed0012-257x129.report.json")) as f:
+                check = json.load(f)["solver_check"]
+            self.assertEqual(check["faces_past"], int(m.group(2)))
+            self.assertEqual(check["worst"]["cell"], [int(m.group(3)), int(m.group(4))])
+            self.assertEqual("%.3g" % check["skewness_max"], m.group(1))  # printed to 3 digits
+            self.assertGreater(check["worst"]["skewness"], 4)
+            self.assertEqual((check["nonorthogonality_limit_deg"], check["skewness_limit"]), (70, 4))
             # the standard open section's blunt base: nothing past, exit 0
             code, out, err = run("airfoil", "0012", "--topology", "o", "--size", "129x65", "--first-cell", "1e-5",
                                  "--growth", "1.3", "-o", d)
             self.assertEqual(code, 0, out + err)
             self.assertRegex(out, r"solver check .*\(limit 4\)\n")
+            with open(os.path.join(d, "naca0012-129x65.report.json")) as f:
+                check = json.load(f)["solver_check"]
+            self.assertEqual((check["faces_past"], check["worst"]), (0, None))
+            self.assertLessEqual(check["skewness_max"], 4)
 
     def test_direction_and_start_point(self):
         """Reversed files (clockwise) and files starting at the leading edge give

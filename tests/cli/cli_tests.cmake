@@ -26,7 +26,7 @@ foreach(path IN LISTS EG2D_CLI_EXAMPLES)
   add_test(NAME cli_example_${name} COMMAND ${EG2D_CLI_PYTHON} ${EG2D_CLI_TEST} ${EG2D_CLI_ARGS} --example ${name} ${size})
 endforeach()
 
-foreach(group ErrorMessages Sides Controls CommandLine Demo Progress Patches RunFiles Airfoil Channel SharpTrailingEdge
+foreach(group ErrorMessages Sides Controls CommandLine Demo Progress Patches RunFiles Airfoil AirfoilOutputSet Channel SharpTrailingEdge
               InteriorLines)
   add_test(NAME cli_${group} COMMAND ${EG2D_CLI_PYTHON} ${EG2D_CLI_TEST} ${EG2D_CLI_ARGS} ${group})
 endforeach()

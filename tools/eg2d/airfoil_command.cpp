@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -20,6 +19,7 @@
 #include "front_end.hpp"
 #include "grid_views.hpp"
 #include "huge_pages.hpp"
+#include "output_set.hpp"
 #include "progress.hpp"
 #include "runner.hpp"
 #include "text_output.hpp"
@@ -71,7 +71,10 @@ const char *const airfoil_help =
     "                 four views, the domain, the airfoil (1.5 chords), its leading and\n"
     "                 trailing edge (0.05 chords), 800x600 pixels (the domain 800 on its\n"
     "                 longer side); default plot3d. A report (text and JSON) is always written\n"
-    "  -o DIR         the output directory (default .)\n"
+    "  -o DIR         the output directory (default .; created if missing). The family is\n"
+    "                 written as one set, all or nothing: formats, plugins (cgns) and paths\n"
+    "                 are checked before the solve, and a failed write, a full disk or\n"
+    "                 SIGINT/SIGTERM (exit 130/143) leaves DIR as it was\n"
     "Files: DIR/NAME-NIxNJ.EXT per level and format (the extensions of eg2d run: .xyz, .cgns,\n"
     "  .su2, _foam/, .vts, ...; plot3d3d -3d.xyz; the pictures -domain, -airfoil, -le and\n"
     "  -te .svg or .png), NAME the NACA code or the file's stem. A C-grid of one of the sizes of\n"
@@ -115,7 +118,7 @@ Args parse(int argc, char **argv) {
         if (arg.size() > 1 && arg[0] == '-') {
             if (k + 1 >= argc) usage(arg + " needs a value");
             const std::string v = argv[++k];
-            if (arg == "-o") a.out_dir = v;
+            if (arg == "-o") a.out_dir = output_dir("airfoil", v);
             else if (arg == "--topology") a.topology = v;
             else if (arg == "--method") a.method = v;
             else if (arg == "--te") a.te = v;
@@ -220,6 +223,42 @@ void trailing_edge_note(double gap, bool sharpen) {
                     "(--te sharpen closes it)\n", gap);
 }
 
+// Every path of the family, TMR comparisons included, for check_before_solving.
+std::vector<PlannedPath> planned_paths(const Args &a, const std::vector<Output> &outputs, const std::string &name) {
+    std::vector<PlannedPath> paths =
+        level_paths("airfoil", a.ni, a.nj, a.levels, name, outputs, {"domain", "airfoil", "le", "te"});
+    for (int level = 0; level < a.levels && a.topology == "c"; ++level) {
+        const int s = 1 << level;
+        if (tmr_level((a.ni - 1) / s + 1, (a.nj - 1) / s + 1) >= 0)
+            paths.push_back({level_base(name, a.ni, a.nj, level) + ".tmr.txt", -1, false, "airfoil"});
+    }
+    return paths;
+}
+
+// JSON has no infinity or NaN: a value that is not finite is null.
+std::string json_number(double v) { return std::isfinite(v) ? format_text("%.17g", v) : "null"; }
+
+// The face check as the reports' lines: the text report's line (also
+// printed) and the JSON report's member "solver_check".
+ReportLines face_check_lines(const FaceCheck &fv, double nonorth_limit, double skew_limit) {
+    ReportLines r;
+    r.text = format_text(
+        "solver check    faces as OpenFOAM's checkMesh measures them: non-orthogonality max %.3g (limit %g), "
+        "skewness max %.3g (limit %g)%s\n", fv.nonorth_max, nonorth_limit, fv.skew_max, skew_limit,
+        fv.past == 0 ? "" : format_text(": %d face(s) past, the worst of cell (%d, %d): non-orthogonality %.3g, "
+                                        "skewness %.3g", fv.past, fv.worst_i, fv.worst_j, fv.worst_nonorth,
+                                        fv.worst_skew).c_str());
+    r.json = "  \"solver_check\": {\"nonorthogonality_max_deg\": " + json_number(fv.nonorth_max) +
+             ", \"nonorthogonality_limit_deg\": " + json_number(nonorth_limit) +
+             ", \"skewness_max\": " + json_number(fv.skew_max) + ", \"skewness_limit\": " + json_number(skew_limit) +
+             ", \"faces_past\": " + std::to_string(fv.past) + ", \"worst\": " +
+             (fv.past == 0 ? std::string("null")
+                           : format_text("{\"cell\": [%d, %d], \"nonorthogonality_deg\": %s, \"skewness\": %s}",
+                                         fv.worst_i, fv.worst_j, json_number(fv.worst_nonorth).c_str(),
+                                         json_number(fv.worst_skew).c_str())) + "}";
+    return r;
+}
+
 }  // namespace
 
 int run_airfoil(int argc, char **argv, char **whole_argv) {
@@ -242,6 +281,7 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
     const std::string name = naca ? "naca" + a.source : stem(a.source);
     const bool cgrid = a.topology == "c";
     const int step = 1 << (a.levels - 1);
+    check_before_solving(a.out_dir, planned_paths(a, outputs, name));
 
     eg2d_grid *raw_grid = nullptr;
     if (eg2d_create(a.ni, a.nj, &raw_grid) != EG2D_OK)
@@ -309,6 +349,9 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
     }
     progress.finish();
     if (!a.quiet) print_run_notes(g);
+    if (Progress::interrupted())  // the march does not call the monitor: stopped here
+        throw Failure(Progress::interrupt_exit_code(),
+                      std::string("airfoil: interrupted by ") + Progress::interrupt_name() + ": no files written");
     check(g, status, a.method == "hyperbolic" ? "the march" : "the solve");
     const int body0 = cgrid ? wake : 0, body1 = cgrid ? a.ni - 1 - wake : a.ni - 1;
     const double growth = wall_growth(g, a.ni, a.nj, body0, body1);
@@ -317,18 +360,16 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
     // faces are checked against, as a solver would (face_check.hpp).
     constexpr double kNonorthLimit = 70.0, kSkewLimit = 4.0;
     std::string past_limits;
-    write_levels(g, cgrid ? EG2D_TOPO_C : EG2D_TOPO_O, a.ni, a.nj, a.levels, a.out_dir, name, outputs, {},
-                 [&](int level, eg2d_grid *lg, const std::string &base, int ci, int cj) {
-        write_views(lg, outputs, base, name + " " + std::to_string(ci) + "x" + std::to_string(cj), airfoil_views);
+    std::vector<std::string> heads, tails;  // each level's lines, printed once the set is in place (its report between)
+    OutputSet set(a.out_dir);
+    const std::vector<std::string> reports = write_levels(
+        set, g, cgrid ? EG2D_TOPO_C : EG2D_TOPO_O, a.ni, a.nj, a.levels, name, outputs, {},
+        [&](int level, eg2d_grid *lg, const std::string &base, int ci, int cj) {
+        write_views(set, lg, outputs, base, name + " " + std::to_string(ci) + "x" + std::to_string(cj), airfoil_views);
         std::vector<double> lx(static_cast<std::size_t>(ci) * cj), ly(lx.size());
         eg2d_get_coordinates(lg, lx.data(), ly.data());
         const FaceCheck fv = check_faces(ci, cj, lx, ly, !cgrid, wake / (1 << level), kNonorthLimit, kSkewLimit);
-        const std::string fv_line = format_text(
-            "solver check    faces as OpenFOAM's checkMesh measures them: non-orthogonality max %.3g (limit %g), "
-            "skewness max %.3g (limit %g)%s\n", fv.nonorth_max, kNonorthLimit, fv.skew_max, kSkewLimit,
-            fv.past == 0 ? "" : format_text(": %d face(s) past, the worst of cell (%d, %d): non-orthogonality %.3g, "
-                                            "skewness %.3g", fv.past, fv.worst_i, fv.worst_j, fv.worst_nonorth,
-                                            fv.worst_skew).c_str());
+        const ReportLines lines = face_check_lines(fv, kNonorthLimit, kSkewLimit);
         if (fv.past > 0 && past_limits.empty())
             past_limits = format_text("%dx%d has %d face(s) past checkMesh's limits (non-orthogonality %g, skewness %g), "
                                       "the worst of cell (%d, %d): non-orthogonality %.3g, skewness %.3g",
@@ -337,22 +378,15 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
         // A C-grid of one of the TMR family's sizes is compared with it.
         const int s = 1 << level;
         const std::string tmr = cgrid ? tmr_comparison(lg, ci, cj, wake / s, a.farfield, a.levels - 1 - level) : std::string();
-        if (!tmr.empty()) {
-            std::ofstream file(base + ".tmr.txt");
-            file << tmr;
-            if (!file) throw Failure(EXIT_IO, "airfoil: cannot write " + base + ".tmr.txt");
-        }
-        if (!a.quiet) {
-            std::printf("level %d: %dx%d -> %s.*\n", level, ci, cj, base.c_str());
-            if (level == 0) {
-                std::ifstream report(base + ".report.txt");
-                std::printf("%s%s%s", std::string(std::istreambuf_iterator<char>(report), {}).c_str(), fv_line.c_str(),
-                            tmr.c_str());
-            } else if (fv.past > 0) {
-                std::printf("%s", fv_line.c_str());
-            }
-        }
+        if (!tmr.empty()) set.add_text(base + ".tmr.txt", tmr);
+        heads.push_back(format_text("level %d: %dx%d -> %s/%s.*\n", level, ci, cj, a.out_dir.c_str(), base.c_str()));
+        tails.push_back(level == 0 ? tmr : fv.past > 0 ? lines.text : std::string());
+        return lines;
     });
+    set.commit();
+    if (!a.quiet)  // the finest level's report in full, with its face check
+        for (std::size_t k = 0; k < heads.size(); ++k)
+            std::printf("%s%s%s", heads[k].c_str(), k == 0 ? reports[0].c_str() : "", tails[k].c_str());
     if (growth > a.growth) {
         std::fprintf(stderr,
                      "eg2d: airfoil: the wall layer grows by up to %.3f over its first 30 cells, more than --growth %g: "

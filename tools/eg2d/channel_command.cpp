@@ -61,7 +61,8 @@ const char *const channel_help =
     "                 openfoam: a case directory, vts, gmv, matlab, plot3d3d, and the\n"
     "                 pictures svg and png: the domain and the lower wall's inlet corner);\n"
     "                 default plot3d. A report (text and JSON) is always written\n"
-    "  -o DIR         the output directory (default .)\n"
+    "  -o DIR         the output directory (default .; created if missing), written as one\n"
+    "                 set, all or nothing, as eg2d airfoil's\n"
     "Patches: lower_wall and upper_wall (walls; with --symmetry-upper the upper is\n"
     "  symmetry), inlet (inflow) and outlet (outflow), in every format that has\n"
     "  boundary conditions (SU2 markers, the OpenFOAM boundary file, CGNS BCs).\n"
@@ -106,7 +107,7 @@ Args parse(int argc, char **argv) {
         if (arg.size() < 2 || arg[0] != '-') usage("unexpected argument \"" + arg + "\" (the walls are --lower and --upper)");
         if (k + 1 >= argc) usage(arg + " needs a value");
         const std::string v = argv[++k];
-        if (arg == "-o") a.out_dir = v;
+        if (arg == "-o") a.out_dir = output_dir("channel", v);
         else if (arg == "--lower") a.walls.lower = v;
         else if (arg == "--upper") a.walls.upper = v;
         else if (arg == "--centreline" || arg == "--centerline") a.walls.centreline = v;
@@ -172,6 +173,7 @@ int run_channel(int argc, char **argv, char **whole_argv) {
     const double length = a.length > 0 ? a.length : a.walls.centreline.empty() ? polyline_length(lx, ly)
                                                                               : centreline_length(walls);
     const double h = first_cell("channel", a.first, a.yplus, a.reynolds, length);
+    check_before_solving(a.out_dir, level_paths("channel", a.ni, a.nj, a.levels, "channel", outputs, {"domain", "inlet-corner"}));
 
     eg2d_grid *raw = nullptr;
     if (eg2d_create(a.ni, a.nj, &raw) != EG2D_OK)
@@ -210,14 +212,23 @@ int run_channel(int argc, char **argv, char **whole_argv) {
     const int status = eg2d_solve(g);
     progress.finish();
     if (!a.quiet) print_run_notes(g);
+    if (Progress::interrupted())
+        throw Failure(Progress::interrupt_exit_code(),
+                      std::string("channel: interrupted by ") + Progress::interrupt_name() + ": no files written");
     check(g, status, "channel: the solve");
 
-    write_levels(g, EG2D_TOPO_SINGLE, a.ni, a.nj, a.levels, a.out_dir, "channel", outputs,
-                 [&](int, eg2d_grid *lg, const std::string &, int ci, int cj) { set_patches(lg, ci, cj, a.symmetry); },
+    OutputSet set(a.out_dir);
+    std::string written;  // printed once the set is in place
+    write_levels(set, g, EG2D_TOPO_SINGLE, a.ni, a.nj, a.levels, "channel", outputs,
+                 [&](int, eg2d_grid *lg, int ci, int cj) { set_patches(lg, ci, cj, a.symmetry); },
                  [&](int level, eg2d_grid *lg, const std::string &base, int ci, int cj) {
-        write_views(lg, outputs, base, "channel " + std::to_string(ci) + "x" + std::to_string(cj), channel_views);
-        if (!a.quiet) std::printf("level %d: %dx%d -> %s.*\n", level, ci, cj, base.c_str());
+        write_views(set, lg, outputs, base, "channel " + std::to_string(ci) + "x" + std::to_string(cj), channel_views);
+        written += "level " + std::to_string(level) + ": " + std::to_string(ci) + "x" + std::to_string(cj) + " -> " +
+                   a.out_dir + "/" + base + ".*\n";
+        return ReportLines();
     });
+    set.commit();
+    if (!a.quiet) std::printf("%s", written.c_str());
     // The layers' figures are printed whatever --quiet says: they are the result.
     bool short_layer = print_wall_layer(g, EG2D_SIDE_JMIN, "lower_wall", h, a.growth);
     if (!a.symmetry) short_layer = print_wall_layer(g, EG2D_SIDE_JMAX, "upper_wall", h, a.growth) || short_layer;

@@ -15,7 +15,7 @@ enum ExitCode {
     EXIT_IO = 8,             // an output file could not be written
     EXIT_UNSUPPORTED = 9,    // the case asks for a feature not available in this build
     EXIT_MEMORY = 10,        // out of memory: the grid is too large for this machine
-    EXIT_INTERRUPTED = 130,  // Ctrl-C (SIGINT): stopped cleanly, nothing written
+    EXIT_INTERRUPTED = 130,  // Ctrl-C (SIGINT): stopped cleanly, nothing written (SIGTERM: 143, Progress)
 };
 
 // The exit code for a library status (EG2D_ERR_*).

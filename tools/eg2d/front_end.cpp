@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "failure.hpp"
@@ -22,6 +24,13 @@ bool help_asked(int argc, char **argv, const char *help) {
             return true;
         }
     return false;
+}
+
+std::string output_dir(const std::string &command, const std::string &value) {
+    if (value.empty())
+        front_end_usage(command, "-o \"\": an empty output directory name (it would be the filesystem root; -o . is "
+                                 "the current directory)");
+    return value;
 }
 
 void front_end_usage(const std::string &command, const std::string &message) {
@@ -99,7 +108,7 @@ std::vector<Output> outputs_of(const std::string &command, const std::string &li
             front_end_usage(command, "--format: unknown format \"" + name + "\" (plot3d, plot3d3d, plot3d-ascii, cgns, su2, "
                                      "openfoam, vts, svg, png, gmv, matlab)");
         if (!f->available) throw Failure(EXIT_UNSUPPORTED, command + ": --format " + name + " is not in this build");
-        out.push_back({name, f->extension, f->id});
+        out.push_back({name, f->extension, f->id, false, f->directory});
     }
     if (out.empty()) front_end_usage(command, "--format needs at least one format");
     return out;
@@ -120,17 +129,62 @@ void print_run_notes(eg2d_grid *g) {
     }
 }
 
-void write_levels(eg2d_grid *g, int topology, int ni, int nj, int levels, const std::string &dir,
-                  const std::string &name, const std::vector<Output> &outputs, const LevelHook &setup,
-                  const LevelHook &after_write) {
-    make_directory(dir);
+std::string level_base(const std::string &name, int ni, int nj, int level) {
+    const int s = 1 << level;
+    return name + "-" + std::to_string((ni - 1) / s + 1) + "x" + std::to_string((nj - 1) / s + 1);
+}
+
+namespace {
+
+// The library's report formats, written with every level.
+std::vector<const Feature *> report_formats() {
+    std::vector<const Feature *> reports;
+    for (const Feature &f : formats())
+        if (f.id == EG2D_FORMAT_REPORT || f.id == EG2D_FORMAT_REPORT_JSON) reports.push_back(&f);
+    return reports;
+}
+
+// The library's report of g with `lines` added, made in the stage at `scratch`.
+std::string report_text(const eg2d_grid *g, int format, const std::string &scratch, const ReportLines &lines) {
+    check(const_cast<eg2d_grid *>(g), eg2d_write(g, scratch.c_str(), format), scratch);
+    std::ifstream in(scratch, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::remove(scratch.c_str());
+    if (format == EG2D_FORMAT_REPORT) return text + lines.text;
+    const std::size_t close = text.find_last_of('}');  // the object's end: the members go before it
+    if (lines.json.empty() || close == std::string::npos || close == 0) return text;
+    const std::size_t end = text.find_last_not_of(" \n", close - 1) + 1;  // after the last member
+    return text.substr(0, end) + ",\n" + lines.json + text.substr(end);
+}
+
+}  // namespace
+
+std::vector<PlannedPath> level_paths(const std::string &command, int ni, int nj, int levels, const std::string &name,
+                                     const std::vector<Output> &outputs, const std::vector<std::string> &view_names) {
+    std::vector<PlannedPath> paths;
+    for (int level = 0; level < levels; ++level) {
+        const std::string base = level_base(name, ni, nj, level);
+        for (const Output &o : outputs) {
+            if (!o.views) paths.push_back({base + o.extension, o.id, o.directory, command + ": --format " + o.name});
+            else
+                for (const std::string &v : view_names) paths.push_back({base + "-" + v + o.extension, -1, false, command});
+        }
+        for (const Feature *f : report_formats()) paths.push_back({base + f->extension, f->id, false, command + ": the report"});
+    }
+    return paths;
+}
+
+std::vector<std::string> write_levels(OutputSet &set, eg2d_grid *g, int topology, int ni, int nj, int levels,
+                                      const std::string &name, const std::vector<Output> &outputs,
+                                      const LevelSetup &setup, const LevelHook &each_level) {
     double span = 1.0;
     eg2d_get_parameter(g, EG2D_PARAM_SPAN, &span);
+    std::vector<std::string> reports;
     for (int level = 0; level < levels; ++level) {
         const int s = 1 << level, ci = (ni - 1) / s + 1, cj = (nj - 1) / s + 1;
-        const std::string base = dir + "/" + name + "-" + std::to_string(ci) + "x" + std::to_string(cj);
-        GridPtr coarse;
-        eg2d_grid *lg = g;
+        const std::string base = level_base(name, ni, nj, level);
+        // A path written in place is written again at the commit: its grid lives until then.
+        std::shared_ptr<eg2d_grid> lg(g, [](eg2d_grid *) {});
         if (level > 0) {  // every s-th node of the finest
             std::vector<double> x(static_cast<std::size_t>(ni) * nj), y(x.size()), cx, cy;
             eg2d_get_coordinates(g, x.data(), y.data());
@@ -142,23 +196,28 @@ void write_levels(eg2d_grid *g, int topology, int ni, int nj, int levels, const 
             eg2d_grid *raw_coarse = nullptr;
             if (eg2d_create(ci, cj, &raw_coarse) != EG2D_OK)
                 throw Failure(EXIT_MEMORY, "cannot make level " + std::to_string(level) + ": " + eg2d_last_error(nullptr));
-            coarse.reset(raw_coarse);
-            lg = coarse.get();
-            check(lg, eg2d_set_topology(lg, topology), "level topology");
-            check(lg, eg2d_set_coordinates(lg, cx.data(), cy.data()), "level " + std::to_string(level));
-            check(lg, eg2d_set_parameter(lg, EG2D_PARAM_SPAN, span), "span");
-            if (setup) setup(level, lg, base, ci, cj);
+            lg.reset(raw_coarse, GridDeleter());
+            check(lg.get(), eg2d_set_topology(lg.get(), topology), "level topology");
+            check(lg.get(), eg2d_set_coordinates(lg.get(), cx.data(), cy.data()), "level " + std::to_string(level));
+            check(lg.get(), eg2d_set_parameter(lg.get(), EG2D_PARAM_SPAN, span), "span");
+            if (setup) setup(level, lg.get(), ci, cj);
         }
         for (const Output &o : outputs)
-            if (!o.views) check(lg, eg2d_write(lg, (base + o.extension).c_str(), o.id), base + o.extension);
-        for (const Feature &f : formats())  // the reports, always
-            if (f.id == EG2D_FORMAT_REPORT || f.id == EG2D_FORMAT_REPORT_JSON)
-                check(lg, eg2d_write(lg, (base + f.extension).c_str(), f.id), base + f.extension);
-        if (after_write) after_write(level, lg, base, ci, cj);
+            if (!o.views)
+                set.add(base + o.extension, o.directory, [lg, o, base](const std::string &path, bool) {
+                    check(lg.get(), eg2d_write(lg.get(), path.c_str(), o.id), base + o.extension);
+                });
+        const ReportLines lines = each_level ? each_level(level, lg.get(), base, ci, cj) : ReportLines();
+        for (const Feature *f : report_formats()) {  // the reports, always
+            const std::string text = report_text(lg.get(), f->id, set.staged(base + f->extension), lines);
+            set.add_text(base + f->extension, text);
+            if (f->id == EG2D_FORMAT_REPORT) reports.push_back(text);
+        }
     }
+    return reports;
 }
 
-void write_views(const eg2d_grid *g, const std::vector<Output> &outputs, const std::string &base,
+void write_views(OutputSet &set, const eg2d_grid *g, const std::vector<Output> &outputs, const std::string &base,
                  const std::string &title, const std::function<std::vector<View>(const GridLines &)> &views) {
     bool any = false;
     for (const Output &o : outputs) any = any || o.views;
@@ -168,9 +227,8 @@ void write_views(const eg2d_grid *g, const std::vector<Output> &outputs, const s
         const std::vector<Polyline> shown = view_lines(lines, v);
         for (const Output &o : outputs) {
             if (!o.views) continue;
-            const std::string path = base + "-" + v.name + o.extension;
-            write_text_in_place(path, o.name == "png" ? view_png(v, shown)
-                                                      : view_svg(v, shown, "eg2d " + title + ": " + v.name));
+            set.add_text(base + "-" + v.name + o.extension,
+                         o.name == "png" ? view_png(v, shown) : view_svg(v, shown, "eg2d " + title + ": " + v.name));
         }
     }
 }

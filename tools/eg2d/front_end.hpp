@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "eg2d.h"
+#include "output_set.hpp"
 #include "view_lines.hpp"
 
 namespace eg2dtool {
@@ -25,10 +26,14 @@ struct Output {
     std::string name, extension;
     int id;
     bool views = false;
+    bool directory = false;  // a case directory (openfoam)
 };
 
 // Whether --help or -h is among the arguments; then prints `help` on stdout.
 bool help_asked(int argc, char **argv, const char *help);
+
+// -o DIR's value; an empty one is refused (it would be taken as the filesystem root).
+std::string output_dir(const std::string &command, const std::string &value);
 
 // Failure(EXIT_USAGE) "COMMAND: MESSAGE (eg2d COMMAND --help shows the usage)".
 [[noreturn]] void front_end_usage(const std::string &command, const std::string &message);
@@ -61,21 +66,38 @@ void check(eg2d_grid *g, int status, const std::string &what);
 // The run's events (eg2d_get_run_event), "note (iteration N): TEXT" each.
 void print_run_notes(eg2d_grid *g);
 
-// What a level is written with besides the grid's formats and reports:
-// level 0 is the finest; base is DIR/NAME-CIxCJ.
-using LevelHook = std::function<void(int level, eg2d_grid *level_grid, const std::string &base, int ci, int cj)>;
+// A level's files are named BASE.EXT, BASE = NAME-CIxCJ (level 0 the finest).
+std::string level_base(const std::string &name, int ni, int nj, int level);
 
-// The nested family: level k every 2^k-th node of g (topology as g's), its
-// formats (not the views) and the text and JSON reports written to
-// DIR/NAME-CIxCJ.EXT; setup (may be empty) is called on each coarser level's
-// grid before it is written (its patches), then after_write on every level.
-void write_levels(eg2d_grid *g, int topology, int ni, int nj, int levels, const std::string &dir,
-                  const std::string &name, const std::vector<Output> &outputs, const LevelHook &setup,
-                  const LevelHook &after_write);
+// The paths of the nested family, for check_before_solving: each level's
+// formats, its reports and, with svg or png among the outputs, its views
+// (BASE-VIEW.EXT for each of view_names).
+std::vector<PlannedPath> level_paths(const std::string &command, int ni, int nj, int levels, const std::string &name,
+                                     const std::vector<Output> &outputs, const std::vector<std::string> &view_names);
 
-// The pictures (svg, png among outputs) of one level: BASE-VIEW.svg/.png for
+// Lines a level's reports get besides the library's: text appended to
+// BASE.report.txt, and JSON members ("  \"key\": value", comma-separated)
+// added to the object of BASE.report.json.
+struct ReportLines {
+    std::string text, json;
+};
+
+// setup: called on each coarser level's grid before anything of it is
+// written (its patches). each_level: adds what else a level has to the set
+// (its views, ...) and returns its reports' lines.
+using LevelSetup = std::function<void(int level, eg2d_grid *level_grid, int ci, int cj)>;
+using LevelHook = std::function<ReportLines(int level, eg2d_grid *level_grid, const std::string &base, int ci, int cj)>;
+
+// The nested family into `set` (committed by the caller): level k every
+// 2^k-th node of g (topology as g's), its formats (not the views) and the
+// text and JSON reports; setup may be empty. Returns each level's text report.
+std::vector<std::string> write_levels(OutputSet &set, eg2d_grid *g, int topology, int ni, int nj, int levels,
+                                      const std::string &name, const std::vector<Output> &outputs,
+                                      const LevelSetup &setup, const LevelHook &each_level);
+
+// The pictures (svg, png among outputs) of one level into `set`: BASE-VIEW.svg/.png for
 // each of views(the grid's lines), titled "eg2d TITLE: VIEW".
-void write_views(const eg2d_grid *g, const std::vector<Output> &outputs, const std::string &base,
+void write_views(OutputSet &set, const eg2d_grid *g, const std::vector<Output> &outputs, const std::string &base,
                  const std::string &title, const std::function<std::vector<View>(const GridLines &)> &views);
 
 }  // namespace eg2dtool

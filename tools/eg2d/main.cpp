@@ -70,7 +70,7 @@ const char *help_text =
     "  8    a file could not be read or written\n"
     "  9    the case asks for a feature not available in this build\n"
     "  10   out of memory: the grid is too large for this machine\n"
-    "  130  interrupted by Ctrl-C\n"
+    "  130  interrupted by Ctrl-C (SIGINT), 143 by SIGTERM: nothing written\n"
     "\n"
     "example:\n"
     "  eg2d demo -o demo-out                 # swan.svg (and the grid) in demo-out/\n"

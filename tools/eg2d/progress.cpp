@@ -6,25 +6,33 @@
 namespace eg2dtool {
 
 namespace {
-volatile std::sig_atomic_t sigint_seen = 0;
-struct sigaction previous_action;
+volatile std::sig_atomic_t signal_seen = 0;  // the signal's number
+struct sigaction previous_int, previous_term;
 
-extern "C" void on_sigint(int) { sigint_seen = 1; }
+extern "C" void on_signal(int number) { signal_seen = number; }
 }  // namespace
 
 Progress::Progress(bool live, bool quiet) : live_(live), quiet_(quiet) {
-    sigint_seen = 0;
+    signal_seen = 0;
     struct sigaction a = {};
-    a.sa_handler = on_sigint;
+    a.sa_handler = on_signal;
     sigemptyset(&a.sa_mask);
-    a.sa_flags = SA_RESETHAND;  // a second Ctrl-C ends the program the usual way
-    sigaction(SIGINT, &a, &previous_action);
+    a.sa_flags = SA_RESETHAND;  // a second Ctrl-C (or SIGTERM) ends the program the usual way
+    sigaction(SIGINT, &a, &previous_int);
+    sigaction(SIGTERM, &a, &previous_term);
     last_time_ = std::chrono::steady_clock::now();
 }
 
-Progress::~Progress() { sigaction(SIGINT, &previous_action, nullptr); }
+Progress::~Progress() {
+    sigaction(SIGINT, &previous_int, nullptr);
+    sigaction(SIGTERM, &previous_term, nullptr);
+}
 
-bool Progress::interrupted() { return sigint_seen != 0; }
+bool Progress::interrupted() { return signal_seen != 0; }
+
+int Progress::interrupt_exit_code() { return 128 + (signal_seen ? static_cast<int>(signal_seen) : SIGINT); }
+
+const char *Progress::interrupt_name() { return signal_seen == SIGTERM ? "SIGTERM" : "SIGINT"; }
 
 void Progress::print(int iteration, double residual) {
     char rate[32] = "-";  // unknown until two lines apart
@@ -39,7 +47,7 @@ void Progress::print(int iteration, double residual) {
 
 int Progress::monitor(void *user, int iteration, double residual) {
     Progress &p = *static_cast<Progress *>(user);
-    if (sigint_seen) return 1;
+    if (signal_seen) return 1;
     if (p.quiet_) return 0;
     const auto now = std::chrono::steady_clock::now();
     const double since = std::chrono::duration<double>(now - p.last_time_).count();

@@ -1,5 +1,7 @@
 // The progress line of a run (iteration, residual, rate) through eg2d_set_monitor,
-// and Ctrl-C: SIGINT makes the monitor return nonzero, so the run stops cleanly.
+// and the signals that stop a run: SIGINT (Ctrl-C) and SIGTERM make the
+// monitor return nonzero, so the run stops cleanly, and an output set
+// (output_set.hpp) stops before its next file and removes its stage.
 #pragma once
 
 #include <chrono>
@@ -10,9 +12,9 @@ namespace eg2dtool {
 class Progress {
 public:
     // live: rewrite one line in place (a terminal); else print plain lines, one a second.
-    // quiet: print nothing (SIGINT still stops the run).
+    // quiet: print nothing (the signals still stop the run).
     Progress(bool live, bool quiet);
-    ~Progress();  // restores the previous SIGINT handler
+    ~Progress();  // restores the previous SIGINT and SIGTERM handlers
     Progress(const Progress &) = delete;
     Progress &operator=(const Progress &) = delete;
 
@@ -20,8 +22,12 @@ public:
     static int monitor(void *user, int iteration, double residual);
     // Ends the live line (before any other output).
     void finish();
-    // True once SIGINT arrived.
+    // True once SIGINT or SIGTERM arrived.
     static bool interrupted();
+    // The exit code of the signal that arrived, 128 + its number (130 SIGINT, 143 SIGTERM).
+    static int interrupt_exit_code();
+    // "SIGINT" or "SIGTERM".
+    static const char *interrupt_name();
 
 private:
     void print(int iteration, double residual);

@@ -3,24 +3,18 @@
 
 #include <eg2d.h>
 
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <filesystem>
 #include <memory>
 
 #include "failure.hpp"
 #include "features.hpp"
 #include "grid_views.hpp"
 #include "piece_curve.hpp"
+#include "output_set.hpp"
 #include "progress.hpp"
 #include "run_files.hpp"
-#include "text_output.hpp"
 #include "view_picture.hpp"
 
 namespace eg2dtool {
@@ -39,17 +33,6 @@ int exit_code_for_status(int status) {
     case EG2D_ERR_INTERRUPTED: return EXIT_INTERRUPTED;
     case EG2D_ERR_MEMORY: return EXIT_MEMORY;
     default: return EXIT_INTERNAL;
-    }
-}
-
-void make_directory(const std::string &dir) {
-    std::string partial;
-    for (std::size_t k = 0; k <= dir.size(); ++k) {
-        if (k == dir.size() || dir[k] == '/') {
-            if (!partial.empty() && mkdir(partial.c_str(), 0777) != 0 && errno != EEXIST)
-                throw Failure(EXIT_IO, partial + ": cannot create the output directory: " + std::strerror(errno));
-        }
-        if (k < dir.size()) partial += dir[k];
     }
 }
 
@@ -75,69 +58,12 @@ const char *name_of(const std::vector<Feature> &table, int id) {
     return "?";
 }
 
-// Where an output path already is something other than a plain file, the
-// library writes it by its own rules (eg2d.h, eg2d_write): a symbolic link's
-// target is replaced and the link kept, a file with other hard links is
-// rewritten in place, a FIFO or character device is streamed into. A rename
-// from the stage would replace any of them.
-// An OpenFOAM case that exists (a directory, or a link to one) is updated by
-// the library in place too: its mesh files are replaced, each all-or-nothing,
-// and the case's own files (system/, 0/) are kept, which a rename would lose.
-bool written_in_place(const OutputFile &out, const struct stat &st) {
-    return out.directory || S_ISLNK(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode) ||
-           (S_ISREG(st.st_mode) && st.st_nlink > 1);
-}
-
-// An output path that is a directory, a socket or a block device is never
-// replaced: refused before solving. A directory format's path (an OpenFOAM
-// case) must be a directory if it exists.
-void check_output_paths(const Case &c, const RunOptions &o) {
-    for (const auto &out : c.outputs) {
-        const std::string path = (o.out_dir.empty() ? std::string(".") : o.out_dir) + "/" + out.name;
-        struct stat st;
-        if (stat(path.c_str(), &st) != 0) continue;  // new (or a dangling link, whose target is made)
-        if (out.directory) {
-            if (!S_ISDIR(st.st_mode))
-                throw Failure(EXIT_IO, path + ": not a directory, so no case can be written there (checked before solving)");
-            continue;
-        }
-        if (S_ISDIR(st.st_mode) || S_ISSOCK(st.st_mode) || S_ISBLK(st.st_mode))
-            throw Failure(EXIT_IO, path + ": " + (S_ISDIR(st.st_mode) ? "a directory" : S_ISSOCK(st.st_mode) ? "a socket" : "a block device") +
-                                       ", not replaced by an output file (checked before solving)");
-    }
-}
-
-// Everything that can be checked before the solve is: every requested
-// format's writer can write here (the CGNS plugin may be absent: a probe
-// grid written to /dev/null says so in microseconds, not after the solve),
-// and the output directory can be created and written.
+// Everything that can be checked before the solve is (output_set.hpp):
+// the formats' writers, the output directory and what is at each path.
 void preflight(const Case &c, const RunOptions &o) {
-    eg2d_grid *probe = nullptr;
-    if (eg2d_create(3, 3, &probe) == EG2D_OK) {
-        const double x[9] = {0, 0.5, 1, 0, 0.5, 1, 0, 0.5, 1}, y[9] = {0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1};
-        eg2d_set_coordinates(probe, x, y);
-        for (const auto &out : c.outputs)
-            if (!out.tool && eg2d_write(probe, "/dev/null", out.format) == EG2D_ERR_UNSUPPORTED) {
-                const std::string why = eg2d_last_error(probe);
-                eg2d_destroy(probe);
-                throw Failure(EXIT_UNSUPPORTED, out.where.str() + ": " + why + " (checked before solving; no files written)");
-            }
-        eg2d_destroy(probe);
-    }
-    // The directory is made only after the solve (a failed run leaves none):
-    // here its nearest existing ancestor must be a writable directory.
-    std::string d = o.out_dir.empty() ? "." : o.out_dir;
-    struct stat st;
-    while (stat(d.c_str(), &st) != 0) {
-        const std::size_t slash = d.find_last_of('/');
-        d = slash == std::string::npos ? "." : slash == 0 ? "/" : d.substr(0, slash);
-    }
-    if (!S_ISDIR(st.st_mode))
-        throw Failure(EXIT_IO, d + ": is not a directory, so " + o.out_dir + " cannot be made (checked before solving)");
-    if (access(d.c_str(), W_OK) != 0)
-        throw Failure(EXIT_IO, d + ": not writable, so " + o.out_dir + " cannot be written (checked before solving): " +
-                                   std::strerror(errno));
-    check_output_paths(c, o);
+    std::vector<PlannedPath> paths;
+    for (const auto &out : c.outputs) paths.push_back({out.name, out.tool ? -1 : out.format, out.directory, out.where.str()});
+    check_before_solving(o.out_dir, paths);
 }
 
 void apply_controls(eg2d_grid *g, const Case &c) {
@@ -251,66 +177,20 @@ std::vector<std::string> tool_texts(const eg2d_grid *g, const Case &c, const std
     return texts;
 }
 
-// The output set is written as one unit: every file first into a staging
-// directory beside them, and only when all are written are they renamed
-// into place (a full disk or Ctrl-C part-way leaves the old set as it was,
-// never a new .xyz beside an old .vts). A file renamed over an existing
-// one gets that file's permission bits (and owner, where permitted).
-// Paths that are links, hard-linked files or devices, and existing case
-// directories, are written by the library first, each atomically where the
-// path allows (written_in_place; streams before files), then the renames.
-// The command's own files (out.tool: the history, the control functions)
-// are made as text before anything is written and follow the same rules
-// (text_output.hpp).
+// The output set is written as one unit (output_set.hpp). The command's own
+// files (out.tool: the history, the control functions) are made as text
+// before anything is written.
 void write_outputs(eg2d_grid *g, const Case &c, const RunOptions &o, const std::vector<std::string> &texts) {
-    make_directory(o.out_dir);
     if (c.svg_quality >= 0) check(g, eg2d_set_parameter(g, EG2D_PARAM_SVG_QUALITY, c.svg_quality), c.svg_quality_at);
-    std::string stage = o.out_dir + "/.eg2d-set-XXXXXX";
-    if (!mkdtemp(&stage[0])) throw Failure(EXIT_IO, o.out_dir + ": cannot stage the output files: " + std::strerror(errno));
-    struct Cleanup {  // what is left of the stage (nothing after the renames): files, case directories
-        const std::string &dir;
-        const Case &c;
-        ~Cleanup() {
-            std::error_code ignored;
-            for (const auto &out : c.outputs) std::filesystem::remove_all(dir + "/" + out.name, ignored);
-            rmdir(dir.c_str());
-        }
-    } cleanup{stage, c};
+    OutputSet set(o.out_dir);
     for (std::size_t k = 0; k < c.outputs.size(); ++k) {
         const auto &out = c.outputs[k];
-        if (Progress::interrupted()) throw Failure(EXIT_INTERRUPTED, "interrupted: no files written");
-        if (out.tool) write_text_file(stage + "/" + out.name, texts[k]);
-        else check(g, eg2d_write(g, (stage + "/" + out.name).c_str(), out.format), out.where);
+        if (out.tool) set.add_text(out.name, texts[k]);
+        else
+            set.add(out.name, out.directory,
+                    [g, &out](const std::string &path, bool) { check(g, eg2d_write(g, path.c_str(), out.format), out.where); });
     }
-    if (Progress::interrupted()) throw Failure(EXIT_INTERRUPTED, "interrupted: no files written");
-    // Streams (a FIFO, a character device, or a link to one) first: a FIFO
-    // with no reader, the likeliest failure here, then leaves every file as it was.
-    for (const bool streams : {true, false})
-        for (std::size_t k = 0; k < c.outputs.size(); ++k) {
-            const auto &out = c.outputs[k];
-            const std::string path = o.out_dir + "/" + out.name;
-            struct stat st, end;
-            if (lstat(path.c_str(), &st) != 0 || !written_in_place(out, st)) continue;
-            const bool stream = stat(path.c_str(), &end) == 0 && (S_ISFIFO(end.st_mode) || S_ISCHR(end.st_mode));
-            if (stream != streams) continue;
-            if (out.tool) write_text_in_place(path, texts[k]);
-            else check(g, eg2d_write(g, path.c_str(), out.format), out.where);
-            std::printf("wrote %s\n", path.c_str());
-        }
-    for (const auto &out : c.outputs) {
-        const std::string path = o.out_dir + "/" + out.name, staged = stage + "/" + out.name;
-        struct stat st;
-        if (lstat(path.c_str(), &st) == 0) {
-            if (written_in_place(out, st)) continue;
-            if (S_ISREG(st.st_mode)) {
-                chmod(staged.c_str(), st.st_mode & 07777);
-                if (chown(staged.c_str(), st.st_uid, st.st_gid) != 0) {}  // kept where the process may
-            }
-        }
-        if (std::rename(staged.c_str(), path.c_str()) != 0)
-            throw Failure(EXIT_IO, path + ": cannot move the written file into place: " + std::strerror(errno));
-        std::printf("wrote %s\n", path.c_str());
-    }
+    for (const std::string &path : set.commit()) std::printf("wrote %s\n", path.c_str());
 }
 
 }  // namespace
@@ -355,6 +235,7 @@ static int write_start_grid(eg2d_grid *g, const Case &c, const RunOptions &o) {
                                        " folded cells (solve = false; no files written)");
     double tolerance = 0;  // the history picture's dashed line (the history itself is empty)
     eg2d_get_parameter(g, EG2D_PARAM_TOLERANCE, &tolerance);
+    Progress signals(false, true);  // SIGINT and SIGTERM stop the set, which removes its stage
     write_outputs(g, c, o, tool_texts(g, c, {}, tolerance));
     return EXIT_OK;
 }
@@ -415,8 +296,9 @@ int run_case(const Case &c, const RunOptions &o) {
     eg2d_get_iterations(g, &iterations);
     eg2d_get_residual(g, &residual);
     if (status == EG2D_ERR_INTERRUPTED) {
-        std::printf("interrupted at iteration %d, residual %.3e: no files written\n", iterations, residual);
-        return EXIT_INTERRUPTED;
+        std::printf("interrupted by %s at iteration %d, residual %.3e: no files written\n", Progress::interrupt_name(),
+                    iterations, residual);
+        return Progress::interrupt_exit_code();
     }
     if (status == EG2D_OK)
         std::printf("converged in %d iterations, residual %.3e, %.2f s\n", iterations, residual, seconds);

@@ -18,7 +18,4 @@ struct RunOptions {
 // message for stderr. Writes output files only after a successful run.
 int run_case(const Case &c, const RunOptions &options);
 
-// Makes dir and its parents where missing (Failure EXIT_IO when it cannot).
-void make_directory(const std::string &dir);
-
 }  // namespace eg2dtool
