@@ -167,6 +167,11 @@ EG2D_API void eg2d_destroy(eg2d_grid *grid);
 #define EG2D_TOPO_C      2
 EG2D_API int eg2d_set_topology(eg2d_grid *grid, int topology);
 EG2D_API int eg2d_get_topology(const eg2d_grid *grid, int *topology);
+/* C-grid: w, the trailing edge's index on JMIN read from the side as set
+ * (above): node (i, 0) is node (ni-1-i, 0) for i = 0..w, the cut's nodes
+ * a side (EG2D_PARAM_AIRFOIL_WAKE_NODES's count after eg2d_set_airfoil).
+ * 0 while JMIN is not set and on the other topologies. */
+EG2D_API int eg2d_get_cut(const eg2d_grid *grid, int *wake);
 
 /*=====================================================================
  * Boundary
@@ -1311,7 +1316,9 @@ EG2D_API int eg2d_get_controls(const eg2d_grid *grid, double *P, double *Q);
 #define EG2D_PARAM_AIRFOIL_WAKE_NODES    423  /* C-grid: cut nodes a side, the trailing edge's
                                                  index i; 0 (default): about 0.21 (ni-1), a
                                                  multiple of the largest power of two up to 64
-                                                 that divides ni-1 */
+                                                 that divides (ni-1)/2 and keeps it within
+                                                 0.02 (ni-1) of that (385: 80, 1793: 384);
+                                                 eg2d_get_cut gives the count in use */
 #define EG2D_PARAM_AIRFOIL_TRAILING_EDGE 424  /* an open trailing edge: EG2D_AIRFOIL_TE_BLUNT
                                                  (default) or EG2D_AIRFOIL_TE_SHARPEN */
 #define EG2D_AIRFOIL_TE_BLUNT   0  /* kept as a blunt base: straight, part of the wall */

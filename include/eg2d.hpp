@@ -265,6 +265,12 @@ public:
         check(::eg2d_get_topology(g_, &t));
         return t;
     }
+    /* C-grid: the trailing edge's index on JMIN (eg2d_get_cut). */
+    int get_cut() const {
+        int w = 0;
+        check(::eg2d_get_cut(g_, &w));
+        return w;
+    }
 
     /* One side: ni points for JMIN/JMAX, nj for IMIN/IMAX. */
     void set_side(int side, const std::vector<double> &x, const std::vector<double> &y) {

@@ -51,6 +51,7 @@ module eg2d
     procedure :: last_error => grid_last_error
     procedure :: set_topology => grid_set_topology
     procedure :: get_topology => grid_get_topology
+    procedure :: get_cut => grid_get_cut
     procedure :: set_side => grid_set_side
     procedure :: set_boundary => grid_set_boundary
     procedure :: set_interior_line => grid_set_interior_line
@@ -315,6 +316,18 @@ contains
     call finish(self, eg2d_get_topology(self%handle, t), status)
     topology = int(t)
   end subroutine grid_get_topology
+
+  ! C-grid: the trailing edge's index w on JMIN (nodes i and ni-1-i of JMIN
+  ! are one point for i <= w); 0 on the other topologies.
+  subroutine grid_get_cut(self, wake, status)
+    class(eg2d_grid_t), intent(inout) :: self
+    integer, intent(out) :: wake
+    integer, intent(out), optional :: status
+    integer(c_int) :: w
+    w = -1
+    call finish(self, eg2d_get_cut(self%handle, w), status)
+    wake = int(w)
+  end subroutine grid_get_cut
 
   ! ---------------------------------------------------------------- boundary
   ! One side from its points in increasing index: ni points for JMIN/JMAX,

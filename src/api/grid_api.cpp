@@ -31,4 +31,11 @@ EG2D_API int eg2d_get_topology(const eg2d_grid *grid, int *topology) {
     });
 }
 
+EG2D_API int eg2d_get_cut(const eg2d_grid *grid, int *wake) {
+    return guard(grid, "eg2d_get_cut", [&] {
+        require_ptr(wake, "wake");
+        *wake = grid->gen.grid().cut_wake();
+    });
+}
+
 }  // extern "C"

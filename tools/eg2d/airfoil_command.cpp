@@ -296,12 +296,17 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
     if (a.te_base >= 0) check(g, eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_O_TE_BASE, a.te_base), "--te-base");
     double te_base = 0;
     eg2d_get_parameter(g, EG2D_PARAM_AIRFOIL_O_TE_BASE, &te_base);
-    int wake = 0;
-    if (cgrid) {  // about 0.21 (ni-1) nodes a side, on every level's node
-        wake = step * std::max(1, static_cast<int>(std::lround(0.21 * (a.ni - 1) / step)));
-        check(g, eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_WAKE_NODES, wake), "the cut's nodes");
-    }
     check(g, eg2d_set_airfoil(g, section.get(), cgrid ? EG2D_TOPO_C : EG2D_TOPO_O), "airfoil " + a.source);
+    // The library's cut (EG2D_PARAM_AIRFOIL_WAKE_NODES automatic: what a
+    // program embedding it gets), unless a level of the family would not
+    // have the trailing edge on a node: then the nearest count that does.
+    int wake = 0;
+    check(g, eg2d_get_cut(g, &wake), "the cut");
+    if (cgrid && wake % step != 0) {
+        wake = step * std::max(1, static_cast<int>(std::lround(static_cast<double>(wake) / step)));
+        check(g, eg2d_set_parameter(g, EG2D_PARAM_AIRFOIL_WAKE_NODES, wake), "the cut's nodes");
+        check(g, eg2d_set_airfoil(g, section.get(), EG2D_TOPO_C), "airfoil " + a.source);
+    }
     const SectionShape shape = section_shape(section.get());
     const double gap = shape.gap;  // 0 for a NACA code closed by --te sharpen
     if (!a.quiet) {

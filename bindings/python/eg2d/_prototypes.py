@@ -25,6 +25,7 @@ PROTOTYPES = {
     "eg2d_destroy": (None, [grid_p]),
     "eg2d_set_topology": (c_int, [grid_p, c_int]),
     "eg2d_get_topology": (c_int, [grid_p, int_p]),
+    "eg2d_get_cut": (c_int, [grid_p, int_p]),
     # Boundary
     "eg2d_set_side": (c_int, [grid_p, c_int, double_p, double_p]),
     "eg2d_set_boundary": (c_int, [grid_p, double_p, double_p]),

@@ -74,6 +74,12 @@ class Grid(Handle):
         self._check(lib.eg2d_get_topology(self._handle(), byref(t)))
         return t.value
 
+    def get_cut(self):
+        """C-grid: the trailing edge's index w on JMIN; nodes i and ni-1-i of JMIN are one point for i <= w."""
+        w = c_int()
+        self._check(lib.eg2d_get_cut(self._handle(), byref(w)))
+        return w.value
+
     # ---- boundary and initial grid
     def set_side(self, side, x, y):
         """One side from its points in increasing index (ni points for JMIN/JMAX, nj for IMIN/IMAX)."""
