@@ -199,47 +199,39 @@ static void test_cavity_corners(void **state) {
  * instead, they sheared the rows by 89 degrees at 177x81 and every cycle
  * folded.) At 177x81 Vinokur's 80 cells grow by 1.21, and so do the
  * lines beside IMIN, whose points a wall keeps: said. */
+/* At 1e-7 (the last row) the sides' own cells grow by 1.26: alike on the
+ * square's opposite sides, to round-off, so the moved one still takes the
+ * kept one's shape (compared exactly, it did not, and every cycle folded). */
 static void test_corner_walls_clustered_sides(void **state) {
     (void)state;
-    const int sizes[][2] = {{137, 97}, {257, 129}, {385, 129}, {177, 81}};
-    for (int c = 0; c < 4; ++c) {
-        eg2d_grid *g = made(sizes[c][0], sizes[c][1], EG2D_TOPO_SINGLE);
-        assert_int_equal(domain_set_cavity(g, 1e-4), EG2D_OK);
-        eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 1e-4);
-        eg2d_set_wall_spacing(g, EG2D_SIDE_IMIN, 1e-4);
+    const struct {
+        int ni, nj;
+        double h, limit;
+    } cases[] = {{137, 97, 1e-4, 1.2}, {257, 129, 1e-4, 1.2}, {385, 129, 1e-4, 1.2}, {177, 81, 1e-4, 1.25},
+                 {257, 129, 1e-7, 1.27}};
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; ++c) {
+        eg2d_grid *g = made(cases[c].ni, cases[c].nj, EG2D_TOPO_SINGLE);
+        assert_int_equal(domain_set_cavity(g, cases[c].h), EG2D_OK);
+        eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, cases[c].h);
+        eg2d_set_wall_spacing(g, EG2D_SIDE_IMIN, cases[c].h);
         solve_ok(g);
         double skew = 0;
         assert_int_equal(eg2d_get_quality(g, EG2D_QUALITY_SKEWNESS, &skew), EG2D_OK);
-        if (!(skew < 1e-6)) fail_msg("%dx%d: skewness %g degrees", sizes[c][0], sizes[c][1], skew);
-        const double limit = sizes[c][1] == 81 ? 1.25 : 1.2;
-        assert_layer(g, EG2D_SIDE_JMIN, 1e-4, limit);
-        assert_layer(g, EG2D_SIDE_IMIN, 1e-4, limit);
-        if (sizes[c][1] == 81) {
+        if (!(skew < 1e-6)) fail_msg("%dx%d at %g: skewness %g degrees", cases[c].ni, cases[c].nj, cases[c].h, skew);
+        assert_layer(g, EG2D_SIDE_JMIN, cases[c].h, cases[c].limit);
+        assert_layer(g, EG2D_SIDE_IMIN, cases[c].h, cases[c].limit);
+        if (cases[c].nj == 81) {
             assert_true(wall(g, EG2D_SIDE_JMIN, EG2D_WALL_GROWTH) > 1.2);
             char msg[2048] = "";
             int it;
             assert_int_equal(eg2d_get_run_event(g, 0, &it, msg, sizeof msg), EG2D_OK);
             if (!strstr(msg, "the points of IMIN (kept as given) grow by 1.21 within 30 cells of the wall"))
                 fail_msg("event: %s", msg);
-        } else {
+        } else if (cases[c].h == 1e-4) {
             assert_true(wall(g, EG2D_SIDE_JMIN, EG2D_WALL_NODES_NEEDED) == 0);
         }
         eg2d_destroy(g);
     }
-    /* At 1e-7 the sides' own cells grow by 1.26: alike on the square's
-     * opposite sides, to round-off, so the moved one still takes the kept
-     * one's shape (compared exactly, it did not, and every cycle folded). */
-    eg2d_grid *g = made(257, 129, EG2D_TOPO_SINGLE);
-    assert_int_equal(domain_set_cavity(g, 1e-7), EG2D_OK);
-    eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 1e-7);
-    eg2d_set_wall_spacing(g, EG2D_SIDE_IMIN, 1e-7);
-    solve_ok(g);
-    double skew = 0;
-    assert_int_equal(eg2d_get_quality(g, EG2D_QUALITY_SKEWNESS, &skew), EG2D_OK);
-    if (!(skew < 1e-6)) fail_msg("257x129 at 1e-7: skewness %g degrees", skew);
-    assert_layer(g, EG2D_SIDE_JMIN, 1e-7, 1.27);
-    assert_layer(g, EG2D_SIDE_IMIN, 1e-7, 1.27);
-    eg2d_destroy(g);
 }
 
 /* Walls that meet at a corner with their points not clustered there: no
