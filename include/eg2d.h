@@ -589,7 +589,14 @@ EG2D_API int eg2d_set_af_time_rule(eg2d_grid *grid, double a, double b);
  *===================================================================*/
 /* Called after every iteration with the iteration count of the grid (it
  * counts across calls) and the residual; a nonzero return stops the run
- * with EG2D_ERR_INTERRUPTED, keeping the iterations done. NULL removes it. */
+ * with EG2D_ERR_INTERRUPTED, keeping the iterations done. Before the first
+ * iteration of a run that makes its start grid or wall layer (the first
+ * run, and any after a change to the boundary, the start or the controls)
+ * it is also called as the set-up goes, once the start grid is there and
+ * then at every layer of a march, with the iteration count so far and a
+ * residual of +infinity (none yet); stopped there, the run returns
+ * EG2D_ERR_INTERRUPTED with the handle as it was before the call.
+ * NULL removes it. */
 typedef int (*eg2d_monitor_fn)(void *user, int iteration, double residual);
 EG2D_API int eg2d_set_monitor(eg2d_grid *grid, eg2d_monitor_fn fn, void *user);
 

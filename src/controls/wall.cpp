@@ -148,6 +148,7 @@ public:
                     return hybrid_.shape;
                 }
             } catch (const Error &e) {  // the march cannot make this grid: the updates below instead
+                if (e.failure() == Failure::Interrupted) throw;  // the monitor stopped it
                 note = std::string("wall layer (hybrid) not made: ") + e.what() +
                        "; the wall control's updates instead";
             }

@@ -11,6 +11,7 @@
 #include "base/self_crossing.hpp"
 #include "controls/controls.hpp"
 #include "generator/stall_watch.hpp"
+#include "base/setup_progress.hpp"
 
 namespace eg2d {
 
@@ -330,6 +331,59 @@ void Generator::untangle_start(const ControlFields &fields, const Settings &run_
     fresh_start_ = false;
 }
 
+// Before iteration 1 the monitor is called with the iteration count so far
+// and no residual (+infinity): it may stop the run there too.
+void Generator::set_up_tick() {
+    if (monitor && monitor(iterations_, HUGE_VAL))
+        fail(Failure::Interrupted, format("stopped by the monitor before iteration %d, during the set-up (the wall "
+                                          "layer, the start grid): nothing changed", iterations_ + 1));
+}
+
+// The start grid and its wall layer, if they are to be made: with a
+// monitor, called as they go (the march layer by layer: a 1793x513 C-grid's
+// first call came 1.3 s into a 1.6 s run) and, when it stops the run there,
+// the grid, the controls and the layer put back as they were.
+void Generator::set_up() {
+    // The layer's settings are read when it is shaped: a change reshapes it.
+    // A new boundary (or an interior no iteration has touched) gets a new
+    // start above the layer too; a grid the user set or iterated keeps its.
+    auto make = [this] {
+        ensure_ready();
+        setup_tick();  // the start grid is there: the monitor may read it
+        if (shape_pending_ || shaped_with_layer_ != settings.wall_layer || shaped_with_growth_ != settings.wall_growth)
+            shape_start(boundary_changed_ || fresh_start_);
+    };
+    const bool pending = !grid_.initialized() || shape_pending_ || shaped_with_layer_ != settings.wall_layer ||
+                         shaped_with_growth_ != settings.wall_growth;
+    if (!monitor || !pending) return make();
+    struct Saved {
+        Grid grid;
+        ControlSet controls;
+        WallLayerShape layer;
+        bool pending, changed, fresh;
+        double with_layer, with_growth;
+        int iterations;
+    } saved{grid_, controls_, layer_, shape_pending_, boundary_changed_, fresh_start_,
+            shaped_with_layer_, shaped_with_growth_, iterations_};
+    try {
+        const SetupProgress progress([this] { set_up_tick(); });
+        make();
+    } catch (const Error &e) {
+        if (e.failure() != Failure::Interrupted) throw;
+        grid_ = std::move(saved.grid);
+        controls_ = std::move(saved.controls);
+        layer_ = std::move(saved.layer);
+        shape_pending_ = saved.pending;
+        boundary_changed_ = saved.changed;
+        fresh_start_ = saved.fresh;
+        shaped_with_layer_ = saved.with_layer;
+        shaped_with_growth_ = saved.with_growth;
+        iterations_ = saved.iterations;
+        solver_->reset();
+        throw;
+    }
+}
+
 Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
     // The control terms are coefficients of the quasi-linear (Winslow/TTM)
     // equation; Laplace has no place for them, and silently dropping the
@@ -341,12 +395,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
         fail(Failure::State, format("the %s solver does not solve the variational system (its line systems are "
                                     "Winslow's form); use one of: %s", solver_info_->name,
                                     variational_solver_names().c_str()));
-    ensure_ready();
-    // The layer's settings are read when it is shaped: a change reshapes it.
-    // A new boundary (or an interior no iteration has touched) gets a new
-    // start above the layer too; a grid the user set or iterated keeps its.
-    if (shape_pending_ || shaped_with_layer_ != settings.wall_layer || shaped_with_growth_ != settings.wall_growth)
-        shape_start(boundary_changed_ || fresh_start_);
+    set_up();
     const ControlFields &fields = controls_.update(grid_, true);
     // The automatic relaxation factor is an over-relaxation (seed 003's
     // optimum for Laplace). While a wall control is updated between sweeps

@@ -144,6 +144,8 @@ private:
     [[noreturn]] void fail_diverged(const ResidualInfo &ri, double best, const LastGoodGrid &good);
     [[noreturn]] void fail_not_converged(long max_iterations, double r, double extent) const;
     [[noreturn]] void fail_stalled(const StallWatch &stall, const LastGoodGrid &good);
+    void set_up_tick();
+    void set_up();
     // "; the run's events: ..." (empty without any): a failure's causes.
     std::string events_said() const;
     // Dynamic controls have been updated since they last changed and are

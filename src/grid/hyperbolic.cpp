@@ -8,6 +8,8 @@
 // system per step, cyclic on O-grids.
 #include "grid/hyperbolic.hpp"
 
+#include "base/setup_progress.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -404,6 +406,7 @@ void march(Grid &g, const Settings &settings, const std::vector<double> &raised,
     std::size_t next_raise = 0;
     std::vector<Resume> saved;  // every kSaveEvery layers, while a resumption is left
     for (int l = 1; l <= layers; ++l) {
+        setup_tick();  // the monitor, layer by layer (base/setup_progress.hpp)
         if (next_raise < raised.size() && (l - 1) % kSaveEvery == 0) {
             saved.push_back({l, m.r, m.prev, m.prev_edge, first});
             // With one resumption left, the next fold is at this layer or

@@ -102,6 +102,13 @@ static int create_into(int ni, int nj) {
     return rc;
 }
 
+/* Stops at the first call after an iteration (the set-up's calls, before
+ * iteration 1, have no residual: +infinity). */
+static int stop_after_iteration(void *user, int iteration, double residual) {
+    (void)user;
+    (void)iteration;
+    return isfinite(residual);
+}
 static int stop_at_once(void *user, int iteration, double residual) {
     (void)user;
     (void)iteration;
@@ -219,7 +226,14 @@ static int r_not_converged(eg2d_grid *g) {
     eg2d_set_max_iterations(g, 1);
     return eg2d_solve(g);
 }
-static int r_interrupted(eg2d_grid *g) { eg2d_set_monitor(g, stop_at_once, NULL); return eg2d_iterate(g, 5, NULL); }
+static int r_interrupted(eg2d_grid *g) {
+    eg2d_set_monitor(g, stop_after_iteration, NULL);
+    return eg2d_iterate(g, 5, NULL);
+}
+static int r_interrupted_set_up(eg2d_grid *g) {
+    eg2d_set_monitor(g, stop_at_once, NULL);
+    return eg2d_iterate(g, 5, NULL);
+}
 static int r_diverged(eg2d_grid *g) {
     eg2d_set_solver(g, EG2D_SOLVER_PSOR);
     eg2d_set_relaxation(g, 1.99);
@@ -656,8 +670,13 @@ static const bad_input rows[] = {
     {"iteration limit reached", "eg2d_solve(g), PSOR, max_iterations = 1", S_VALLEY, r_not_converged,
      EG2D_ERR_NOT_CONVERGED, "eg2d_solve: psor did not converge in 1 iterations: residual * > tolerance 1e-08",
      KEEPS_WORK},
-    {"monitor asks to stop", "eg2d_iterate(g, 5, NULL), monitor returns 1", S_VALLEY, r_interrupted,
-     EG2D_ERR_INTERRUPTED, "eg2d_iterate: stopped by the monitor at iteration 1 (residual *)", KEEPS_WORK},
+    {"monitor asks to stop", "eg2d_iterate(g, 5, NULL), monitor returns 1 after an iteration", S_VALLEY,
+     r_interrupted, EG2D_ERR_INTERRUPTED, "eg2d_iterate: stopped by the monitor at iteration 1 (residual *)",
+     KEEPS_WORK},
+    {"monitor asks to stop during the set-up", "eg2d_iterate(g, 5, NULL), monitor returns 1 (first call: the "
+     "set-up's, residual +infinity)", S_VALLEY, r_interrupted_set_up, EG2D_ERR_INTERRUPTED,
+     "eg2d_iterate: stopped by the monitor before iteration 1, during the set-up (the wall layer, the start grid): "
+     "nothing changed", 0},
     {"over-relaxation that diverges (omega 1.99)", "eg2d_solve(g), PSOR, relaxation 1.99, divergence factor 10",
      S_VALLEY, r_diverged, EG2D_ERR_DIVERGED,
      "eg2d_solve: psor diverged at iteration *: residual * is more than 10 times the run's best * "

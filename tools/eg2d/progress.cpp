@@ -47,8 +47,8 @@ void Progress::print(int iteration, double residual) {
 
 int Progress::monitor(void *user, int iteration, double residual) {
     Progress &p = *static_cast<Progress *>(user);
-    if (signal_seen) return 1;
-    if (p.quiet_) return 0;
+    if (signal_seen) return 1;  // in the set-up too: the march stops at its next layer
+    if (p.quiet_ || std::isinf(residual)) return 0;  // no residual yet (the set-up's calls)
     const auto now = std::chrono::steady_clock::now();
     const double since = std::chrono::duration<double>(now - p.last_time_).count();
     // The first line at once, then a few a second on a terminal, one a second otherwise.
