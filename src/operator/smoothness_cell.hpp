@@ -38,4 +38,21 @@ void add_cotangent_terms(double w, const double x[4], const double y[4], bool he
 inline bool has_corner_terms(const Functional &F) { return F.smoothness != 0.0 || F.cotangent != 0.0; }
 void add_corner_terms(const Functional &F, const double x[4], const double y[4], bool hessians, CellTerms &t);
 
+// add_corner_terms's value alone (what the line search needs), without the
+// gradient or the cell's 8 x 8 arrays.
+double corner_terms_value(const Functional &F, const double x[4], const double y[4]);
+
+// What add_corner_terms adds at the cell's corner 0 alone, to the same
+// round-off: its gradient and its 2 x 2 blocks of the convex Hessian and,
+// with `exact`, of the exact one (h stays 0 without). A node's equation reads
+// no more (variational.cpp: the residual the convex block only, the point
+// Newton step both), and the three corners that move with the node cost far
+// less than the cell's 8 x 8 scatter.
+struct NodeTerms {
+    double g[2] = {};
+    double h[2][2] = {};
+    double hc[2][2] = {};
+};
+NodeTerms corner_node_terms(const Functional &F, const double x[4], const double y[4], bool exact);
+
 }  // namespace eg2d

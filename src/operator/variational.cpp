@@ -74,28 +74,29 @@ void ring_cell(const Ring &r, int k, double dx, double dy, double x[4], double y
 
 // The corner terms (W and O's cotangent form, not quadratic in the node:
 // smoothness_cell.hpp) from the four cells round it: their convex block into
-// h, the rest into o.
-void add_corners(const Functional &F, const Ring &r, NodeGradient &g) {
-    CellTerms t;
+// h, and with `exact` the rest into o (the node's equation reads g and h only).
+void add_corners(const Functional &F, const Ring &r, bool exact, NodeGradient &g) {
     double x[4], y[4];
     for (int k = 0; k < 4; ++k) {
         ring_cell(r, k, 0.0, 0.0, x, y);
-        t = CellTerms{};
-        add_corner_terms(F, x, y, true, t);
+        const NodeTerms t = corner_node_terms(F, x, y, exact);
         g.gx += t.g[0];
         g.gy += t.g[1];
         g.hxx += t.hc[0][0];
         g.hxy += t.hc[0][1];
         g.hyy += t.hc[1][1];
+        if (!exact) continue;
         g.oxx += t.h[0][0] - t.hc[0][0];
         g.oxy += t.h[0][1] - t.hc[0][1];
         g.oyy += t.h[1][1] - t.hc[1][1];
     }
 }
 
-NodeGradient node_gradient(const Functional &F, const Ring &r) {
+// With `exact` false the corner terms' o is left out (their exact block
+// costs most, and the node equation reads g, hxx and hyy only).
+NodeGradient node_gradient(const Functional &F, const Ring &r, bool exact = true) {
     NodeGradient g;
-    if (has_corner_terms(F)) add_corners(F, r, g);
+    if (has_corner_terms(F)) add_corners(F, r, exact, g);
     const double b2 = 2.0 * F.spacing;  // S: sum over the four edges of |q - r|^2
     g.gx -= b2 * (r.ex[0] + r.ex[1] + r.ex[2] + r.ex[3]);
     g.gy -= b2 * (r.ey[0] + r.ey[1] + r.ey[2] + r.ey[3]);
@@ -169,13 +170,11 @@ double node_energy(const Functional &F, const Ring &r, double dx, double dy) {
     }
     double smooth = 0.0;
     if (has_corner_terms(F)) {
-        CellTerms t;
         double x[4], y[4];
         for (int k = 0; k < 4; ++k) {
             ring_cell(r, k, dx, dy, x, y);
-            add_corner_terms(F, x, y, false, t);
+            smooth += corner_terms_value(F, x, y);
         }
-        smooth = t.value;
     }
     return F.spacing * spacing + F.area * area + F.orthogonality * ortho + smooth;
 }
@@ -184,7 +183,7 @@ double node_energy(const Functional &F, const Ring &r, double dx, double dy) {
 
 NodeEquation variational_equation(const Level &L, const Stencil &s) {
     static const Functional kSpacingOnly;
-    const NodeGradient g = node_gradient(L.functional ? *L.functional : kSpacingOnly, ring(L.x, L.y, s));
+    const NodeGradient g = node_gradient(L.functional ? *L.functional : kSpacingOnly, ring(L.x, L.y, s), false);
     NodeEquation eq{-0.5 * g.gx, -0.5 * g.gy, 0.25 * (g.hxx + g.hyy)};
     if (!(eq.diag > 0.0)) eq.diag = 1.0;  // no term depends on the node: R is 0 too
     return eq;

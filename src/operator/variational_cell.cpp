@@ -128,11 +128,7 @@ double cell_value(const Functional &F, double mean, const double x[4], const dou
     }
     const double area = 0.5 * ((x[2] - x[0]) * (y[3] - y[1]) - (y[2] - y[0]) * (x[3] - x[1])) - mean;
     double smooth = 0.0;
-    if (has_corner_terms(F)) {
-        CellTerms t;
-        add_corner_terms(F, x, y, false, t);
-        smooth = t.value;
-    }
+    if (has_corner_terms(F)) smooth = corner_terms_value(F, x, y);
     return 0.5 * F.spacing * s + F.area * area * area + F.orthogonality * o + smooth;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "operator/smoothness_cell.hpp"
 #include "operator/variational_cell.hpp"
 #include "solvers/block_multigrid.hpp"
 
@@ -170,11 +171,54 @@ static void test_multigrid() {
     check(factor < 0.3, "block multigrid: mean residual factor per V-cycle (65^2)", factor);
 }
 
+// The corner terms' shortcuts (smoothness_cell.hpp) against the cell's
+// full terms, on 200 cells (some folded) and both senses: corner_node_terms
+// is the cell's corner-0 gradient and 2 x 2 blocks and corner_terms_value
+// its value, to the last bit (the residual and the line search read them,
+// and a run must take the same steps as with the full terms).
+static void test_corner_shortcuts() {
+    double worst = 0.0;
+    int cells = 0, folded = 0;
+    for (int sense : {1, -1})
+        for (int s = 0; s < 200; ++s) {
+            eg2d::Functional F = eg2d::make_functional(0.0, 1.0, 2.0, 1.0, true, 0.02, sense);
+            F.sense = sense;
+            double x[4], y[4];
+            for (int m = 0; m < 4; ++m) {
+                const double t = sense * (1.5707963 * m + 0.9 * std::sin(3.1 * s + m)),
+                             r = 1.0 + 0.4 * std::cos(1.7 * s * m + 0.3);
+                x[m] = r * std::cos(t) - 0.3, y[m] = r * std::sin(t) + 0.1;
+            }
+            eg2d::CellTerms full;
+            eg2d::add_corner_terms(F, x, y, true, full);
+            const double value = eg2d::corner_terms_value(F, x, y);
+            const eg2d::NodeTerms with = eg2d::corner_node_terms(F, x, y, true);
+            const eg2d::NodeTerms without = eg2d::corner_node_terms(F, x, y, false);
+            ++cells;
+            if (std::isinf(full.value)) ++folded;
+            // Equal or both infinite (the same bits either way).
+            if (!(value == full.value)) worst = std::fmax(worst, 1.0);
+            for (int p = 0; p < 2; ++p) {
+                worst = std::fmax(worst, std::fabs(with.g[p] - full.g[p]));
+                worst = std::fmax(worst, std::fabs(without.g[p] - full.g[p]));
+                for (int q = 0; q < 2; ++q) {
+                    worst = std::fmax(worst, std::fabs(with.h[p][q] - full.h[p][q]));
+                    worst = std::fmax(worst, std::fabs(with.hc[p][q] - full.hc[p][q]));
+                    worst = std::fmax(worst, std::fabs(without.hc[p][q] - full.hc[p][q]));
+                    worst = std::fmax(worst, std::fabs(without.h[p][q]));
+                }
+            }
+        }
+    check(worst == 0.0, "corner shortcuts = the cell's terms, bit for bit (400 cells)", worst);
+    check(folded > 0 && folded < cells, "  of which some but not all with a flat or folded corner", folded);
+}
+
 int main() {
     test_cell(0.0, false);
     test_cell(1.0, false);
     test_cell(1.0, true);
     test_smoothness_convex();
+    test_corner_shortcuts();
     test_multigrid();
     return failures == 0 ? 0 : 1;
 }
