@@ -201,9 +201,10 @@ int nodes_needed(double first, double last, double length, int nodes, bool from_
 }
 
 // One family of lines (eta lines: columns, for JMIN/JMAX walls; xi lines:
-// rows, for IMIN/IMAX), each with its points, arc lengths and target cells.
+// rows, for IMIN/IMAX), each with its arc lengths and target cells (its
+// points read again where it is moved: kept for every line they were a
+// fifth of a straight channel's new pages).
 struct Line {
-    std::vector<Vec2> points;
     std::vector<double> arc, cells;
     bool kept = false;  // a side whose points stay
 };
@@ -294,8 +295,7 @@ void grade_family(Grid &g, bool columns, GradedLayer &out, std::string &moved, s
         Line &L = all[static_cast<std::size_t>(l)];
         const double a = lo.empty() ? 0.0 : lo[static_cast<std::size_t>(l)];
         const double b = hi.empty() ? 0.0 : hi[static_cast<std::size_t>(l)];
-        L.points = line_points(g, columns, l);
-        L.arc = arc_lengths(L.points);
+        L.arc = arc_lengths(line_points(g, columns, l));
         try {
             // Lines alike (a straight channel's) share their cells: the
             // ratio's search per line was a fifth of such a run.
@@ -345,7 +345,8 @@ void grade_family(Grid &g, bool columns, GradedLayer &out, std::string &moved, s
         for (int k = 1; k < nodes; ++k)
             want[static_cast<std::size_t>(k)] = want[static_cast<std::size_t>(k - 1)] + L.cells[static_cast<std::size_t>(k - 1)];
         want.back() = L.arc.back();
-        const std::vector<Vec2> p = points_along(L.points, L.arc, want);
+        // (a family's lines share no node that moves: line l is as it was)
+        const std::vector<Vec2> p = points_along(line_points(g, columns, l), L.arc, want);
         for (int k = 1; k < nodes - 1; ++k) set_node(g, columns ? l : k, columns ? k : l, p[static_cast<std::size_t>(k)]);
     }
     if (ring)
@@ -466,13 +467,12 @@ GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height) {
                                 moved.c_str(), kKeepFirst, kGradedGrowth);
     if (!corners.empty()) out.shape.note += (out.shape.note.empty() ? "" : "; ") + corners;
     if (!shaped_by.empty()) out.shape.note += (out.shape.note.empty() ? "wall layer (graded): " : "; ") + shaped_by;
-    out.phi.assign(g.size(), 0.0);
-    out.psi.assign(g.size(), 0.0);
     // Kept when near square, turned to the normals when that keeps it so
     // (one pass over the turned grid checks both); else the one-dimensional
-    // background.
-    // (Turned in place, its coordinates alone kept to go back to: a copy of
-    // the grid was a twentieth of a straight channel's run.)
+    // background. Turned in place, its coordinates alone kept to go back to
+    // (a copy of the grid was a twentieth of a straight channel's run), and
+    // their storage then the controls': new pages, touched first, were most
+    // of what a straight channel's layer cost over the solve without it.
     std::vector<double> x = g.x, y = g.y;
     turn_to_normals(g, out);
     const bool turned = near_square(g, kKeepStartSkew);
@@ -480,6 +480,10 @@ GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height) {
         g.x.swap(x);
         g.y.swap(y);
     }
+    out.phi = std::move(x);
+    out.psi = std::move(y);
+    out.phi.assign(g.size(), 0.0);
+    out.psi.assign(g.size(), 0.0);
     if (turned || near_square(g, kKeepStartSkew)) keep_start(g, out);
     else one_dimensional_controls(g, out);
     return out;
