@@ -116,7 +116,7 @@ typedef struct eg2d_grid eg2d_grid;
 #define EG2D_ERR_MEMORY         2  /* an allocation could not be satisfied */
 #define EG2D_ERR_BOUNDARY       3  /* corners of adjacent sides disagree, an open O-grid curve */
 #define EG2D_ERR_STATE          4  /* a call out of order (iterate before the boundary is set) */
-#define EG2D_ERR_NOT_CONVERGED  5  /* eg2d_solve reached the iteration limit */
+#define EG2D_ERR_NOT_CONVERGED  5  /* eg2d_solve reached the iteration limit, or made no progress (EG2D_PARAM_STALL_ITERATIONS) */
 #define EG2D_ERR_DIVERGED       6  /* NaN/Inf or a growing residual; the last good grid is restored */
 #define EG2D_ERR_FOLDED         7  /* the converged grid has folded cells */
 #define EG2D_ERR_IO             8  /* a file could not be read or written */
@@ -410,7 +410,7 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations);
                                             control's remaining change 10% below its best, the
                                             grid restored to the best iteration and the message
                                             giving the run's events (their cause). Automatic:
-                                            300 for multigrid; max(500, 2 max(ni, nj)) for the
+                                            200 for multigrid; max(500, 2 max(ni, nj)) for the
                                             other solvers. Not for EG2D_SYSTEM_VARIATIONAL,
                                             whose minimiser has its own stop test */
 /* The weights a, b, c, d of EG2D_SYSTEM_VARIATIONAL (system parameters 10-19),

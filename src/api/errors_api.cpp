@@ -40,7 +40,7 @@ EG2D_API const char *eg2d_status_string(int status) {
     case EG2D_ERR_MEMORY: return "EG2D_ERR_MEMORY: out of memory";
     case EG2D_ERR_BOUNDARY: return "EG2D_ERR_BOUNDARY: inconsistent boundary";
     case EG2D_ERR_STATE: return "EG2D_ERR_STATE: call out of order";
-    case EG2D_ERR_NOT_CONVERGED: return "EG2D_ERR_NOT_CONVERGED: iteration limit reached";
+    case EG2D_ERR_NOT_CONVERGED: return "EG2D_ERR_NOT_CONVERGED: iteration limit reached or no progress";
     case EG2D_ERR_DIVERGED: return "EG2D_ERR_DIVERGED: iteration diverged, grid restored";
     case EG2D_ERR_FOLDED: return "EG2D_ERR_FOLDED: grid has folded cells";
     case EG2D_ERR_IO: return "EG2D_ERR_IO: file error";
