@@ -19,6 +19,7 @@ const ParameterInfo kParameters[] = {
     {EG2D_PARAM_FOLD_CHECK, "fold_check", 0.0, 1.0, false, false, true, false, &Settings::fold_check},
     {EG2D_PARAM_STALL_ITERATIONS, "stall_iterations", 0.0, 1e9, false, false, true, true,
      &Settings::stall_iterations},
+    {EG2D_PARAM_MONITOR_SET_UP, "monitor_set_up", 0.0, 1.0, false, false, true, false, &Settings::monitor_set_up},
     // The variational system's weights (operator/variational.hpp).
     {EG2D_PARAM_VARIATIONAL_AREA, "variational_area", 0.0, 1e6, false, false, false, false,
      &Settings::variational_area},

@@ -11,6 +11,7 @@ struct Settings {
     double max_iterations = 100000;   // per eg2d_solve call
     double divergence_factor = 1e4;   // residual > factor * best of the run = divergence
     double stall_iterations = 0.0;    // 0: the solver's window (Solver::stall_window)
+    double monitor_set_up = 0.0;      // 1: the monitor is called during a run's set-up too
     double fold_check = 1;            // 1: solve fails with Folded on a folded converged grid
                                       // (and the variational system's steps may not fold cells)
     // The variational system's weights a, b, c (operator/variational.hpp).

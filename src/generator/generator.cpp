@@ -355,7 +355,7 @@ void Generator::set_up() {
     };
     const bool pending = !grid_.initialized() || shape_pending_ || shaped_with_layer_ != settings.wall_layer ||
                          shaped_with_growth_ != settings.wall_growth;
-    if (!monitor || !pending) return make();
+    if (!monitor || !pending || settings.monitor_set_up == 0.0) return make();
     struct Saved {
         Grid grid;
         ControlSet controls;

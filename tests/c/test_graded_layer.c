@@ -62,7 +62,8 @@ static eg2d_grid *tmr_grid(const char *name, int ni, int nj) {
 static int first_call_events = -1;
 static int monitor(void *user, int iteration, double residual) {
     (void)iteration;
-    if (isfinite(residual) && first_call_events < 0)  /* after an iteration, not in the set-up */ eg2d_get_run_info((const eg2d_grid *)user, EG2D_RUN_EVENTS, &first_call_events);
+    (void)residual;
+    if (first_call_events < 0) eg2d_get_run_info((const eg2d_grid *)user, EG2D_RUN_EVENTS, &first_call_events);
     return 0;
 }
 
@@ -119,8 +120,8 @@ static void test_bump_in_channel(void **state) {
         if (!(it <= 2)) fail_msg("solver %d: %d iterations", solver, it);
         eg2d_destroy(g);
     }
-    /* The monitor sees the layer's event from its first call after an
-     * iteration (iterations asked: the solve itself needs none). */
+    /* The monitor sees the layer's event from its first call (iterations
+     * asked: the solve itself needs none). */
     g = tmr_grid("bump_177x81", 177, 81);
     eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 4e-6);
     eg2d_set_monitor(g, monitor, g);

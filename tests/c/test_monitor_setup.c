@@ -1,4 +1,5 @@
-/* The monitor from the start of a run (eg2d.h, eg2d_monitor_fn): during the
+/* The monitor from the start of a run (eg2d.h, eg2d_monitor_fn, with
+ * EG2D_PARAM_MONITOR_SET_UP 1; without it, iterations alone): during the
  * set-up (the start grid, then every layer of the hybrid wall layer's
  * march) it is called with the iteration count so far and +infinity; a stop
  * there returns EG2D_ERR_INTERRUPTED and leaves the handle as it was. NACA
@@ -41,6 +42,7 @@ static eg2d_grid *airfoil(void) {
     assert_int_equal(eg2d_set_airfoil(g, c, EG2D_TOPO_C), EG2D_OK);
     eg2d_curve_destroy(c);
     assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 4.46e-6), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MONITOR_SET_UP, 1), EG2D_OK);
     return g;
 }
 
@@ -55,6 +57,15 @@ static void test_setup_calls_before_the_first_cycle(void **state) {
     assert_int_equal(w.first_iteration, 0);
     assert_true(w.setup_calls > NJ - 1);  /* the start grid and every layer marched */
     assert_true(w.iteration_calls >= 1);
+    eg2d_destroy(g);
+    /* Without the parameter the monitor sees iterations alone, as before it. */
+    g = airfoil();
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MONITOR_SET_UP, 0), EG2D_OK);
+    watch plain = {0, 0, -1, 0, 0};
+    assert_int_equal(eg2d_set_monitor(g, monitor, &plain), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    assert_int_equal(plain.setup_calls, 0);
+    assert_true(plain.iteration_calls >= 1);
     eg2d_destroy(g);
 }
 

@@ -329,6 +329,8 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
     }
     Progress progress(isatty(STDOUT_FILENO) != 0, a.quiet);
     check(g, eg2d_set_monitor(g, Progress::monitor, &progress), "monitor");
+    // in the march too: Ctrl-C and SIGTERM stop it at its next layer
+    check(g, eg2d_set_parameter(g, EG2D_PARAM_MONITOR_SET_UP, 1), "monitor");
     int status;
     if (a.method == "hyperbolic") {
         check(g, eg2d_set_parameter(g, EG2D_PARAM_MARCH_DISTANCE, a.farfield), "--farfield");

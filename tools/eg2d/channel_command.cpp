@@ -209,6 +209,8 @@ int run_channel(int argc, char **argv, char **whole_argv) {
                     a.symmetry ? "the upper side a symmetry plane" : "two walls");
     Progress progress(isatty(STDOUT_FILENO) != 0, a.quiet);
     check(g, eg2d_set_monitor(g, Progress::monitor, &progress), "monitor");
+    // in the march too: Ctrl-C and SIGTERM stop it at its next layer
+    check(g, eg2d_set_parameter(g, EG2D_PARAM_MONITOR_SET_UP, 1), "monitor");
     const int status = eg2d_solve(g);
     progress.finish();
     if (!a.quiet) print_run_notes(g);

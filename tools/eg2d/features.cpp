@@ -37,6 +37,7 @@ const std::vector<Feature> &parameters() {
         EG2D_PARAM("divergence_factor", EG2D_PARAM_DIVERGENCE_FACTOR, "solver"),
         EG2D_FLAG("fold_check", EG2D_PARAM_FOLD_CHECK, "solver"),
         EG2D_PARAM("stall_iterations", EG2D_PARAM_STALL_ITERATIONS, "solver"),
+        EG2D_FLAG("monitor_set_up", EG2D_PARAM_MONITOR_SET_UP, "solver"),
 #ifdef EG2D_PARAM_AF_DTAU_MIN
         EG2D_PARAM("af_dtau_min", EG2D_PARAM_AF_DTAU_MIN, "solver"),
         EG2D_PARAM("af_dtau_max", EG2D_PARAM_AF_DTAU_MAX, "solver"),

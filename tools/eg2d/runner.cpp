@@ -4,6 +4,7 @@
 #include <eg2d.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -146,7 +147,7 @@ struct RunMonitor {
 
     static int call(void *user, int iteration, double residual) {
         RunMonitor &m = *static_cast<RunMonitor *>(user);
-        if (m.keep) m.rows.push_back({iteration, residual});
+        if (m.keep && std::isfinite(residual)) m.rows.push_back({iteration, residual});  // not the set-up's calls
         return Progress::monitor(m.progress, iteration, residual);
     }
 };
