@@ -355,7 +355,12 @@ void Generator::set_up() {
     };
     const bool pending = !grid_.initialized() || shape_pending_ || shaped_with_layer_ != settings.wall_layer ||
                          shaped_with_growth_ != settings.wall_growth;
-    if (!monitor || !pending || settings.monitor_set_up == 0.0) return make();
+    if (!monitor || !pending || settings.monitor_set_up == 0.0) {
+        // No ticks: not even an outer run's on this thread (a monitor that
+        // runs another grid would have its own monitor called from there).
+        const SetupProgress quiet(nullptr);
+        return make();
+    }
     struct Saved {
         Grid grid;
         ControlSet controls;
