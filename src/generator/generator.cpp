@@ -347,15 +347,15 @@ void Generator::set_up() {
     // The layer's settings are read when it is shaped: a change reshapes it.
     // A new boundary (or an interior no iteration has touched) gets a new
     // start above the layer too; a grid the user set or iterated keeps its.
-    auto make = [this] {
+    auto shape_due = [this] {
+        return shape_pending_ || shaped_with_layer_ != settings.wall_layer || shaped_with_growth_ != settings.wall_growth;
+    };
+    auto make = [&] {
         ensure_ready();
         setup_tick();  // the start grid is there: the monitor may read it
-        if (shape_pending_ || shaped_with_layer_ != settings.wall_layer || shaped_with_growth_ != settings.wall_growth)
-            shape_start(boundary_changed_ || fresh_start_);
+        if (shape_due()) shape_start(boundary_changed_ || fresh_start_);
     };
-    const bool pending = !grid_.initialized() || shape_pending_ || shaped_with_layer_ != settings.wall_layer ||
-                         shaped_with_growth_ != settings.wall_growth;
-    if (!monitor || !pending || settings.monitor_set_up == 0.0) {
+    if (!monitor || (grid_.initialized() && !shape_due()) || settings.monitor_set_up == 0.0) {
         // No ticks: not even an outer run's on this thread (a monitor that
         // runs another grid would have its own monitor called from there).
         const SetupProgress quiet(nullptr);
