@@ -233,7 +233,9 @@ std::vector<double> shaped(std::vector<double> cells, const std::vector<double> 
                            bool hi) {
     if (factor.empty()) return cells;
     for (std::size_t k = 0; k < cells.size(); ++k) cells[k] *= factor[k];
-    return fit_length(std::move(cells), wall_shares(static_cast<int>(cells.size()), lo, hi), length);
+    // (the shares first: an argument's std::move may run before cells.size())
+    const std::vector<double> share = wall_shares(static_cast<int>(cells.size()), lo, hi);
+    return fit_length(std::move(cells), share, length);
 }
 
 // The lines between two kept sides take their shape: each cell times
