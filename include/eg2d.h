@@ -63,8 +63,10 @@
  *  - the monitor runs on the thread of eg2d_iterate/eg2d_solve, inside the
  *    call; it may use the query calls (eg2d_get_*) on its own grid, and
  *    must not call anything that changes that grid, nor destroy it.
- *  - eg2d_version, eg2d_status_string, eg2d_solver_name and
- *    eg2d_parameter_bounds need no handle and are safe from any thread.
+ *  - eg2d_version, eg2d_status_string, eg2d_solver_name,
+ *    eg2d_parameter_bounds and the list calls (eg2d_list_*,
+ *    eg2d_parameter_info, eg2d_format_info, eg2d_quality_cell_field) need
+ *    no handle and are safe from any thread.
  *
  * Host environment
  * ----------------
@@ -136,6 +138,67 @@ EG2D_API const char *eg2d_last_error(const eg2d_grid *grid);
 
 /* The library's version at run time (any pointer may be NULL). */
 EG2D_API void eg2d_version(int *major, int *minor, int *patch);
+
+/*=====================================================================
+ * Lists: what this library has, by name
+ *
+ * Every kind of id (solvers, parameters, formats, quality metrics, systems,
+ * initialisers, orthogonality methods, topologies, point distributions) is
+ * one table inside the library. These calls read it, so a program (the eg2d
+ * command, a case-file reader, a GUI) needs no copy of its own. Every id
+ * this library knows is listed.
+ * Names are short lower-case words ("multigrid", "wall_growth", "vts"),
+ * valid for the life of the process; no handle, safe from any thread.
+ *===================================================================*/
+#define EG2D_LIST_SOLVERS        0
+#define EG2D_LIST_PARAMETERS     1
+#define EG2D_LIST_FORMATS        2
+#define EG2D_LIST_QUALITY        3
+#define EG2D_LIST_SYSTEMS        4
+#define EG2D_LIST_INITIALIZERS   5
+#define EG2D_LIST_ORTHOGONALITY  6
+#define EG2D_LIST_TOPOLOGIES     7
+#define EG2D_LIST_DISTRIBUTIONS  8
+
+/* The number of entries of `list`. EG2D_ERR_ARGUMENT: an unknown list, NULL. */
+EG2D_API int eg2d_list_count(int list, int *count);
+/* Entry `index` (0 <= index < count, in increasing id order): its id and
+ * name (either pointer may be NULL). EG2D_ERR_ARGUMENT: an unknown list, an
+ * index out of range. */
+EG2D_API int eg2d_list_entry(int list, int index, int *id, const char **name);
+/* The name of `id` in `list`, or NULL when this build has no such id. */
+EG2D_API const char *eg2d_list_name(int list, int id);
+/* The id named `name` in `list` (exact, case-sensitive). EG2D_ERR_ARGUMENT:
+ * no such name; the message (eg2d_last_error(NULL)) lists the valid ones. */
+EG2D_API int eg2d_list_find(int list, const char *name, int *id);
+
+/* What a parameter takes (EG2D_LIST_PARAMETERS), as bits of *kind: */
+#define EG2D_PARAM_KIND_REAL      0  /* any value within its bounds */
+#define EG2D_PARAM_KIND_INTEGER   1  /* whole numbers only */
+#define EG2D_PARAM_KIND_FLAG      2  /* 0 (off) or 1 (on); also INTEGER */
+#define EG2D_PARAM_KIND_AUTOMATIC 4  /* 0 means "chosen by the library", even outside the bounds */
+#define EG2D_PARAM_KIND_OPEN_LOWER 8  /* the lower bound itself is excluded */
+#define EG2D_PARAM_KIND_OPEN_UPPER 16 /* the upper bound itself is excluded */
+/* A parameter's kind, its unit ("1" for a pure number, "length" for the
+ * grid's coordinate unit, "nodes", "iterations", "degrees"...) and a one-line
+ * summary; any pointer may be NULL. Bounds and default: eg2d_parameter_bounds.
+ * EG2D_ERR_ARGUMENT: no such parameter. */
+EG2D_API int eg2d_parameter_info(int param, int *kind, const char **unit, const char **summary);
+
+/* What a format writes (EG2D_LIST_FORMATS), as bits of *kind: */
+#define EG2D_FORMAT_KIND_FILE      0  /* one file */
+#define EG2D_FORMAT_KIND_DIRECTORY 1  /* a directory of files (OpenFOAM's polyMesh case) */
+/* A format's kind and the usual suffix of its file or directory (".vts",
+ * ".report.json", "_foam"); either pointer may be NULL. EG2D_ERR_ARGUMENT:
+ * no such format. (Whether a plugin format can be written here, CGNS
+ * without its plugin, is said by eg2d_write: EG2D_ERR_UNSUPPORTED.) */
+EG2D_API int eg2d_format_info(int format, int *kind, const char **suffix);
+
+/* The name of a quality metric's per-cell field (the field name in .vts and
+ * .gmv files and of eg2d_get_cell_quality's values: "area" for both
+ * EG2D_QUALITY_MIN_AREA and MAX_AREA), or NULL when the metric is a summary
+ * only (the EG2D_QUALITY_ORTHO_* metrics) or unknown. */
+EG2D_API const char *eg2d_quality_cell_field(int metric);
 
 /*=====================================================================
  * Creating a grid
@@ -844,6 +907,10 @@ EG2D_API int eg2d_get_run_event(const eg2d_grid *grid, int index, int *iteration
 #define EG2D_QUALITY_ORTHO_MEAN_IMAX 51
 #define EG2D_QUALITY_ORTHO_MEAN_JMAX 52
 #define EG2D_QUALITY_ORTHO_MEAN_IMIN 53
+#define EG2D_QUALITY_SCALED_JACOBIAN 60 /* smallest over cells of the least over a cell's corners of
+                                           sin(corner angle), signed by the grid's orientation: 1 for a
+                                           rectangle, < 0 in a folded cell; per cell: that least (the
+                                           Verdict quadrilateral scaled Jacobian, Stimpson et al. 2007) */
 /* The scalar summary of a metric. An orthogonality metric of a side the
  * topology lacks (IMIN/IMAX of an O-grid) is EG2D_ERR_ARGUMENT. */
 EG2D_API int eg2d_get_quality(const eg2d_grid *grid, int metric, double *value);

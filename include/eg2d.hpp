@@ -68,6 +68,56 @@ inline parameter_info parameter_bounds(int param) {
     return p;
 }
 
+/* The library's lists (EG2D_LIST_*), in id order. */
+struct list_entry {
+    int id;
+    std::string name;
+};
+inline std::vector<list_entry> list_entries(int list) {
+    int n = 0;
+    detail::check(::eg2d_list_count(list, &n), nullptr);
+    std::vector<list_entry> v;
+    for (int k = 0; k < n; ++k) {
+        int id = 0;
+        const char *name = nullptr;
+        detail::check(::eg2d_list_entry(list, k, &id, &name), nullptr);
+        v.push_back({id, detail::text(name)});
+    }
+    return v;
+}
+/* "" when the list has no such id. */
+inline std::string list_name(int list, int id) { return detail::text(::eg2d_list_name(list, id)); }
+inline int list_find(int list, const std::string &name) {
+    int id = 0;
+    detail::check(::eg2d_list_find(list, name.c_str(), &id), nullptr);
+    return id;
+}
+struct parameter_description {
+    int kind;  // EG2D_PARAM_KIND_* bits
+    std::string unit, summary;
+};
+inline parameter_description describe_parameter(int param) {
+    parameter_description d{0, "", ""};
+    const char *unit = nullptr, *summary = nullptr;
+    detail::check(::eg2d_parameter_info(param, &d.kind, &unit, &summary), nullptr);
+    d.unit = detail::text(unit);
+    d.summary = detail::text(summary);
+    return d;
+}
+struct format_description {
+    int kind;  // EG2D_FORMAT_KIND_*
+    std::string suffix;
+};
+inline format_description describe_format(int format) {
+    format_description d{0, ""};
+    const char *suffix = nullptr;
+    detail::check(::eg2d_format_info(format, &d.kind, &suffix), nullptr);
+    d.suffix = detail::text(suffix);
+    return d;
+}
+/* "" for a summary-only metric. */
+inline std::string quality_cell_field(int metric) { return detail::text(::eg2d_quality_cell_field(metric)); }
+
 /* A Plot3D grid read by read_plot3d: x, y of ni*nj nodes (Fortran order). */
 struct plot3d_grid {
     int ni = 0, nj = 0, format = 0, nblocks = 0;

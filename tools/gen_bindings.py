@@ -70,6 +70,7 @@ TYPES = {
     "const double *": CType("real(c_double)", "c_double", "in_array", "double_p"),
     "char *": CType("character(kind=c_char)", "c_char", "out_array", "c_char_p"),  # a buffer
     "const char *": CType("character(kind=c_char)", "c_char", "in_array", "c_char_p"),  # NUL-terminated
+    "const char **": CType("type(c_ptr)", "c_ptr", "out", "POINTER(c_char_p)"),  # a static string the call points at
     "eg2d_grid *": CType("type(c_ptr)", "c_ptr", "value", "grid_p"),
     "const eg2d_grid *": CType("type(c_ptr)", "c_ptr", "value", "grid_p"),
     "eg2d_grid **": CType("type(c_ptr)", "c_ptr", "out", "POINTER(grid_p)"),

@@ -1,7 +1,7 @@
 // System, solver and parameters.
 #include "api/airfoil_apply.hpp"
 #include "api/handle.hpp"
-#include "api/parameters.hpp"
+#include "base/parameters.hpp"
 #include "solvers/solver.hpp"
 
 using namespace eg2d;
@@ -44,11 +44,6 @@ EG2D_API int eg2d_get_solver(const eg2d_grid *grid, int *solver) {
         require_ptr(solver, "solver");
         *solver = grid->gen.solver_id();
     });
-}
-
-EG2D_API const char *eg2d_solver_name(int solver) {
-    const SolverInfo *s = find_solver(solver);
-    return s ? s->name : nullptr;
 }
 
 EG2D_API int eg2d_set_relaxation(eg2d_grid *grid, double omega) {
@@ -99,19 +94,6 @@ EG2D_API int eg2d_get_parameter(const eg2d_grid *grid, int param, double *value)
         require(p != nullptr, format("parameter %d: no such parameter", param));
         *value = grid->gen.settings.*(p->field);
     });
-}
-
-EG2D_API int eg2d_parameter_bounds(int param, double *lower, double *upper, double *default_value) {
-    const ParameterInfo *p = find_parameter(param);
-    if (!p) {
-        set_thread_error(format("eg2d_parameter_bounds: parameter %d: no such parameter", param));
-        return EG2D_ERR_ARGUMENT;
-    }
-    const Settings defaults;
-    if (lower) *lower = p->lower;
-    if (upper) *upper = p->upper;
-    if (default_value) *default_value = defaults.*(p->field);
-    return EG2D_OK;
 }
 
 }  // extern "C"

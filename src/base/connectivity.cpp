@@ -1,14 +1,22 @@
 #include "base/connectivity.hpp"
 
+#include "eg2d.h"
+
 namespace eg2d {
 
+namespace {
+const NamedId kTopologies[] = {
+    {EG2D_TOPO_SINGLE, "single", "single-block"},
+    {EG2D_TOPO_O, "o", "O-grid"},
+    {EG2D_TOPO_C, "c", "C-grid"},
+};
+}  // namespace
+
+Table<NamedId> topology_table() { return table_of(kTopologies); }
+
 const char *topology_name(Topology t) {
-    switch (t) {
-    case Topology::Single: return "single-block";
-    case Topology::O: return "O-grid";
-    case Topology::C: return "C-grid";
-    }
-    return "unknown";
+    const NamedId *row = topology_table().find(static_cast<int>(t));
+    return row ? row->title : "unknown";
 }
 
 Connectivity::Connectivity(int ni, int nj, Topology topology, int wake)

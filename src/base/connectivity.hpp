@@ -5,11 +5,14 @@
 #include <cstddef>
 #include <vector>
 
+#include "base/table.hpp"
+
 namespace eg2d {
 
 enum class Topology { Single = 0, O = 1, C = 2 };
 
-const char *topology_name(Topology t);
+const char *topology_name(Topology t);  // for messages: "O-grid"
+Table<NamedId> topology_table();         // EG2D_TOPO_*, by list name: "o"
 
 // Array indices (k = i + ni*j) of a node and its eight neighbours.
 struct Stencil {

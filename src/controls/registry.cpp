@@ -12,18 +12,16 @@ namespace eg2d {
 
 namespace {
 const OrthogonalityMethod kMethods[] = {
-    {EG2D_ORTHO_NONE, "EG2D_ORTHO_NONE", nullptr},
-    {EG2D_ORTHO_MIDDLECOFF_THOMAS, "EG2D_ORTHO_MIDDLECOFF_THOMAS",
+    {EG2D_ORTHO_NONE, "none", "EG2D_ORTHO_NONE", nullptr},
+    {EG2D_ORTHO_MIDDLECOFF_THOMAS, "middlecoff-thomas", "EG2D_ORTHO_MIDDLECOFF_THOMAS",
      [](const std::array<double, 4> &) { return make_middlecoff_thomas(); }},
-    {EG2D_ORTHO_WALL, "EG2D_ORTHO_WALL", make_wall_control},
+    {EG2D_ORTHO_WALL, "wall", "EG2D_ORTHO_WALL", make_wall_control},
 };
 }  // namespace
 
-const OrthogonalityMethod *find_orthogonality(int id) {
-    for (const OrthogonalityMethod &m : kMethods)
-        if (m.id == id) return &m;
-    return nullptr;
-}
+Table<OrthogonalityMethod> orthogonality_table() { return table_of(kMethods); }
+
+const OrthogonalityMethod *find_orthogonality(int id) { return orthogonality_table().find(id); }
 
 std::string orthogonality_ids() {
     std::string s;

@@ -115,6 +115,18 @@ void fill_vinokur(int n, double ds0, double ds1, double *s) {
 }  // namespace
 
 namespace {
+const NamedId kDistributions[] = {
+    {EG2D_DIST_UNIFORM, "uniform", "uniform"},
+    {EG2D_DIST_EXPONENTIAL, "exponential", "exponential"},
+    {EG2D_DIST_TANH_ONE, "tanh", "one-sided tanh"},
+    {EG2D_DIST_TANH_TWO, "tanh2", "two-sided tanh"},
+    {EG2D_DIST_VINOKUR, "vinokur", "Vinokur"},
+};
+}  // namespace
+
+Table<NamedId> distribution_table() { return table_of(kDistributions); }
+
+namespace {
 
 // The parameters of the closed-form functions (every id but VINOKUR), checked.
 void check_closed_form(int id, double p1, double p2) {

@@ -1,8 +1,12 @@
 // Point distributions on [0, 1] (seed 001 section 2.5): s_k = s(u_k),
 // u_k = k/(n-1), with s(0) = 0, s(1) = 1 and s increasing.
 #pragma once
+#include "base/table.hpp"
 
 namespace eg2d {
+
+// EG2D_DIST_*, by list name ("tanh2") and title ("two-sided tanh").
+Table<NamedId> distribution_table();
 
 // Fills s[0..n-1] for the EG2D_DIST_* id with parameters p1, p2. `length` is
 // the length of the curve the points go on: Vinokur's p1, p2 are spacings in

@@ -12,10 +12,8 @@ const InitMethod kMethods[] = {
 };
 }
 
-const InitMethod *find_init_method(int id) {
-    for (const InitMethod &m : kMethods)
-        if (m.id == id) return &m;
-    return nullptr;
-}
+Table<InitMethod> init_method_table() { return table_of(kMethods); }
+
+const InitMethod *find_init_method(int id) { return init_method_table().find(id); }
 
 }  // namespace eg2d

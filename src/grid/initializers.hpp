@@ -3,6 +3,7 @@
 #pragma once
 #include "base/settings.hpp"
 #include "base/grid.hpp"
+#include "base/table.hpp"
 
 namespace eg2d {
 
@@ -17,6 +18,7 @@ struct InitMethod {
     bool marches = false;
 };
 
+Table<InitMethod> init_method_table();
 // nullptr if no method has that id.
 const InitMethod *find_init_method(int id);
 

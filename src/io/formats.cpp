@@ -23,48 +23,38 @@ constexpr int kFormatMask = 0xff;
 constexpr int kPlot3dFlags = EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI | EG2D_PLOT3D_SINGLE | EG2D_PLOT3D_BIG_ENDIAN |
                              EG2D_PLOT3D_NO_MARKERS | EG2D_PLOT3D_EXTRUDED;
 
+// In id order; a format that is a directory of files (an OpenFOAM case) has
+// write_directory instead of write.
 const FileFormat kFormats[] = {
-    {EG2D_FORMAT_PLOT3D, "plot3d", kPlot3dFlags, write_plot3d},
-    {EG2D_FORMAT_PLOT3D_ASCII, "plot3d-ascii", EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI | EG2D_PLOT3D_EXTRUDED,
+    {EG2D_FORMAT_PLOT3D, "plot3d", ".xyz", kPlot3dFlags, write_plot3d},
+    {EG2D_FORMAT_PLOT3D_ASCII, "plot3d-ascii", ".p3d", EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI | EG2D_PLOT3D_EXTRUDED,
      write_plot3d_ascii},
-    {EG2D_FORMAT_VTS, "vts", 0, write_vts},
-    {EG2D_FORMAT_CGNS, "cgns", 0, write_cgns},
-    {EG2D_FORMAT_GMV, "gmv", 0, write_gmv},
-    {EG2D_FORMAT_MATLAB, "matlab", 0, write_matlab},
-    {EG2D_FORMAT_SVG, "svg", 0, write_svg},
-    {EG2D_FORMAT_SU2, "su2", 0, write_su2},
-    {EG2D_FORMAT_REPORT, "report", 0, write_report},
-    {EG2D_FORMAT_REPORT_JSON, "report-json", 0, write_report_json},
-};
-
-// Formats that are a directory of files (each written all-or-nothing).
-const DirectoryFormat kDirectoryFormats[] = {
-    {EG2D_FORMAT_OPENFOAM, "openfoam", write_openfoam},
+    {EG2D_FORMAT_VTS, "vts", ".vts", 0, write_vts},
+    {EG2D_FORMAT_CGNS, "cgns", ".cgns", 0, write_cgns},
+    {EG2D_FORMAT_GMV, "gmv", ".gmv", 0, write_gmv},
+    {EG2D_FORMAT_MATLAB, "matlab", ".m", 0, write_matlab},
+    {EG2D_FORMAT_SVG, "svg", ".svg", 0, write_svg},
+    {EG2D_FORMAT_SU2, "su2", ".su2", 0, write_su2},
+    {EG2D_FORMAT_OPENFOAM, "openfoam", "_foam", 0, nullptr, write_openfoam},
+    {EG2D_FORMAT_REPORT, "report", ".report.txt", 0, write_report},
+    {EG2D_FORMAT_REPORT_JSON, "report-json", ".report.json", 0, write_report_json},
 };
 }  // namespace
 
-const DirectoryFormat *find_directory_format(int id) {
-    for (const DirectoryFormat &f : kDirectoryFormats)
-        if (f.id == id) return &f;
-    return nullptr;
-}
+Table<FileFormat> format_table() { return table_of(kFormats); }
 
-const FileFormat *find_format(int id) {
-    for (const FileFormat &f : kFormats)
-        if (f.id == id) return &f;
-    return nullptr;
-}
+const FileFormat *find_format(int id) { return format_table().find(id); }
 
 void write_grid(const Grid &grid, const Settings &settings, const char *path, int id, const RunSummary *run) {
-    if (const DirectoryFormat *d = id >= 0 ? find_directory_format(id & kFormatMask) : nullptr) {
-        if (id & ~kFormatMask)
-            fail(Failure::Argument, format("format = %#x: the %s format takes no flags", id, d->name));
-        if (!*path) fail(Failure::Argument, "path is empty");
-        d->write(WriteRequest{grid, settings, 0, run}, path);
-        return;
-    }
     const FileFormat *f = id >= 0 ? find_format(id & kFormatMask) : nullptr;
     if (!f) fail(Failure::Argument, format("format = %d: no such file format", id));
+    if (f->write_directory) {
+        if (id & ~kFormatMask)
+            fail(Failure::Argument, format("format = %#x: the %s format takes no flags", id, f->name));
+        if (!*path) fail(Failure::Argument, "path is empty");
+        f->write_directory(WriteRequest{grid, settings, 0, run}, path);
+        return;
+    }
     const int flags = id & ~kFormatMask;
     if (flags & ~f->allowed_flags)
         fail(Failure::Argument, format("format = %#x: flags %#x do not apply to the %s format", id,

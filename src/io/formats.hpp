@@ -6,6 +6,7 @@
 
 #include "base/settings.hpp"
 #include "base/grid.hpp"
+#include "base/table.hpp"
 #include "io/output_file.hpp"
 
 namespace eg2d {
@@ -26,20 +27,16 @@ struct WriteRequest {
 
 struct FileFormat {
     int id;                 // EG2D_FORMAT_*
-    const char *name;
+    const char *name;       // list name: "plot3d-ascii"
+    const char *suffix;     // of the file or directory a user would name: ".p3d", "_foam"
     int allowed_flags;      // the flags this writer understands
     void (*write)(const WriteRequest &request, OutputFile &out);
+    // A format that is a directory of files (an OpenFOAM case): the writer
+    // makes the directory and writes each file through an OutputFile.
+    void (*write_directory)(const WriteRequest &request, const std::string &directory) = nullptr;
 };
 
-// A format that is a directory of files (an OpenFOAM case): the writer
-// makes the directory and writes each file through an OutputFile.
-struct DirectoryFormat {
-    int id;
-    const char *name;
-    void (*write)(const WriteRequest &request, const std::string &directory);
-};
-const DirectoryFormat *find_directory_format(int id);
-
+Table<FileFormat> format_table();  // in increasing id order
 // nullptr if there is no format with that id.
 const FileFormat *find_format(int id);
 

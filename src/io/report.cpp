@@ -11,6 +11,7 @@
 
 #include "base/error.hpp"
 #include "base/folds.hpp"
+#include "base/parameters.hpp"
 #include "base/polyline.hpp"
 #include "eg2d.h"
 #include "io/formats.hpp"
@@ -123,6 +124,12 @@ void write_report(const WriteRequest &r, OutputFile &out) {
         out.print("wall angle      deviation of the first line from the wall normal max %.3f, mean %.3f deg\n",
                   w.angle.max, w.angle.mean());
     }
+    const Settings defaults;
+    std::string changed;  // the parameters set away from their defaults, by the names of the table
+    for (const ParameterInfo &q : parameter_table())
+        if (r.settings.*(q.field) != defaults.*(q.field))
+            changed += format("%s%s = %.17g", changed.empty() ? "" : ", ", q.name, r.settings.*(q.field));
+    out.print("parameters      %s\n", changed.empty() ? "all at their defaults" : changed.c_str());
     out.print("skewness        largest %.3f deg (corner angle from 90)\n", rep.skewness);
     out.print("aspect ratio    largest %.4g\n", rep.aspect_ratio);
     out.print("cell area       smallest %.4e\n", rep.min_area);
@@ -155,6 +162,13 @@ void write_report_json(const WriteRequest &r, OutputFile &out) {
         out.print("    \"angle_deviation_deg\": {\"max\": %s, \"mean\": %s}\n  },\n", json_number(w.angle.max).c_str(),
                   json_number(w.angle.mean()).c_str());
     }
+    out.print("  \"parameters\": {");  // every one, by the names of the table
+    bool first = true;
+    for (const ParameterInfo &q : parameter_table()) {
+        out.print("%s\n    \"%s\": %s", first ? "" : ",", q.name, json_number(r.settings.*(q.field)).c_str());
+        first = false;
+    }
+    out.print("\n  },\n");
     out.print("  \"skewness_max_deg\": %s,\n  \"aspect_ratio_max\": %s,\n  \"area_min\": %s,\n  \"folded_cells\": %ld\n}\n",
               json_number(rep.skewness).c_str(), json_number(rep.aspect_ratio).c_str(),
               json_number(rep.min_area).c_str(), rep.folded);

@@ -3,15 +3,23 @@
 #include <algorithm>
 #include <cmath>
 
+#include "eg2d.h"
+
 namespace eg2d {
 
+namespace {
+const NamedId kSystems[] = {
+    {EG2D_SYSTEM_LAPLACE, "laplace", "Laplace"},
+    {EG2D_SYSTEM_WINSLOW, "winslow", "Winslow"},
+    {EG2D_SYSTEM_VARIATIONAL, "variational", "variational"},
+};
+}  // namespace
+
+Table<NamedId> system_table() { return table_of(kSystems); }
+
 const char *system_name(System s) {
-    switch (s) {
-    case System::Laplace: return "Laplace";
-    case System::Winslow: return "Winslow";
-    case System::Variational: return "variational";
-    }
-    return "unknown";
+    const NamedId *row = system_table().find(static_cast<int>(s));
+    return row ? row->title : "unknown";
 }
 
 ResidualInfo residual(System system, const Level &L, double extent) {

@@ -1,4 +1,5 @@
 #pragma once
+#include "base/table.hpp"
 
 namespace eg2d {
 
@@ -9,6 +10,7 @@ enum class System {
     Variational = 2,  // the Euler-Lagrange equations of V = aA + bS + cO (variational.hpp)
 };
 
-const char *system_name(System s);
+const char *system_name(System s);  // for messages: "Winslow"
+Table<NamedId> system_table();      // EG2D_SYSTEM_*, by list name: "winslow"
 
 }  // namespace eg2d

@@ -7,6 +7,7 @@
 
 #include "base/folds.hpp"
 #include "base/grid.hpp"
+#include "base/table.hpp"
 
 namespace eg2d {
 
@@ -29,11 +30,13 @@ OrthogonalitySummary boundary_orthogonality(const Grid &grid, Side side);
 
 struct QualityMetric {
     int id;             // EG2D_QUALITY_*
-    const char *name;   // also the name of the cell field in the files (vts)
+    const char *name;   // list name: "min_area"
+    const char *cell_field;  // the per-cell field's name in files ("area"); nullptr: none
     double (*summary)(const Grid &grid);
     void (*cells)(const Grid &grid, double *out);  // nullptr: a boundary metric with no per-cell values
 };
 
+Table<QualityMetric> quality_table();  // in increasing id order
 // nullptr if there is no metric with that id.
 const QualityMetric *find_quality_metric(int id);
 

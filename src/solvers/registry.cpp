@@ -23,11 +23,9 @@ const SolverInfo kSolvers[] = {
 };
 }
 
-const SolverInfo *find_solver(int id) {
-    for (const SolverInfo &s : kSolvers)
-        if (s.id == id) return &s;
-    return nullptr;
-}
+Table<SolverInfo> solver_table() { return table_of(kSolvers); }
+
+const SolverInfo *find_solver(int id) { return solver_table().find(id); }
 
 std::string variational_solver_names() {
     std::string names;

@@ -9,6 +9,7 @@
 #include "operator/control_fields.hpp"
 #include "base/settings.hpp"
 #include "base/grid.hpp"
+#include "base/table.hpp"
 #include "operator/operator.hpp"
 #include "operator/system.hpp"
 #include "solvers/run_report.hpp"
@@ -92,6 +93,7 @@ struct SolverInfo {
     bool variational;
 };
 
+Table<SolverInfo> solver_table();  // in increasing id order
 // nullptr if this library has no solver with that id.
 const SolverInfo *find_solver(int id);
 // The names of the solvers that solve the variational system, for messages.

@@ -9,6 +9,7 @@ import json
 import os
 import re
 import resource
+import shutil
 import signal
 import stat
 import struct
@@ -165,10 +166,12 @@ class ErrorMessages(unittest.TestCase):
         self.check('size = [9, 9]\nsovler = "psor"\n' + self.GOOD_SIDES, 3,
                    "CASE:2:1: key 'sovler': unknown key (expected one of: title, size, topology, system, "
                    "initial, solve, constants, solver, sides, controls, output, patches, interior_lines, "
-                   "variational_smoothness, variational_orthogonality_form, variational_area, "
-                   "variational_orthogonality, variational_spacing, hermite_spacing, "
+                   "variational_area, variational_spacing, variational_orthogonality, variational_smoothness, "
+                   "variational_orthogonality_form, hermite_spacing, "
                    "hermite_sides, hermite_height_jmin, hermite_height_imax, hermite_height_jmax, "
-                   "hermite_height_imin)")
+                   "hermite_height_imin, march_distance, march_first_height, march_growth, march_smoothing, "
+                   "march_area_smoothing, march_end_imin, march_end_imax, airfoil_farfield, airfoil_le_spacing, "
+                   "airfoil_te_spacing, airfoil_wake_nodes, airfoil_trailing_edge, airfoil_o_te_base)")
 
     def test_unknown_key_in_a_side(self):
         self.check('size = [9, 9]\n' + self.GOOD_SIDES + 'z = "1"\n', 3,
@@ -2046,6 +2049,114 @@ class SharpTrailingEdge(unittest.TestCase):
                         self.assertEqual(len(grids[v]), len(grids["selig"]), (name, topo, v))
                         self.assertLess(max(abs(a - b) for a, b in zip(grids[v], grids["selig"])), 1e-9,
                                         (name, topo, v))
+
+
+def tables():
+    """{section title: [row dict by column name]} of `eg2d --tables`, the library's tables."""
+    code, out, _ = run("--tables")
+    assert code == 0
+    result, title, header = {}, None, None
+    for line in out.splitlines():
+        if line.startswith("## "):
+            title, header = line[3:], None
+            result[title] = []
+        elif line.startswith("|") and not line.startswith("|---"):
+            cells = [c.strip().strip("`") for c in line.strip("|").split("|")]
+            if header is None:
+                header = cells
+            else:
+                result[title].append(dict(zip(header, cells)))
+    return result
+
+
+class CaseParameters(unittest.TestCase):
+    """A case file sets every parameter of the library's table, by its key in its table, and chooses
+    every initial grid of the library's list: walked from `eg2d --tables`, so a new parameter or
+    initialiser is covered without a line here."""
+
+    SIDES = ErrorMessages.GOOD_SIDES
+
+    def run_case(self, d, top="", sections=None, initial="tfi"):
+        sections = dict(sections or {})
+        sections.setdefault("output", "")
+        sections["output"] += '\nformats = ["report-json"]\n'
+        text = f'size = [9, 9]\ninitial = "{initial}"\nsolve = false\n{top}\n{self.SIDES}'
+        for name, body in sections.items():
+            text += f"\n[{name}]\n{body}\n"
+        path = os.path.join(d, "case.toml")
+        with open(path, "w") as f:
+            f.write(text)
+        out = os.path.join(d, "out")
+        shutil.rmtree(out, ignore_errors=True)
+        code, stdout, stderr = run("run", path, "-o", out)
+        report = None
+        if code == 0:
+            with open(os.path.join(out, "case.report.json")) as f:
+                report = json.load(f)
+        return code, stderr, report
+
+    @staticmethod
+    def value_inside(row):
+        """A value other than the default, inside the parameter's range."""
+        rng, default = row["range"], float(row["default"])
+        lo, hi = (float(t) for t in rng[1:-1].split(","))
+        open_lo, open_hi = rng[0] == "(", rng[-1] == ")"
+        if row["kind"].startswith("on/off"):
+            return 1 - default
+        top = min(hi, lo + 4)
+        if row["kind"].startswith("integer"):
+            candidates = [lo + 1, lo + 2, lo] if open_lo else [lo, lo + 1, lo + 2]
+        else:
+            candidates = [lo + 0.37 * (top - lo), lo + 0.61 * (top - lo)]
+        for v in candidates:
+            if v != default and (v > lo if open_lo else v >= lo) and (v < hi if open_hi else v <= hi):
+                return v
+        raise AssertionError(f"no value inside {rng} other than {default} for {row['key']}")
+
+    def place(self, row, value):
+        key = row["key"]
+        if row["table"] == "top":
+            return f"{key} = {value!r}\n", {}
+        return "", {row["table"]: f"{key} = {value!r}"}
+
+    def test_every_parameter_reaches_the_library(self):
+        rows = tables()["Parameters"]
+        self.assertGreaterEqual(len(rows), 48)
+        with tempfile.TemporaryDirectory() as d:
+            for row in rows:
+                with self.subTest(key=row["key"]):
+                    if row["key"] == "svg_quality":  # a case file names the per-cell metric
+                        top, sections, expected = "", {"output": 'svg_quality = "skewness"'}, 10.0
+                    else:
+                        expected = self.value_inside(row)
+                        top, sections = self.place(row, expected)
+                    code, stderr, report = self.run_case(d, top, sections)
+                    self.assertEqual(code, 0, stderr)
+                    self.assertEqual(report["parameters"][row["key"]], expected)
+                    self.assertEqual(set(report["parameters"]), {r["key"] for r in rows})
+
+    def test_every_parameter_is_refused_outside_its_range_naming_its_key(self):
+        with tempfile.TemporaryDirectory() as d:
+            for row in tables()["Parameters"]:
+                lo, hi = (float(t) for t in row["range"][1:-1].split(","))
+                if row["key"] == "svg_quality" or hi >= 1e29:
+                    continue
+                with self.subTest(key=row["key"]):
+                    top, sections = self.place(row, hi + (hi - lo) + 1)
+                    code, stderr, _ = self.run_case(d, top, sections)
+                    self.assertEqual(code, 4, stderr)
+                    self.assertIn(f"eg2d_set_parameter: {row['key']} = ", stderr)
+                    self.assertIn("must be in", stderr)
+
+    def test_every_initializer(self):
+        names = [r["name"] for r in tables()["Initial grids"]]
+        self.assertIn("hyperbolic", names)
+        with tempfile.TemporaryDirectory() as d:
+            for name in names:
+                with self.subTest(initial=name):
+                    code, stderr, report = self.run_case(d, initial=name)
+                    self.assertEqual(code, 0, stderr)
+                    self.assertEqual(report["folded_cells"], 0)
 
 
 def shutil_which(name):

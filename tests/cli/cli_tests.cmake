@@ -26,10 +26,14 @@ foreach(path IN LISTS EG2D_CLI_EXAMPLES)
   add_test(NAME cli_example_${name} COMMAND ${EG2D_CLI_PYTHON} ${EG2D_CLI_TEST} ${EG2D_CLI_ARGS} --example ${name} ${size})
 endforeach()
 
-foreach(group ErrorMessages Sides Controls CommandLine Demo Progress Patches RunFiles Airfoil AirfoilOutputSet Channel SharpTrailingEdge
+foreach(group ErrorMessages CaseParameters Sides Controls CommandLine Demo Progress Patches RunFiles Airfoil AirfoilOutputSet Channel SharpTrailingEdge
               InteriorLines)
   add_test(NAME cli_${group} COMMAND ${EG2D_CLI_PYTHON} ${EG2D_CLI_TEST} ${EG2D_CLI_ARGS} ${group})
 endforeach()
+
+# docs/tables.md is what the library's tables say now (eg2d --tables).
+add_test(NAME docs_tables_up_to_date
+         COMMAND ${EG2D_CLI_PYTHON} ${PROJECT_SOURCE_DIR}/tools/eg2d/tables_doc.py $<TARGET_FILE:eg2d_tool> ${PROJECT_SOURCE_DIR} --check)
 
 # Every gallery picture is what the tool makes now of the case file beside it.
 add_test(NAME gallery_up_to_date

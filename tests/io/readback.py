@@ -67,6 +67,25 @@ def check_vts(d, ni, nj, x, y, quality):
         check(len(v) == (ni - 1) * (nj - 1) and e <= TOL, f"vts: cell data {name}, {len(v)} values, rel. error {e:.3e}")
 
 
+def check_scaled_jacobian(d, quality):
+    """The library's per-cell scaled Jacobian equals VTK's vtkMeshQuality (Verdict's) on the .vts."""
+    r = vtk.vtkXMLStructuredGridReader()
+    r.SetFileName(os.path.join(d, "grid.vts"))
+    q = vtk.vtkMeshQuality()
+    q.SetInputConnection(r.GetOutputPort())
+    q.SetQuadQualityMeasureToScaledJacobian()
+    q.Update()
+    v = vtk_to_numpy(q.GetOutput().GetCellData().GetArray("Quality"))
+    ref = quality.get("scaled_jacobian")
+    if ref is None:
+        check(False, "quality.txt has scaled_jacobian")
+        return
+    e = np.abs(v - ref).max()
+    check(len(v) == len(ref) and e <= TOL and ref.min() > 0,
+          f"vtkMeshQuality scaled Jacobian == EG2D_QUALITY_SCALED_JACOBIAN per cell, max error {e:.3e}, "
+          f"smallest {ref.min():.4f}")
+
+
 PLOT3D = [
     # file, binary, multi, 2d, byte count, big endian, double
     ("grid.x", True, False, True, True, False, True),
@@ -194,6 +213,7 @@ def main():
     subprocess.run([exe, d] + ([] if with_cgns else ["no-cgns"]), check=True)
     ni, nj, x, y, quality = load_reference(d)
     check_vts(d, ni, nj, x, y, quality)
+    check_scaled_jacobian(d, quality)
     check_plot3d(d, ni, nj, x, y)
     if with_cgns:
         check_cgns(d, ni, nj, x, y, cgnscheck)

@@ -47,16 +47,13 @@ int main(int argc, char **argv) {
         {"grid.m", EG2D_FORMAT_MATLAB},
         {"grid.svg", EG2D_FORMAT_SVG},
     };
-    static const struct { const char *name; int metric; } metrics[] = {
-        {"folded", EG2D_QUALITY_FOLDED_CELLS}, {"area", EG2D_QUALITY_MIN_AREA},
-        {"skewness", EG2D_QUALITY_SKEWNESS},   {"aspect_ratio", EG2D_QUALITY_ASPECT_RATIO},
-        {"smoothness_i", EG2D_QUALITY_SMOOTHNESS_I}, {"smoothness_j", EG2D_QUALITY_SMOOTHNESS_J},
-    };
     eg2d_grid *g;
     double x[NI * NJ], y[NI * NJ], q[(NI - 1) * (NJ - 1)];
     char path[4096];
     FILE *f;
-    size_t k, m;
+    size_t k;
+    int m, count, metric;
+    const char *field, *written = "";
     if (argc != 2 && !(argc == 3 && !strcmp(argv[2], "no-cgns"))) {
         fprintf(stderr, "usage: write_samples DIR [no-cgns]\n");
         return 2;
@@ -81,9 +78,15 @@ int main(int argc, char **argv) {
     fclose(f);
     snprintf(path, sizeof path, "%s/quality.txt", argv[1]);
     if (!(f = fopen(path, "w"))) return 1;
-    for (m = 0; m < sizeof metrics / sizeof metrics[0]; ++m) {
-        check(eg2d_get_cell_quality(g, metrics[m].metric, q), g, "cell quality");
-        fprintf(f, "%s", metrics[m].name);
+    /* Every per-cell field of the library's quality list, once (MIN_AREA and
+       MAX_AREA share "area"), by its field name: what .vts and .gmv carry. */
+    check(eg2d_list_count(EG2D_LIST_QUALITY, &count), NULL, "list count");
+    for (m = 0; m < count; ++m) {
+        check(eg2d_list_entry(EG2D_LIST_QUALITY, m, &metric, NULL), NULL, "list entry");
+        if (!(field = eg2d_quality_cell_field(metric)) || !strcmp(field, written)) continue;
+        written = field;
+        check(eg2d_get_cell_quality(g, metric, q), g, "cell quality");
+        fprintf(f, "%s", field);
         for (k = 0; k < (NI - 1) * (NJ - 1); ++k) fprintf(f, " %.17g", q[k]);
         fprintf(f, "\n");
     }

@@ -54,9 +54,10 @@ std::vector<std::string> parameter_keys(const char *section) {
     return keys;
 }
 
-void read_parameters(const Fields &f, const char *section, Case &c) {
+// `except`: a key of the section read otherwise (by name).
+void read_parameters(const Fields &f, const char *section, Case &c, const char *except = "") {
     for (const auto &p : parameters()) {
-        if (std::strcmp(p.section, section) || !f.has(p.name)) continue;
+        if (std::strcmp(p.section, section) || !f.has(p.name) || !std::strcmp(p.name, except)) continue;
         if (!p.available)
             throw Failure(EXIT_UNSUPPORTED, f.at(p.name).str() + ": is not available in this build of eg2d");
         // on/off settings are written true/false (1/0 are accepted too)
@@ -284,10 +285,11 @@ void read_output(const Fields &top, Case &c, const std::string &stem) {
     std::string name = stem;
     std::vector<std::pair<std::string, Location>> wanted;
     if (top.has("output")) {
-        Fields f(top.table("output"), top.at("output"), {"name", "formats", "svg_quality", "span"});
+        std::vector<std::string> keys = {"name", "formats"};
+        for (const auto &k : parameter_keys("output")) keys.push_back(k);  // span, svg_quality
+        Fields f(top.table("output"), top.at("output"), keys);
         f.finish();
-        if (f.has("span"))  // thickness of the 3-D files (OpenFOAM, extruded Plot3D)
-            c.parameters.push_back({EG2D_PARAM_SPAN, f.number("span", c.constants), f.at("span")});
+        read_parameters(f, "output", c, "svg_quality");
         if (f.has("svg_quality")) {  // colour the picture's cells by a per-cell metric
             c.svg_quality = pick_key(f, "svg_quality", "", cell_metrics()).id;
             c.svg_quality_at = f.at("svg_quality");

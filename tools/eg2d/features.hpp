@@ -9,7 +9,7 @@
 namespace eg2dtool {
 
 struct Feature {
-    const char *name;  // as written in a case file
+    const char *name;  // as written in a case file (the library's list name)
     int id;            // the library's constant
     bool available;    // compiled into this build of the tool's library
     const char *extension = "";  // output formats: file name extension
@@ -31,6 +31,7 @@ const std::vector<Feature> &controls();       // the other [controls] keys
 const std::vector<Feature> &formats();        // [output] formats
 const std::vector<Feature> &cell_metrics();   // [output] svg_quality
 const std::vector<Feature> &geometry();       // curves and distributions on sides
+const std::vector<Feature> &distributions();  // a side's distribution kind
 const std::vector<Feature> &systems();
 const std::vector<Feature> &topologies();
 const std::vector<Feature> &initializers();

@@ -17,6 +17,7 @@
 #include "demos.hpp"
 #include "failure.hpp"
 #include "features.hpp"
+#include "tables.hpp"
 #include "runner.hpp"
 
 using namespace eg2dtool;
@@ -30,6 +31,7 @@ const char *help_text =
     "       eg2d demo [NAME] [-o DIR] [--size NIxNJ] [--quiet]\n"
     "       eg2d demo --list\n"
     "       eg2d --help | --version      (--version lists what this build offers)\n"
+    "       eg2d --tables                (every parameter, format, metric and name, as Markdown)\n"
     "\n"
     "Generates a boundary-fitted quadrilateral grid by elliptic PDEs (libeg2d).\n"
     "  run      reads the case file (TOML; see docs/case-files.md), solves, prints a\n"
@@ -211,6 +213,10 @@ int main(int argc, char **argv) {
     for (int k = 1; k < argc; ++k) {
         if (!std::strcmp(argv[k], "--help") || !std::strcmp(argv[k], "-h")) {
             std::fputs(help_text, stdout);
+            return EXIT_OK;
+        }
+        if (!std::strcmp(argv[k], "--tables")) {
+            std::fputs(tables_markdown().c_str(), stdout);
             return EXIT_OK;
         }
         if (!std::strcmp(argv[k], "--version")) {

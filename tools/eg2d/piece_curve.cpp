@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "failure.hpp"
+#include "features.hpp"
 #include "toml_fields.hpp"
 
 namespace eg2dtool {
@@ -82,32 +83,31 @@ Distribution parse_distribution(const toml::node &node, const Location &where, c
     }
     if (!node.is_table()) throw Failure(EXIT_CASE, where.str() + ": expected a string or a table, found " + type_name(node));
     const toml::table &t = *node.as_table();
-    const std::string kind = Fields(t, where, {"kind"}).choice("kind", "", {"uniform", "exponential", "tanh", "tanh2", "vinokur"});
-    if (kind == "uniform") {
+    // kind: a name of the library's list (eg2d_list_find), each with its own keys
+    const std::string kind = Fields(t, where, {"kind"}).choice("kind", "", names(distributions()));
+    eg2d_list_find(EG2D_LIST_DISTRIBUTIONS, kind.c_str(), &d.kind);
+    if (d.kind == EG2D_DIST_UNIFORM) {
         Fields(t, where, {"kind"}).finish();
-        d.kind = EG2D_DIST_UNIFORM;
-    } else if (kind == "exponential") {  // beta > 0 clusters at the start
+    } else if (d.kind == EG2D_DIST_EXPONENTIAL) {  // beta > 0 clusters at the start
         Fields f(t, where, {"kind", "beta", "first_spacing"});
         f.finish();
-        d.kind = EG2D_DIST_EXPONENTIAL;
         read_stretching(f, "beta", constants, d);
-    } else if (kind == "tanh") {  // one-sided, clusters at the start
+    } else if (d.kind == EG2D_DIST_TANH_ONE) {  // one-sided, clusters at the start
         Fields f(t, where, {"kind", "delta", "first_spacing"});
         f.finish();
-        d.kind = EG2D_DIST_TANH_ONE;
         read_stretching(f, "delta", constants, d);
-    } else if (kind == "tanh2") {
+    } else if (d.kind == EG2D_DIST_TANH_TWO) {
         Fields f(t, where, {"kind", "b", "c", "first_spacing"});
         f.finish();
-        d.kind = EG2D_DIST_TANH_TWO;
         read_stretching(f, "b", constants, d);
         d.p2 = f.number("c", constants);
-    } else {  // Vinokur: the first and last spacings, in length units
+    } else if (d.kind == EG2D_DIST_VINOKUR) {  // the first and last spacings, in length units
         Fields f(t, where, {"kind", "first", "last"});
         f.finish();
-        d.kind = EG2D_DIST_VINOKUR;
         d.p1 = f.number("first", constants);
         d.p2 = f.number("last", constants);
+    } else {
+        throw Failure(EXIT_UNSUPPORTED, where.str() + ": kind \"" + kind + "\" has no case-file keys in this eg2d command");
     }
     return d;
 }

@@ -3,6 +3,7 @@
 
 #include <eg2d.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -249,7 +250,11 @@ int run_case(const Case &c, const RunOptions &o) {
     check(g, eg2d_set_topology(g, c.topology), c.topology_at);
     check(g, eg2d_set_system(g, c.system), c.system_at);
     check(g, eg2d_set_solver(g, c.solver), c.solver_at);
-    for (const auto &p : c.parameters) check(g, eg2d_set_parameter(g, p.id, p.value), p.where);
+    // Zeros last: a setting that is 0 cannot be what makes another one valid,
+    // and the library refuses a step that leaves every variational weight 0.
+    std::vector<ParameterSetting> params = c.parameters;
+    std::stable_partition(params.begin(), params.end(), [](const ParameterSetting &p) { return p.value != 0.0; });
+    for (const auto &p : params) check(g, eg2d_set_parameter(g, p.id, p.value), p.where);
     std::vector<SlidingSide> sliding;  // alive for the whole run
     for (const auto &s : c.sides) {
         if (s.pieces.front().sliding) {

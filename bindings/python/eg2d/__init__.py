@@ -13,6 +13,8 @@ from .errors import (ArgumentError, BoundaryError, DivergedError, Error, FileErr
                      UnsupportedError, error_for)
 from .functions import (last_error, parameter_bounds, read_plot3d, read_points, solver_name,  # noqa: F401
                         status_string, version)
+from .functions import (format_info, list_entries, list_find, list_name, parameter_info,  # noqa: F401
+                        quality_cell_field)
 from .curve import Curve  # noqa: F401
 from .functions import clustering_map, distribution, distribution_parameter, first_cell_height, tensor_parameter_grid  # noqa: F401,E501
 from .grid import Grid  # noqa: F401

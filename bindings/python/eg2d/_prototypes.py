@@ -20,6 +20,14 @@ PROTOTYPES = {
     "eg2d_status_string": (c_char_p, [c_int]),
     "eg2d_last_error": (c_char_p, [grid_p]),
     "eg2d_version": (None, [int_p, int_p, int_p]),
+    # Lists: what this library has, by name
+    "eg2d_list_count": (c_int, [c_int, int_p]),
+    "eg2d_list_entry": (c_int, [c_int, c_int, int_p, POINTER(c_char_p)]),
+    "eg2d_list_name": (c_char_p, [c_int, c_int]),
+    "eg2d_list_find": (c_int, [c_int, c_char_p, int_p]),
+    "eg2d_parameter_info": (c_int, [c_int, int_p, POINTER(c_char_p), POINTER(c_char_p)]),
+    "eg2d_format_info": (c_int, [c_int, int_p, POINTER(c_char_p)]),
+    "eg2d_quality_cell_field": (c_char_p, [c_int]),
     # Creating a grid
     "eg2d_create": (c_int, [c_int, c_int, POINTER(grid_p)]),
     "eg2d_destroy": (None, [grid_p]),

@@ -1,6 +1,6 @@
 """The calls of the C API that need no grid."""
 import os
-from ctypes import POINTER, byref, c_double, c_int
+from ctypes import POINTER, byref, c_char_p, c_double, c_int
 
 import numpy as np
 
@@ -46,6 +46,49 @@ def parameter_bounds(param):
 def _check(status):
     if status:
         raise error_for(status, last_error())
+
+
+def list_entries(list_id):
+    """[(id, name), ...] of a library list (LIST_SOLVERS, LIST_PARAMETERS, ...), in id order."""
+    count = c_int()
+    _check(lib.eg2d_list_count(int(list_id), byref(count)))
+    out = []
+    for k in range(count.value):
+        ident, name = c_int(), c_char_p()
+        _check(lib.eg2d_list_entry(int(list_id), k, byref(ident), byref(name)))
+        out.append((ident.value, _text(name.value)))
+    return out
+
+
+def list_name(list_id, ident):
+    """The name of an id in a library list, or None."""
+    return _text(lib.eg2d_list_name(int(list_id), int(ident)))
+
+
+def list_find(list_id, name):
+    """The id named `name` in a library list; ArgumentError (listing the valid names) if none."""
+    ident = c_int()
+    _check(lib.eg2d_list_find(int(list_id), name.encode("utf-8"), byref(ident)))
+    return ident.value
+
+
+def parameter_info(param):
+    """(kind, unit, summary) of a parameter: kind has the PARAM_KIND_* bits."""
+    kind, unit, summary = c_int(), c_char_p(), c_char_p()
+    _check(lib.eg2d_parameter_info(int(param), byref(kind), byref(unit), byref(summary)))
+    return kind.value, _text(unit.value), _text(summary.value)
+
+
+def format_info(fmt):
+    """(kind, suffix) of a file format: kind FORMAT_KIND_FILE or FORMAT_KIND_DIRECTORY."""
+    kind, suffix = c_int(), c_char_p()
+    _check(lib.eg2d_format_info(int(fmt), byref(kind), byref(suffix)))
+    return kind.value, _text(suffix.value)
+
+
+def quality_cell_field(metric):
+    """The name of a quality metric's per-cell field ("area"), or None for a summary-only metric."""
+    return _text(lib.eg2d_quality_cell_field(int(metric)))
 
 
 def _dp(a):
