@@ -1,5 +1,5 @@
 /* eg2d_bench: iterations, time and residual of every solver of the library
- * on the benchmark cases of issue 3, as a markdown table and as JSON.
+ * on the benchmark cases (cases.c), as a markdown table and as JSON.
  *
  *   eg2d_bench [--cases swan,valley,...] [--sizes 65,129,257,513,1025]
  *              [--solvers psor,psor:1,af,...] [--system winslow|laplace]
@@ -8,7 +8,7 @@
  *              swan 129^2 point Gauss-Seidel (PSOR, omega = 1) against
  *              multigrid in one run; swan 1025^2 multigrid against the point
  *              Gauss-Seidel extrapolated from its sweeps at 65^2 and 129^2
- *   eg2d_bench --seed004     seed 004 Table 2: an 87x31 O-grid, E < 5e-5 and 1e-10
+ *   eg2d_bench --ogrid       Ly & Norrison (2007) Table 2: an 87x31 O-grid, E < 5e-5 and 1e-10
  *   eg2d_bench --sweep [--repeats N] [--svg FILE]
  *              multigrid at 2^k, 2^k+1, 2^k+2 and round sizes from 65 to
  *              1025 against the nearest 2^k+1 size (sweep.c)
@@ -211,14 +211,14 @@ static void print_row(const char *case_name, int ni, int nj, const char *solver,
 }
 
 /*--------------------------------------------------------------------------
- * --compare: issue 3's two speed targets, measured in one run.
+ * --compare: the two speed targets (multigrid against Gauss-Seidel, AF against PSOR), measured in one run.
  *------------------------------------------------------------------------*/
 static void compare(int repeats) {
     const bench_case *swan = bench_find_case("swan");
     const int W = EG2D_SYSTEM_WINSLOW;
     result gs65, gs129, mg129, gs1025, mg1025;
     double p, sweeps, gs_cpu;
-    printf("Winslow, TFI start, residual 1e-10, swan (seed 003 A4); CPU s of this thread, median of %d\n\n", repeats);
+    printf("Winslow, TFI start, residual 1e-10, swan (the elliptic-grid course notes A4); CPU s of this thread, median of %d\n\n", repeats);
     print_header();
     gs65 = bench_run(swan, 65, swan->size_nj(65), EG2D_SOLVER_PSOR, 1.0, W, 1e-10, 600, 1);
     print_row("swan", 65, 65, "psor:1", &gs65);
@@ -282,7 +282,7 @@ static void usage(void) {
     fprintf(stderr, "usage: eg2d_bench [--cases LIST] [--sizes LIST] [--solvers LIST (name or name:omega)]\n"
                     "                  [--system winslow|laplace] [--tolerance T] [--cap CPU-SECONDS]\n"
                     "                  [--repeats N] [--json FILE]\n"
-                    "                  [--compare | --seed004 | --march | --wall | --internal | --variational]\n"
+                    "                  [--compare | --ogrid | --march | --wall | --internal | --variational]\n"
                     "       eg2d_bench --sweep [--repeats N (3)] [--svg FILE]\n"
                     "       eg2d_bench --quick [--repeats N] [--json FILE]   (a subset in about a minute)\n");
 }
@@ -296,8 +296,8 @@ int main(int argc, char **argv) {
 
     for (a = 1; a < argc; ++a) {
         const char *opt = argv[a], *val = a + 1 < argc ? argv[a + 1] : NULL;
-        if (!strcmp(opt, "--seed004")) {
-            bench_seed004();
+        if (!strcmp(opt, "--ogrid")) {
+            bench_ogrid();
             return 0;
         }
         if (!strcmp(opt, "--sweep")) {

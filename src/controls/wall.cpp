@@ -29,8 +29,8 @@
 // Anderson-accelerated (anderson.hpp; NACA0012 r = 10 at 1e-5 chord: 29-35
 // cycles instead of 43-48; 25-32 since psi has a gain of its own,
 // damped_update).
-// Nothing uses the wall's curvature, so straight walls with corners (seed
-// 000's channels, where Middlecoff-Thomas degenerates) are no special case.
+// Nothing uses the wall's curvature, so straight walls with corners (the
+// channels of Petrilli 1989, where Middlecoff-Thomas degenerates) are no special case.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -62,7 +62,7 @@ constexpr double kPhiLimit = 1.0;
 constexpr double kWidenLimit = 4.0;
 // The smallest gain an oscillating node is damped to, and the halving on a
 // turn / 10% recovery (damped_update): 3a10abd, which made multigrid
-// converge on seed 000's channel 1; the two-gain measurements are in
+// converge on Petrilli's (1989) channel 1; the two-gain measurements are in
 // bench/RESULTS.md, session 5.
 constexpr double kMinGain = 1e-3;
 // Largest change of a coefficient per update: a ramp from the start grid.

@@ -346,7 +346,7 @@ static void test_annulus_orthogonal(void **state) {
     eg2d_destroy(g);
 }
 
-/* Laplace (Amsden-Hirt) folds the valley of seed 003: eg2d_solve converges,
+/* Laplace (Amsden-Hirt) folds the valley of the elliptic-grid course notes: eg2d_solve converges,
  * then fails with EG2D_ERR_FOLDED naming the first folded cell, keeps the
  * grid, and the per-cell metrics show the same cells. */
 static void test_solve_reports_folds(void **state) {
