@@ -2,7 +2,8 @@
 """Every work cited by author and year is in docs/references.md.
 
 Scans the user- and developer-facing text (include/, src/, tools/, docs/,
-README.md, bindings/, examples/) for citations such as "Thompson (1985)",
+README.md, bindings/, examples/, and also CHANGELOG.md, bench/ and tests/
+but for their fuzz corpora and data) for citations such as "Thompson (1985)",
 "Steger & Sorenson 1979", "Thompson, Thames & Mastin (1974)",
 "Brackbill and Saltzman (1982)", "Ly & Norrison's (2007)", "Knupp et al.
 1996" or "Steger & Sorenson (1979, 1980)", and fails, naming file and line,
@@ -24,7 +25,9 @@ import pathlib
 import re
 import sys
 
-SCAN = ("include", "src", "tools", "docs", "README.md", "bindings", "examples")
+SCAN = ("include", "src", "tools", "docs", "README.md", "bindings", "examples", "CHANGELOG.md", "bench", "tests")
+# Inputs, not text: fuzz corpora and test data; and this file's own made-up citations.
+SKIP = (("tests", "fuzz", "corpus"), ("tests", "data"), ("tests", "references_cited.py"))
 SUFFIXES = {".md", ".h", ".hpp", ".c", ".cpp", ".py", ".f90", ".toml", ".txt", ".cmake", ".sh", ".in", ""}
 
 NAME = r"(?:[A-Z][a-z\u00e0-\u00ff]+(?:['\u2019](?!s\b)[a-z]+)?(?:-[A-Z][a-z\u00e0-\u00ff]+)?)"
@@ -84,6 +87,9 @@ def files(root: pathlib.Path):
             yield base
         elif base.is_dir():
             for f in sorted(base.rglob("*")):
+                rel = f.relative_to(root).parts
+                if any(rel[:len(p)] == p for p in SKIP):
+                    continue
                 if f.is_file() and f.suffix in SUFFIXES and "__pycache__" not in f.parts:
                     yield f
 
