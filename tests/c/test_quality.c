@@ -259,7 +259,8 @@ static void test_bow_tie(void **state) {
 }
 
 /* A converged test domain (the dome of the elliptic-grid course notes):
- * the summaries are the extremes of the per-cell values, and the cell areas add up to the area of the boundary polygon. */
+ * the summaries are the extremes of the per-cell values, and the cell
+ * areas add up to the area of the boundary polygon. */
 static void test_converged_dome(void **state) {
     enum { NI = 33, NJ = 25, NC = (NI - 1) * (NJ - 1) };
     static double x[NI * NJ], y[NI * NJ], v[NC];
