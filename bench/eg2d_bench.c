@@ -19,7 +19,7 @@
  *                            EG2D_SYSTEM_VARIATIONAL (V = aA + bS + cO + dW) against Winslow on
  *                            the course notes' domains at 65, 129, 257 (variational.c)
  *   eg2d_bench --quick       swan, annulus, NACA 0012 O and C at 65, 129, 250, every solver
- *                            (cap 10 CPU s): the same table in about a minute
+ *                            (cap 10 CPU s): the same table in about 20 seconds
  *
  * Cases (cases.c): swan, valley, annulus, annulus-source, naca0012,
  * naca0012-c, naca0012-wall. A solver name may carry ":omega" (psor:1
@@ -284,7 +284,7 @@ static void usage(void) {
                     "                  [--repeats N] [--json FILE]\n"
                     "                  [--compare | --ogrid | --march | --wall | --internal | --variational]\n"
                     "       eg2d_bench --sweep [--repeats N (3)] [--svg FILE]\n"
-                    "       eg2d_bench --quick [--repeats N] [--json FILE]   (a subset in about a minute)\n");
+                    "       eg2d_bench --quick [--repeats N] [--json FILE]   (a subset in about 20 s)\n");
 }
 
 int main(int argc, char **argv) {
@@ -346,7 +346,7 @@ int main(int argc, char **argv) {
             return 0;
         }
         if (!strcmp(opt, "--quick")) {
-            /* A representative subset in about a minute, to compare a change:
+            /* A representative subset in about 20 seconds, to compare a change:
              * a single block, an O-grid, the NACA 0012 O- and C-grids, every
              * solver, at two 2^k+1 sizes and a round one. */
             snprintf(cases_arg, sizeof cases_arg, "%s", "swan,annulus,naca0012,naca0012-c");
