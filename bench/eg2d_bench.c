@@ -218,7 +218,8 @@ static void compare(int repeats) {
     const int W = EG2D_SYSTEM_WINSLOW;
     result gs65, gs129, mg129, gs1025, mg1025;
     double p, sweeps, gs_cpu;
-    printf("Winslow, TFI start, residual 1e-10, swan (the elliptic-grid course notes A4); CPU s of this thread, median of %d\n\n", repeats);
+    printf("Winslow, TFI start, residual 1e-10, swan (elliptic-grid course notes, A4); CPU s of this thread, "
+           "median of %d\n\n", repeats);
     print_header();
     gs65 = bench_run(swan, 65, swan->size_nj(65), EG2D_SOLVER_PSOR, 1.0, W, 1e-10, 600, 1);
     print_row("swan", 65, 65, "psor:1", &gs65);

@@ -1,6 +1,7 @@
 // Point SOR: a lexicographic Gauss-Seidel sweep over the unknown nodes with
-// over-relaxation (the elliptic-grid course notes; the grid-generation lecture notes Code 1.2 is the omega = 1 case). The
-// coefficients are frozen at each node's current neighbours (Picard).
+// over-relaxation (the elliptic-grid course notes; Code 1.2 of the
+// grid-generation lecture notes is the omega = 1 case). The coefficients
+// are frozen at each node's current neighbours (Picard).
 #include <cmath>
 
 #include "solvers/auto_relaxation.hpp"
