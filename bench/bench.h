@@ -1,5 +1,5 @@
 /* The parts of the benchmark program eg2d_bench (bench/), shared between
- * its files: clocks, the cases, seed 004's table. */
+ * its files: clocks, the cases, Ly & Norrison's (2007) table. */
 #ifndef EG2D_BENCH_H
 #define EG2D_BENCH_H
 
@@ -43,8 +43,8 @@ bench_result bench_run(const bench_case *c, int ni, int nj, int solver, double o
  * at sizes round 2^k, against the nearest 2^k+1 in the same run. */
 void bench_sweep(int repeats, const char *svg_path);
 
-/* Seed 004 Table 2 (--seed004). */
-void bench_seed004(void);
+/* Ly & Norrison (2007) Table 2 (--ogrid). */
+void bench_ogrid(void);
 
 /* The hyperbolic march on NACA 0012 (--march, march.c). */
 void bench_march(void);

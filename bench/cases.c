@@ -1,4 +1,4 @@
-/* The benchmark cases of issue 3: the seed 003 domains, the annulus O-grid
+/* The benchmark cases: the elliptic-grid course notes domains, the annulus O-grid
  * with and without an attraction source, the NACA0012 O- and C-grids, and
  * the NACA0012 O-grid with the wall control at a first cell of 1e-5 chord. */
 #include <math.h>
@@ -27,7 +27,7 @@ static int set_naca0012_c(eg2d_grid *g) {
 
 /* The wall spacing 1e-5 chord the way a user asks for it: the wall
  * control (EG2D_ORTHO_WALL, eg2d_set_wall_spacing), which is updated between
- * iterations. (A static alternative, seed 002's parameter grid with t
+ * iterations. (A static alternative, Khattri's (2006) parameter grid with t
  * Vinokur-clustered to the wall, is unsound on an airfoil: it makes t
  * harmonic, and a harmonic t vanishing on a wedge of exterior angle
  * 345 degrees grows like rho^0.52 from the trailing edge, so the first
@@ -41,17 +41,17 @@ static int set_naca0012_wall(eg2d_grid *g) {
 }
 
 static const bench_case cases[] = {
-    {"swan", square, set_swan},          /* seed 003 A4 */
-    {"valley", square, set_valley},      /* seed 003 A1 */
-    {"dome", square, set_dome},          /* seed 003 A5: strongly curved top */
+    {"swan", square, set_swan},          /* the elliptic-grid course notes A4 */
+    {"valley", square, set_valley},      /* the elliptic-grid course notes A1 */
+    {"dome", square, set_dome},          /* the elliptic-grid course notes A5: strongly curved top */
     {"annulus", half, set_annulus},      /* O-grid, 1 <= r <= 3, n x (n/2+1) */
     {"naca0012", quarter, set_naca0012}, /* O-grid, sharp-TE NACA0012 in r = 10, n x (n/4+1) */
     {"naca0012-c", quarter, set_naca0012_c}, /* C-grid, n/4 wake points a side to x = 6, r = 5 */
-    /* The annulus with seed 004 eq 14's line attraction toward the inner wall
+    /* The annulus with Ly & Norrison (2007) eq 14's line attraction toward the inner wall
      * (mu = 100, kappa = 0.2): iterations against "annulus" are the cost of sources. */
     {"annulus-source", half, set_annulus_source},
     /* naca0012 with a first cell of 1e-5 chord at the wall (aspect ratios
-     * 8e2-3e3): issue 3's stretched-cell target, against "naca0012". */
+     * 8e2-3e3): the stretched-cell speed target, against "naca0012". */
     {"naca0012-wall", quarter, set_naca0012_wall},
 };
 

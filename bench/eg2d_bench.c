@@ -1,5 +1,5 @@
 /* eg2d_bench: iterations, time and residual of every solver of the library
- * on the benchmark cases of issue 3, as a markdown table and as JSON.
+ * on the benchmark cases (cases.c), as a markdown table and as JSON.
  *
  *   eg2d_bench [--cases swan,valley,...] [--sizes 65,129,257,513,1025]
  *              [--solvers psor,psor:1,af,...] [--system winslow|laplace]
@@ -8,7 +8,7 @@
  *              swan 129^2 point Gauss-Seidel (PSOR, omega = 1) against
  *              multigrid in one run; swan 1025^2 multigrid against the point
  *              Gauss-Seidel extrapolated from its sweeps at 65^2 and 129^2
- *   eg2d_bench --seed004     seed 004 Table 2: an 87x31 O-grid, E < 5e-5 and 1e-10
+ *   eg2d_bench --ogrid       Ly & Norrison (2007) Table 2: an 87x31 O-grid, E < 5e-5 and 1e-10
  *   eg2d_bench --sweep [--repeats N] [--svg FILE]
  *              multigrid at 2^k, 2^k+1, 2^k+2 and round sizes from 65 to
  *              1025 against the nearest 2^k+1 size (sweep.c)
@@ -19,7 +19,7 @@
  *                            EG2D_SYSTEM_VARIATIONAL (V = aA + bS + cO + dW) against Winslow on
  *                            the course notes' domains at 65, 129, 257 (variational.c)
  *   eg2d_bench --quick       swan, annulus, NACA 0012 O and C at 65, 129, 250, every solver
- *                            (cap 10 CPU s): the same table in about a minute
+ *                            (cap 10 CPU s): the same table in about 20 seconds
  *
  * Cases (cases.c): swan, valley, annulus, annulus-source, naca0012,
  * naca0012-c, naca0012-wall. A solver name may carry ":omega" (psor:1
@@ -211,14 +211,15 @@ static void print_row(const char *case_name, int ni, int nj, const char *solver,
 }
 
 /*--------------------------------------------------------------------------
- * --compare: issue 3's two speed targets, measured in one run.
+ * --compare: the two speed targets (multigrid against Gauss-Seidel, AF against PSOR), measured in one run.
  *------------------------------------------------------------------------*/
 static void compare(int repeats) {
     const bench_case *swan = bench_find_case("swan");
     const int W = EG2D_SYSTEM_WINSLOW;
     result gs65, gs129, mg129, gs1025, mg1025;
     double p, sweeps, gs_cpu;
-    printf("Winslow, TFI start, residual 1e-10, swan (seed 003 A4); CPU s of this thread, median of %d\n\n", repeats);
+    printf("Winslow, TFI start, residual 1e-10, swan (elliptic-grid course notes, A4); CPU s of this thread, "
+           "median of %d\n\n", repeats);
     print_header();
     gs65 = bench_run(swan, 65, swan->size_nj(65), EG2D_SOLVER_PSOR, 1.0, W, 1e-10, 600, 1);
     print_row("swan", 65, 65, "psor:1", &gs65);
@@ -282,9 +283,9 @@ static void usage(void) {
     fprintf(stderr, "usage: eg2d_bench [--cases LIST] [--sizes LIST] [--solvers LIST (name or name:omega)]\n"
                     "                  [--system winslow|laplace] [--tolerance T] [--cap CPU-SECONDS]\n"
                     "                  [--repeats N] [--json FILE]\n"
-                    "                  [--compare | --seed004 | --march | --wall | --internal | --variational]\n"
+                    "                  [--compare | --ogrid | --march | --wall | --internal | --variational]\n"
                     "       eg2d_bench --sweep [--repeats N (3)] [--svg FILE]\n"
-                    "       eg2d_bench --quick [--repeats N] [--json FILE]   (a subset in about a minute)\n");
+                    "       eg2d_bench --quick [--repeats N] [--json FILE]   (a subset in about 20 s)\n");
 }
 
 int main(int argc, char **argv) {
@@ -296,8 +297,8 @@ int main(int argc, char **argv) {
 
     for (a = 1; a < argc; ++a) {
         const char *opt = argv[a], *val = a + 1 < argc ? argv[a + 1] : NULL;
-        if (!strcmp(opt, "--seed004")) {
-            bench_seed004();
+        if (!strcmp(opt, "--ogrid")) {
+            bench_ogrid();
             return 0;
         }
         if (!strcmp(opt, "--sweep")) {
@@ -346,7 +347,7 @@ int main(int argc, char **argv) {
             return 0;
         }
         if (!strcmp(opt, "--quick")) {
-            /* A representative subset in about a minute, to compare a change:
+            /* A representative subset in about 20 seconds, to compare a change:
              * a single block, an O-grid, the NACA 0012 O- and C-grids, every
              * solver, at two 2^k+1 sizes and a round one. */
             snprintf(cases_arg, sizeof cases_arg, "%s", "swan,annulus,naca0012,naca0012-c");

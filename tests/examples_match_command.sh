@@ -2,7 +2,7 @@
 # The examples that make `eg2d airfoil`'s grid from a program
 # (examples/c/command_grid.c, examples/fortran/command_grid.f90,
 # examples/python/command_grid.py, run with $EG2D_PYTHON) give the
-# command's Plot3D file byte for byte at 385x97 and 1793x513 (issue 35: a
+# command's Plot3D file byte for byte at 385x97 and 1793x513 (a
 # program embedding the library gets the command's grid).
 #   examples_match_command.sh EG2D_COMMAND EXAMPLE...
 set -euo pipefail

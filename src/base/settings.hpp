@@ -31,7 +31,7 @@ struct Settings {
     double wall_relaxation = 0.1;     // under-relaxation of its updates, (0, 1]
     double wall_growth = 1.15;        // cell-to-cell growth of a marched wall layer, [1, 1.5]
     double wall_layer = 3;            // EG2D_PARAM_WALL_LAYER: 0 control, 1 normals, 2 hybrid, 3 automatic (wall.cpp)
-    double hermite_spacing = 1.0;     // EG2D_INIT_HERMITE's alpha (seed 001 eq 2.6)
+    double hermite_spacing = 1.0;     // EG2D_INIT_HERMITE's alpha (the grid-generation lecture notes eq 2.6)
     // EG2D_INIT_HERMITE at chosen sides (grid/tfi_hermite_sides.cpp): a mask
     // of 1 << side (0: the eta-only form above) and each side's first-node
     // height (0: alpha times the uniform spacing).
@@ -55,7 +55,7 @@ struct Settings {
     double svg_quality = -1;          // EG2D_QUALITY_* colouring SVG cells, -1 none
     double span = 1.0;                // thickness of the one cell layer of the 3-D files
 
-    // Approximate factorisation (seed 004 eqs 5-13); 0 = automatic where allowed.
+    // Approximate factorisation (Ly & Norrison 2007 eqs 5-13); 0 = automatic where allowed.
     double af_dtau_min = 0.5;         // smallest step of the cycle, in units of 1/(2(alpha+gamma))
     double af_dtau_max = 0.0;         // largest step; 0: from the grid size
     double af_steps = 0.0;            // steps per cycle M (end points repeated); 0: from the ratio

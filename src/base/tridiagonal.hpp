@@ -1,6 +1,6 @@
 // Tridiagonal kernels for the line solvers (LSOR, AF, line smoothers):
 // the Thomas algorithm, and the cyclic system of a periodic line solved by
-// Sherman-Morrison (seed 004), so the O-grid cut moves with the interior.
+// Sherman-Morrison (Ly & Norrison 2007), so the O-grid cut moves with the interior.
 #pragma once
 #include <cstddef>
 #include <vector>

@@ -1,4 +1,4 @@
-// The user's own P, Q per node (seed 000's p1/p2 arrays): J^2 (P r_xi + Q r_eta),
+// The user's own P, Q per node (the p1/p2 arrays of Petrilli 1989): J^2 (P r_xi + Q r_eta),
 // exactly the Pascal listing's jac2*(p1*xdi + p2*xdj) in `xynew`.
 #include "controls/controls.hpp"
 

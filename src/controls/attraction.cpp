@@ -1,7 +1,7 @@
 // Thompson's attraction to lines and points (NUMERICS.md "Source terms"):
 //   P = -sum_l a_l sign(xi - xi_l) exp(-c_l |xi - xi_l|)
 //       -sum_k b_k sign(xi - xi_k) exp(-d_k sqrt((xi-xi_k)^2 + (eta-eta_k)^2)),
-// Q likewise in eta. Seed 004 eq 14 is the eta-line part with mu = a, kappa = c.
+// Q likewise in eta. Ly & Norrison (2007) eq 14 is the eta-line part with mu = a, kappa = c.
 // P and Q enter as J^2 (P r_xi + Q r_eta): the d_xi, d_eta terms.
 #include <cmath>
 

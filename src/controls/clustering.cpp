@@ -1,4 +1,4 @@
-// Seed 002's clustering maps of [0, 1] onto itself (Cluster_X_Near,
+// Khattri's (2006) clustering maps of [0, 1] onto itself (Cluster_X_Near,
 // Cluster_Two_Lines_X with Eriksson_1, Bound_Clust_X), written as functions
 // of the uniform coordinate u (the listing applies its branches in sequence
 // to already-mapped values and has typos; these are its formulas, once each).

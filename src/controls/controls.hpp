@@ -10,7 +10,7 @@
 namespace eg2d {
 
 // attraction.cpp: Thompson's line and point attraction (NUMERICS.md "Source
-// terms"; seed 004 eq 14 is its line part), index units, into d_xi, d_eta.
+// terms"; Ly & Norrison (2007) eq 14 is its line part), index units, into d_xi, d_eta.
 struct LineSource {
     int direction;  // 0: a xi = const line (acts on P), 1: an eta = const line (acts on Q)
     double line, amplitude, decay;
@@ -27,11 +27,11 @@ public:
     std::vector<PointSource> points;
 };
 
-// arrays.cpp: the user's P, Q per node (seed 000's p1/p2) into d_xi, d_eta.
+// arrays.cpp: the user's P, Q per node (the p1/p2 of Petrilli 1989) into d_xi, d_eta.
 // An empty vector is zero.
 std::unique_ptr<Control> make_source_arrays(std::vector<double> p, std::vector<double> q);
 
-// middlecoff_thomas.cpp: seed 000 section 4 (eqs 4.7, 4.8) into a_xi, c_eta.
+// middlecoff_thomas.cpp: Petrilli (1989) section 4 (eqs 4.7, 4.8) into a_xi, c_eta.
 std::unique_ptr<Control> make_middlecoff_thomas();
 
 // wall.cpp: orthogonality at chosen sides with a first-cell height.
@@ -46,7 +46,7 @@ bool is_wall_control(const Control *c);
 // (a no-op without held rows).
 void add_wall_layer_fields(const Grid &g, double growth, ControlFields &fields);
 
-// parameter_grid.cpp: seed 002 eqs 3-7 from a grid (s, t) on the unit square.
+// parameter_grid.cpp: Khattri (2006) eqs 3-7 from a grid (s, t) on the unit square.
 std::unique_ptr<Control> make_parameter_grid(std::vector<double> s, std::vector<double> t);
 // The first unknown node where the parameter grid's Jacobian s_xi t_eta -
 // s_eta t_xi is zero or of the other sign than the first one (i = -1: none).
@@ -56,7 +56,7 @@ ParameterFold parameter_grid_fold(const Connectivity &conn, const double *s, con
 // weight.cpp: equidistribution of a weight per node into a_xi, c_eta.
 std::unique_ptr<Control> make_weight_control(std::vector<double> w);
 
-// clustering.cpp: seed 002's one-dimensional clustering maps of [0, 1].
+// clustering.cpp: Khattri's (2006) one-dimensional clustering maps of [0, 1].
 enum class Clustering { Line = 0, TwoLines = 1, Boundaries = 2 };
 double clustering_map(Clustering kind, double a, double b, double strength, double u);
 

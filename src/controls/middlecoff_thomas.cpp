@@ -1,11 +1,11 @@
-// Middlecoff-Thomas orthogonality sources (seed 000 section 4, eqs 4.7, 4.8;
+// Middlecoff-Thomas orthogonality sources (Petrilli 1989 section 4, eqs 4.7, 4.8;
 // the listing's `orthog`): on the eta = const boundaries
 //   phi = -(x_xi x_xixi + y_xi y_xixi) / (x_xi^2 + y_xi^2),
 // on the xi = const boundaries psi likewise in eta; Phi is interpolated
 // linearly in j between the two eta-boundaries, Psi linearly in i. They are
 // the a_xi and c_eta terms: alpha (r_xixi + Phi r_xi) + gamma (r_etaeta + Psi r_eta).
 // An O-grid has no xi = const boundary: Psi = 0 there.
-// As seed 000 reports, on boundaries made only of straight segments and
+// As Petrilli (1989) reports, on boundaries made only of straight segments and
 // corners phi is zero except next to the corners; EG2D_ORTHO_WALL is the
 // method that works there.
 #include "controls/controls.hpp"

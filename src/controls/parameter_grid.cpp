@@ -1,11 +1,11 @@
-// Adaptive control from a parameter-space grid (seed 002 eqs 3-7, Table 1):
+// Adaptive control from a parameter-space grid (Khattri 2006 eqs 3-7, Table 1):
 // the physical grid is made to inherit the distribution of a grid (s, t) on
 // the unit square. With T = [s_xi s_eta; t_xi t_eta],
 //   P11 = -T^-1 (s_xixi, t_xixi),  P12 = -T^-1 (s_xieta, t_xieta),
 //   P22 = -T^-1 (s_etaeta, t_etaeta),
 //   C_xi = alpha P11^1 - 2 beta P12^1 + gamma P22^1, C_eta likewise with ^2,
 // i.e. a_xi = P11^1, b_xi = -2 P12^1, c_xi = P22^1 and the same for eta
-// (seed 002 writes g22, g12, g11 for alpha, beta, gamma; its eq 7 has typos and
+// (Khattri 2006 writes g22, g12, g11 for alpha, beta, gamma; its eq 7 has typos and
 // its listing computes g12 as a product: these are the equations, derived so
 // that r = (s, t) solves the system when the physical domain is the square).
 // Differences are in index units. On an O-grid s runs once round: across the

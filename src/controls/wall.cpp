@@ -17,8 +17,9 @@
 // (r_etaeta + psi r_eta: the spacing ratio of consecutive cells is
 // (1 - psi/2) / (1 + psi/2)), independent of the domain's size.
 //
-// Robustness (as in GRAPE and Hilgenstock's updates): the coefficients are
-// under-relaxed (EG2D_PARAM_WALL_RELAXATION), the normal one is limited to
+// Robustness (as in GRAPE, Sorenson 1980, and Hilgenstock's 1988
+// updates): the coefficients are under-relaxed
+// (EG2D_PARAM_WALL_RELAXATION), the normal one is limited to
 // |psi| <= 3 and the tangential one to |phi| <= 1, both relative to the
 // wall-normal metric and widened up to 4x where the along-wall metric is
 // the larger (kPsiLimit, kPhiLimit, kWidenLimit); the value found at the first
@@ -29,8 +30,8 @@
 // Anderson-accelerated (anderson.hpp; NACA0012 r = 10 at 1e-5 chord: 29-35
 // cycles instead of 43-48; 25-32 since psi has a gain of its own,
 // damped_update).
-// Nothing uses the wall's curvature, so straight walls with corners (seed
-// 000's channels, where Middlecoff-Thomas degenerates) are no special case.
+// Nothing uses the wall's curvature, so straight walls with corners (the
+// channels of Petrilli 1989, where Middlecoff-Thomas degenerates) are no special case.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -50,9 +51,9 @@ namespace {
 // widening came with the first wall control (823dc6d; limited, relaxed
 // coefficients as in GRAPE and Hilgenstock's updates, above) and have not
 // been measured one by one; what is measured of them is in bench/RESULTS.md
-// ("Wall control"): at the NACA0012 trailing edge phi's target jumps between
-// its limits +-1, and at 257x65, 1e-3 chord the limit binds (the first cell
-// stops 20% short).
+// ("The wall control in numbers" and its lab log): at the NACA0012
+// trailing edge phi's target jumps between its limits +-1, and at
+// 257x65, 1e-3 chord the limit binds (the first cell stops 20% short).
 // |psi| <= 3 (823dc6d's text gave 1.5, where the spacing ratio
 // (1 - psi/2)/(1 + psi/2) reaches 7; its code had 3, unchanged since).
 constexpr double kPsiLimit = 3.0;
@@ -62,8 +63,8 @@ constexpr double kPhiLimit = 1.0;
 constexpr double kWidenLimit = 4.0;
 // The smallest gain an oscillating node is damped to, and the halving on a
 // turn / 10% recovery (damped_update): 3a10abd, which made multigrid
-// converge on seed 000's channel 1; the two-gain measurements are in
-// bench/RESULTS.md, session 5.
+// converge on Petrilli's (1989) channel 1; the two-gain measurements are in
+// bench/RESULTS.md, "Multigrid under the wall control (naca0012-wall)".
 constexpr double kMinGain = 1e-3;
 // Largest change of a coefficient per update: a ramp from the start grid.
 // bench/RESULTS.md ("About 16 cycles are the ramp"): multigrid's pace is 5x

@@ -1,4 +1,4 @@
-// Weight-function control (seed 001: "P and Q specified from a weight
+// Weight-function control (the grid-generation lecture notes: "P and Q specified from a weight
 // function ... used in adaptive methods"). Larger w = denser grid: along each
 // index direction the spacing equidistributes w, w ds = const, whose
 // one-dimensional form (w r_xi)_xi = 0 is r_xixi + (w_xi / w) r_xi = 0. We

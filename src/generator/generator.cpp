@@ -402,7 +402,7 @@ Generator::RunEnd Generator::run(long max_iterations, bool stop_at_tolerance) {
                                     variational_solver_names().c_str()));
     set_up();
     const ControlFields &fields = controls_.update(grid_, true);
-    // The automatic relaxation factor is an over-relaxation (seed 003's
+    // The automatic relaxation factor is an over-relaxation (the elliptic-grid course notes'
     // optimum for Laplace). While a wall control is updated between sweeps
     // its strong first-order terms (rows that are not diagonally dominant
     // next to a sharp convex corner, the NACA0012 trailing edge) make

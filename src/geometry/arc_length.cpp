@@ -1,5 +1,5 @@
-// Arc-length reparameterisation, seed 001 eq 2.11: the integral by adaptive
-// Gauss-Legendre panels, its inverse by Newton's method (as the seed says)
+// Arc-length reparameterisation, the grid-generation lecture notes eq 2.11: the integral by adaptive
+// Gauss-Legendre panels, its inverse by Newton's method (as the lecture notes say)
 // safeguarded by bisection on the panel that holds the answer.
 #include <algorithm>
 #include <cmath>

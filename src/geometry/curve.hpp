@@ -39,7 +39,7 @@ std::shared_ptr<Curve> make_naca4(const char *digits, bool closed_te);
 // spline oriented like make_naca4. Throws Io (file) or Argument (contents).
 std::shared_ptr<Curve> read_airfoil(const char *path);
 
-// Arc length of a curve (seed 001 eq 2.11): s(t) = (1/L) int_0^t |r'(u)| du.
+// Arc length of a curve (the grid-generation lecture notes eq 2.11): s(t) = (1/L) int_0^t |r'(u)| du.
 // The integral is tabulated once on panels of 5-point Gauss-Legendre
 // quadrature, split until halving a panel changes its length by less than
 // 1e-14 L; s -> t is then solved by safeguarded Newton on one panel. The

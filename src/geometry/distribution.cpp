@@ -1,4 +1,4 @@
-// The stretching functions of seed 001 section 2.5 and Vinokur's two-sided
+// The stretching functions of the grid-generation lecture notes section 2.5 and Vinokur's two-sided
 // stretching (M. Vinokur, "On one-dimensional stretching functions for
 // finite-difference calculations", J. Comput. Phys. 50 (1983) 215-234; the
 // form of Thompson, Warsi & Mastin, "Numerical Grid Generation", 1985,
@@ -153,18 +153,21 @@ void check_closed_form(int id, double p1, double p2) {
 double closed_form(int id, int k, int N, double p1, double p2) {
     const double u = static_cast<double>(k) / N;
     switch (id) {
-    case EG2D_DIST_EXPONENTIAL:  // seed 001, after eq 2.12: s = (e^{beta u} - 1)/(e^beta - 1)
+    // The grid-generation lecture notes, after eq 2.12: s = (e^{beta u} - 1)/(e^beta - 1).
+    case EG2D_DIST_EXPONENTIAL:
         return std::expm1(p1 * k / N) / std::expm1(p1);
     // The tanh maps are evaluated in a form without cancellation, so that a
     // small first spacing keeps its relative accuracy (1 + tanh(..)/tanh(..)
     // loses all of it below 1e-16): tanh x - tanh y = sinh(x - y)/(cosh x cosh y).
     // Below a parameter of 1e-8 each map is u to double precision (s - u =
     // O(delta^2)), and a subnormal parameter would give 0/0 (found by fuzz_curves).
-    case EG2D_DIST_TANH_ONE:  // seed 001 eq 2.13: s = 1 + tanh(delta (u - 1)/2)/tanh(delta/2)
-        //                                         = sinh(delta u/2)/(cosh(delta (u - 1)/2) sinh(delta/2))
+    // TANH_ONE, the grid-generation lecture notes eq 2.13:
+    case EG2D_DIST_TANH_ONE:  // s = 1 + tanh(delta (u - 1)/2)/tanh(delta/2)
+        //                          = sinh(delta u/2)/(cosh(delta (u - 1)/2) sinh(delta/2))
         if (p1 < 1e-8) return u;
         return std::sinh(0.5 * p1 * u) / (std::cosh(0.5 * p1 * (u - 1)) * std::sinh(0.5 * p1));
-    case EG2D_DIST_TANH_TWO:  // seed 001 end of 2.5: s = (tanh(b (u - c)) - A)/(B - A), A = tanh(-b c),
+    // TANH_TWO, the grid-generation lecture notes, end of section 2.5:
+    case EG2D_DIST_TANH_TWO:  // s = (tanh(b (u - c)) - A)/(B - A), A = tanh(-b c),
         //                       B = tanh(b (1 - c)); = sinh(b u) cosh(b (1 - c))/(cosh(b (u - c)) sinh(b))
         //                       (b <= 350: no overflow)
         if (p1 < 1e-8) return u;

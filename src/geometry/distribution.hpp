@@ -1,4 +1,4 @@
-// Point distributions on [0, 1] (seed 001 section 2.5): s_k = s(u_k),
+// Point distributions on [0, 1] (the grid-generation lecture notes section 2.5): s_k = s(u_k),
 // u_k = k/(n-1), with s(0) = 0, s(1) = 1 and s increasing.
 #pragma once
 #include "base/table.hpp"

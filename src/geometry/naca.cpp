@@ -1,5 +1,5 @@
 // NACA 4-digit sections (Abbott & von Doenhoff, "Theory of Wing Sections",
-// 1959, sec. 6.4; seed 001 section 2.4 uses NACA0012):
+// 1959, sec. 6.4; the grid-generation lecture notes section 2.4 uses NACA0012):
 //   y_t = 5 t (0.2969 sqrt(x) - 0.1260 x - 0.3516 x^2 + 0.2843 x^3 + a4 x^4),
 // a4 = -0.1015 (the standard blunt trailing edge) or -0.1036 (closed, sharp);
 // camber line y_c = m/p^2 (2 p x - x^2) for x < p, m/(1-p)^2 ((1-2p) + 2 p x - x^2)

@@ -101,8 +101,8 @@ void set_side_curve(Generator &gen, Side side, const ArcLength &curve, int distr
     if (!why.empty()) {
         if (!(flags & kCurveOrient))
             fail(Failure::Boundary,
-                 format("side %s runs against the grid (seed 001 fig 1.13): %s; pass EG2D_CURVE_ORIENT to reverse "
-                        "it when needed, or EG2D_CURVE_REVERSE", side_name(side), why.c_str()));
+                 format("side %s runs against the grid: %s; pass EG2D_CURVE_ORIENT to reverse it when needed, "
+                        "or EG2D_CURVE_REVERSE", side_name(side), why.c_str()));
         reverse();
     }
     if (flags & kCurveSliding) {

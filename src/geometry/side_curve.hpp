@@ -1,4 +1,4 @@
-// Points of a curve on a grid side, in the direction the grid needs (seed 001
+// Points of a curve on a grid side, in the direction the grid needs (the grid-generation lecture notes
 // figure 1.13: opposite sides must run the same way).
 #pragma once
 #include <vector>

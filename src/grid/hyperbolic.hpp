@@ -1,4 +1,4 @@
-// The hyperbolic march (Steger & Chaussee 1980; Chan & Steger 1992; seed 001
+// The hyperbolic march (Steger & Chaussee 1980; Chan & Steger 1992; the grid-generation lecture notes
 // sections 2.8-2.10): from the JMIN curve, layer by layer, the grid that is
 // orthogonal to the previous layer with the cell areas the marching schedule
 // asks for. It fills the whole grid, outer boundary included. The equations,

@@ -1,4 +1,4 @@
-// Linear transfinite interpolation, seed 001 eq 2.2, with the index
+// Linear transfinite interpolation, the grid-generation lecture notes eq 2.2, with the index
 // parameters r = i/(ni-1), s = j/(nj-1).
 #include "grid/initializers.hpp"
 

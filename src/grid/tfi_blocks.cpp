@@ -2,7 +2,7 @@
 // and rows cut the grid into sub-blocks, and each is filled by the method
 // as a grid of its own whose sides are pieces of the boundary and of the
 // lines (piecewise transfinite interpolation, Thompson, Warsi & Mastin
-// 1985; seed 001's remark after eq 2.2, "x and y given on several
+// 1985; the grid-generation lecture notes' remark after eq 2.2, "x and y given on several
 // coordinate lines in the interior"). The grid lines
 // then pass through the lines' points exactly; the spacing is continuous
 // across a line, its slope is not.

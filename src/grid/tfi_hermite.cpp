@@ -1,8 +1,8 @@
-// TFI with Hermite blending in eta and the orthogonal projector of seed 001
+// TFI with Hermite blending in eta and the orthogonal projector of the grid-generation lecture notes
 // (eqs 2.4-2.6): at JMIN and JMAX the eta-derivative is normal to the side,
-// with length d/Delta = alpha |r(i, nj-1) - r(i, 0)| (the seed's d(s) =
+// with length d/Delta = alpha |r(i, nj-1) - r(i, 0)| (the lecture notes' d(s) =
 // alpha Delta r, alpha measured against the straight line between the two
-// boundary points of the column). In xi: linear TFI (the Boolean sum, seed 001
+// boundary points of the column). In xi: linear TFI (the Boolean sum, the grid-generation lecture notes
 // eq 2.3) for the single-block and C topologies, none for the O-grid.
 #include <cmath>
 #include <vector>
@@ -40,7 +40,7 @@ std::vector<Vec> normal_derivatives(const Grid &g, int j, double alpha) {
         d[static_cast<std::size_t>(i)] = t > 0 ? Vec{len * ty / t, -len * tx / t} : Vec{0.0, 0.0};
         orientation += d[static_cast<std::size_t>(i)].x * cx + d[static_cast<std::size_t>(i)].y * cy;
     }
-    // One sign for the whole row (seed 001 eq 2.6 leaves it open): the one that
+    // One sign for the whole row (the grid-generation lecture notes eq 2.6 leaves it open): the one that
     // points into the domain on balance. The derivative is d r/d s, s = eta
     // from JMIN to JMAX, so it points away from JMIN at both rows.
     if (orientation < 0)
@@ -73,7 +73,7 @@ void tfi_hermite(Grid &g, const Settings &settings) {
         auto deriv = [&](const std::vector<Vec> &d, int i) {
             return pass == 0 ? d[static_cast<std::size_t>(i)].x : d[static_cast<std::size_t>(i)].y;
         };
-        // P_eta at column i and eta = s: Hermite blending, seed 001 eq 2.4.
+        // P_eta at column i and eta = s: Hermite blending, the grid-generation lecture notes eq 2.4.
         auto p_eta = [&](int i, double s) {
             const double phi0 = (2 * s + 1) * (1 - s) * (1 - s), phi1 = (3 - 2 * s) * s * s;
             const double psi0 = (1 - s) * (1 - s) * s, psi1 = (s - 1) * s * s;
@@ -89,7 +89,7 @@ void tfi_hermite(Grid &g, const Settings &settings) {
             const double left = p_eta(0, s), right = p_eta(ni - 1, s);
             for (int i = 1; i < ni - 1; ++i) {
                 const double r = static_cast<double>(i) / (ni - 1);
-                // Boolean sum P_xi + P_eta - P_xi P_eta (seed 001 eq 2.3).
+                // Boolean sum P_xi + P_eta - P_xi P_eta (the grid-generation lecture notes eq 2.3).
                 out[at(i, j)] = (1 - r) * f[at(0, j)] + r * f[at(ni - 1, j)] + p_eta(i, s) - (1 - r) * left - r * right;
             }
         }

@@ -1,5 +1,5 @@
 // Hermite TFI at chosen sides, in both directions: the Boolean sum
-// P_xi + P_eta - P_xi P_eta (seed 001 eq 2.3) of Hermite projectors (eq 2.4)
+// P_xi + P_eta - P_xi P_eta (the grid-generation lecture notes eq 2.3) of Hermite projectors (eq 2.4)
 // whose derivatives at the chosen sides are solved from the discrete form of
 // the orthogonality and spacing conditions (eqs 2.5-2.6): the first interior
 // node of each grid line leaving a chosen side lies on the side's normal at

@@ -1,4 +1,4 @@
-// GMV ASCII, seed 002's viewer format. The seed's writer leaves out the z
+// GMV ASCII, Khattri's (2006) viewer format. Khattri's writer leaves out the z
 // coordinates GMV requires and numbers the quad corners wrongly; here the
 // nodes carry x, y and z = 0, each quad its four 1-based corners counter-
 // clockwise in (i, j), and the per-cell quality metrics are cell variables.

@@ -1,14 +1,14 @@
-// Matlab/Octave script, seed 002's second format: assigns xl(i,j), yl(i,j)
+// Matlab/Octave script, Khattri's (2006) second format: assigns xl(i,j), yl(i,j)
 // (1-based) and plots the boundary in red and the interior lines in blue.
 // The coordinates are whole matrices in one statement each (faster to
-// parse than the seed's one assignment per node), 17 significant digits.
+// parse than Khattri's one assignment per node), 17 significant digits.
 #include "io/formats.hpp"
 
 namespace eg2d {
 
 namespace {
 void matrix(OutputFile &out, const char *name, const Grid &g, const std::vector<double> &v) {
-    // Rows are i, columns j, as the seed's xl(i+1, j+1).
+    // Rows are i, columns j, as Khattri's xl(i+1, j+1).
     out.print("%s = [\n", name);
     for (int i = 0; i < g.ni(); ++i) {
         for (int j = 0; j < g.nj(); ++j)

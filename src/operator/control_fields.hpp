@@ -5,9 +5,9 @@
 //   C_eta = alpha*a_eta + beta*b_eta + gamma*c_eta + J^2*d_eta
 //   alpha r_xixi - 2 beta r_xieta + gamma r_etaeta + C_xi r_xi + C_eta r_eta = 0
 //
-// TTM sources:          P -> d_xi, Q -> d_eta          (seed 000 p1/p2, seed 004 p/q)
-// Thomas-Middlecoff:    Phi -> a_xi, Psi -> c_eta      (seed 000 section 4)
-// Seed 002 adaptive:    P11^1 -> a_xi, -2 P12^1 -> b_xi, P22^1 -> c_xi,
+// TTM sources:          P -> d_xi, Q -> d_eta          (Petrilli 1989 p1/p2, Ly & Norrison 2007 p/q)
+// Thomas-Middlecoff:    Phi -> a_xi, Psi -> c_eta      (Petrilli 1989 section 4)
+// Khattri (2006) adaptive:    P11^1 -> a_xi, -2 P12^1 -> b_xi, P22^1 -> c_xi,
 //                       P11^2 -> a_eta, -2 P12^2 -> b_eta, P22^2 -> c_eta
 //
 // Values are per node, in the index units of the grid they belong to. On a

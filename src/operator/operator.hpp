@@ -1,5 +1,5 @@
 // The discrete operator of NUMERICS.md at one node: central differences
-// (seed 000 eqs 5.1a-e), the metric coefficients alpha, beta, gamma, J and the
+// (Petrilli 1989 eqs 5.1a-e), the metric coefficients alpha, beta, gamma, J and the
 // control terms. Every solver and the residual use this one definition.
 #pragma once
 #include <cstddef>

@@ -1,4 +1,4 @@
-// Approximate factorisation with false transients (seed 004 eqs 5-13).
+// Approximate factorisation with false transients (Ly & Norrison 2007 eqs 5-13).
 //
 // A pseudo-time derivative is added to NUMERICS.md's equation,
 // r_tau = L(r), and discretised with Warming and Beam's rule (eq 6, a, b).
@@ -10,7 +10,7 @@
 //   [1 - dt (gamma d_etaeta + C_eta d_eta)] dr  = dr*,        r^(n+1) = r^n + dr
 //
 // with a~ = a/(1+a) (eq 8) and the coefficients frozen at r^n (lagged, as in
-// the seed). The step dt is one number for the whole grid, as in eq 10:
+// Ly & Norrison 2007). The step dt is one number for the whole grid, as in eq 10:
 // tau / D with D the geometric mean over the unknowns of 2(alpha+gamma)
 // (Laplace: 4), so tau is dimensionless and the same cycle fits every grid
 // scale. (A step per node, tau / (2(alpha+gamma)), folds the NACA0012 O-grid
@@ -21,10 +21,10 @@
 // leading and trailing edges. The same steps on the coefficients frozen at the
 // start converge: the failure is the lagging, not the factorisation. With one
 // dt each node moves at the rate of the true transient, slowly where its cells
-// are small.) tau runs through the cycle of af_cycle() (seed 004: geometric
+// are small.) tau runs through the cycle of af_cycle() (Ly & Norrison 2007: geometric
 // with repeated end points). The xi factor is cyclic on an O-grid (solved by
 // Sherman-Morrison), so the branch cut moves implicitly with the interior
-// (seed 004 figure 2); a C-grid's wake cut is likewise implicit: the cut is a
+// (Ly & Norrison 2007 figure 2); a C-grid's wake cut is likewise implicit: the cut is a
 // xi line of its own and each eta line runs through it from the lower half
 // into the upper (relaxed point by point instead, the cut took 195, 362 and
 // 1561 steps on the NACA0012 C-grid at 65, 129, 257 points around; solved
@@ -44,8 +44,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 // Automatic cycle: the largest step resolves the smoothest mode of the longest
 // grid line (its eigenvalue is about (pi/n)^2 in units of the diagonal); the
-// steps grow by at most this ratio. Measured on the seed 003 domains, the
-// annulus and an 87x31 O-grid (bench --seed004), with a step per node: ratio
+// steps grow by at most this ratio. Measured on the elliptic-grid course notes domains, the
+// annulus and an 87x31 O-grid (bench --ogrid), with a step per node: ratio
 // 2 beats 3 and 4 on the skewed dome (141 vs 237 vs 357 iterations at 65^2)
 // and ties elsewhere; the steps ascend through the cycle because large steps
 // first diverge from a TFI start on the dome (Winslow's lagged coefficients).
@@ -53,7 +53,7 @@ constexpr double kStepRatio = 2.0;
 
 // The automatic largest step is divided by kTopShrink whenever the residual
 // rises kRiseFactor times above its best.
-// Large steps with lagged coefficients can be unstable: seed 000's channel 3
+// Large steps with lagged coefficients can be unstable: Petrilli's (1989) channel 3
 // with wall orthogonality (a control that follows the grid) diverged at step
 // 169. The residual of a healthy cycle rises up to ~20x during its largest
 // steps (NACA0012 C-grid 257x65), so 10x shrank the cycle needlessly (the
@@ -189,7 +189,7 @@ private:
         }
         // A C-grid's wake cut is a xi line too, between the outflow and the
         // trailing edge (both fixed): its nodes are solved with the interior,
-        // as seed 004 does with the O-grid's branch cut, not relaxed after it.
+        // as Ly & Norrison (2007) does with the O-grid's branch cut, not relaxed after it.
         const int wake = conn.wake();  // 0 unless a C-grid
         if (wake > 1) {
             for (int i = 1; i < wake; ++i) assemble(system, L, st, i, 0, i - 1);

@@ -1,6 +1,6 @@
 // Automatic over-relaxation for the SOR sweeps (point, line, coarse-to-fine),
 // when the relaxation setting is 0. Each solver names a target factor (the
-// optimum of the Laplace model problem, seed 003 for points, line_relax.hpp
+// optimum of the Laplace model problem, the elliptic-grid course notes for points, line_relax.hpp
 // for lines); this class decides how much of its over-relaxation (omega - 1)
 // a sweep may use, from what the sweeps do to the grid:
 //  - a ramp: from Gauss-Seidel (omega = 1) linearly up to the target over the

@@ -7,7 +7,7 @@
 // and on an eta-line  a = gamma - C_eta/2, b = -2(alpha+gamma), c = gamma + C_eta/2
 // (Laplace: 1, -4, 1), the coefficients frozen at the current grid (Picard).
 // The grid moves by omega*d. On an O-grid a xi-line is periodic and solved
-// as a cyclic system (Sherman-Morrison, seed 004), so the cut moves with it.
+// as a cyclic system (Sherman-Morrison; Ly & Norrison 2007), so the cut moves with it.
 #pragma once
 #include <vector>
 

@@ -1,6 +1,6 @@
 // Line SOR: a sweep of xi-lines then a sweep of eta-lines (line_relax.hpp),
 // each over-relaxed; nodes off the line rectangle (a C-grid cut) get a point
-// update. Seed 004 compares it with point SOR and AF (its Table 2).
+// update. Ly & Norrison (2007) compares it with point SOR and AF (its Table 2).
 //
 // Automatic relaxation (settings.relaxation = 0): each direction's target is
 // the optimal line-SOR factor of the Laplace model problem on the grid's size
@@ -10,7 +10,7 @@
 // cells: at fixed omega the NACA0012 O-grid (257x65) diverges from 1.8 up and
 // converges at 1.7; with the ramp and the guards it backs off once (sweep
 // 186) and converges in 1046 sweeps (866 at fixed 1.7). Omega = 1 throughout
-// costs 4-13x more sweeps on the seed 003 domains at 33^2..129^2.
+// costs 4-13x more sweeps on the elliptic-grid course notes domains at 33^2..129^2.
 #include <algorithm>
 
 #include "solvers/auto_relaxation.hpp"

@@ -11,8 +11,8 @@
 //                                       s = operator_scale (index units)
 //   solve L_c(u_c) = f_c  (recursively), then u_f += P (u_c - I u_f), bilinear.
 //
-// Defaults, W(2,1) with FMG (settings.hpp), chosen by measurement on the seed
-// 003 domains and the annulus (bench/eg2d_bench). With the ILU smoother the
+// Defaults, W(2,1) with FMG (settings.hpp), chosen by measurement on the
+// elliptic-grid course notes' domains and the annulus (bench/eg2d_bench). With the ILU smoother the
 // per-cycle factor on the swan is 0.002-0.006 and on the dome 0.01-0.09 at
 // 65^2..1025^2 (the dome's worst, 0.086 at 1025^2, sits at the top middle,
 // where alpha/gamma is about 3600; W(2,2) makes it 0.03 for 40% more work,
@@ -138,7 +138,7 @@ public:
     // cycle folding) gives up after 2.4 s at 300.
     long stall_window(int, int) const override { return 200; }
     // Guarded cycles that stop making progress (the best residual not halved
-    // in kStallCycles cycles: seed 000's channel 2 with its sources stalled
+    // in kStallCycles cycles: Petrilli's (1989) channel 2 with its sources stalled
     // at 9e-4) also hand over to sweeps. Progress is the larger of residual
     // and control gap going down: while the wall control ramps, the residual
     // alone stalls, and counting it handed the annulus (1e-4 wall) to sweeps

@@ -11,7 +11,7 @@ namespace eg2d {
 namespace {
 // Over-relaxing the line Gauss-Seidel smoother speeds up the damping of the
 // errors that the explicit cross-derivative (-2 beta r_xieta) leaves behind on
-// skewed cells: measured on the seed 003 domains, the cycle's factor drops by
+// skewed cells: measured on the elliptic-grid course notes domains, the cycle's factor drops by
 // about 1.5x from omega = 1 to 1.3, with no change on orthogonal grids.
 constexpr double kSmootherOmega = 1.3;
 // Local relaxation after the sweeps (multigrid_local.hpp): 2 point sweeps in

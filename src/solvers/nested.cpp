@@ -100,7 +100,7 @@ private:
 
     // Point SOR sweeps on a coarse level until its residual is below target,
     // the sweeps stop helping, or a cap proportional to its size (50 sweeps
-    // per node of the longer side, seed 000's coarse levels need far fewer:
+    // per node of the longer side, Petrilli's (1989) coarse levels need far fewer:
     // a safety bound, 8a304e2, not tuned).
     static void converge(System system, const Level &L, double extent, double target, const Settings &settings) {
         const int cap = 50 * std::max(L.conn->ni(), L.conn->nj()) + 100;
@@ -118,7 +118,7 @@ private:
 
     // A point SOR sweep at the user's factor, or the automatic one with no
     // ramp: every level starts from the converged coarser one. Its target is
-    // seed 003's optimum but at most kLimit: the error left by the coarser
+    // the elliptic-grid course notes' optimum but at most kLimit: the error left by the coarser
     // level is not the model's slowest mode, and more over-relaxation only
     // slows it (bench, swan/valley: 402/518 sweeps at 257^2, 503/493 at
     // 513^2 with the limit; 774/732 and 1040+/1083+ (capped) at the

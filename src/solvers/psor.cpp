@@ -1,6 +1,7 @@
 // Point SOR: a lexicographic Gauss-Seidel sweep over the unknown nodes with
-// over-relaxation (seed 003; seed 001 Code 1.2 is the omega = 1 case). The
-// coefficients are frozen at each node's current neighbours (Picard).
+// over-relaxation (the elliptic-grid course notes; Code 1.2 of the
+// grid-generation lecture notes is the omega = 1 case). The coefficients
+// are frozen at each node's current neighbours (Picard).
 #include <cmath>
 
 #include "solvers/auto_relaxation.hpp"
@@ -29,7 +30,7 @@ public:
     void iterate(Problem &p) override {
         const Level L = p.level();
         if (p.settings.relaxation > 0.0) return sor_sweep(p.system, L, p.settings.relaxation);
-        // The automatic factor aims at seed 003's optimum. Winslow's frozen
+        // The automatic factor aims at the elliptic-grid course notes' optimum. Winslow's frozen
         // coefficients do not bear it from a TFI start (fixed 1.97 diverges
         // on the valley 257^2 and the NACA0012 O- and C-grids at 129 and 257;
         // the old rule, a start at the optimum of a grid half as fine, 1.988,

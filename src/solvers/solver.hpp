@@ -103,7 +103,7 @@ std::string variational_solver_names();
 // the point solver and the coarse-to-fine solver share it.
 void sor_sweep(System system, const Level &L, double omega);
 
-// Seed 003's optimal SOR factor for Laplace on an N1 x N2 grid.
+// The elliptic-grid course notes' optimal SOR factor for Laplace on an N1 x N2 grid.
 double optimal_sor_omega(int n1, int n2);
 
 }  // namespace eg2d

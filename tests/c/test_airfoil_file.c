@@ -1,4 +1,4 @@
-/* The airfoil reader on files as people download them (issue 36): each kind
+/* The airfoil reader on files as people download them: each kind
  * written here, into a temporary directory, from the NACA 0012 points of
  * tests/data/naca0012_selig.dat or of eg2d_curve_naca4, and read back as the
  * same curve as the standard Selig file, or refused naming the line. */

@@ -1,5 +1,5 @@
-/* Adaptive control: seed 002's parameter-space grid on its circle (three
- * examples), its clustering maps, and the weight function (seed 001). */
+/* Adaptive control: Khattri's (2006) parameter-space grid on its circle (three
+ * examples), its clustering maps, and the weight function (the grid-generation lecture notes). */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -63,7 +63,7 @@ static double spacing_at(const double *x, const double *y, int n, int dir, doubl
     return (1.0 - f) * a + f * b;
 }
 
-/* Seed 002's examples: the physical grid inherits the parameter grid's
+/* Khattri's (2006) examples: the physical grid inherits the parameter grid's
  * distribution. The continuous statement is r(xi, eta) = r0(s, t), r0 the
  * grid without control, so a cell of the controlled grid is r0's spacing
  * at the cell's parameter position times the parameter spacing factor
@@ -89,7 +89,7 @@ static void check_example(int kind, double a, double b) {
             lo = fmin(lo, want);
             hi = fmax(hi, want);
         }
-        print_message("seed 002 map %d on the circle %dx%d, %s: %d iterations (%d without control); "
+        print_message("Khattri (2006) map %d on the circle %dx%d, %s: %d iterations (%d without control); "
                       "parameter spacing factors %.3f..%.3f reproduced to %.1f %%\n",
                       kind, n, n, eg2d_solver_name(id), it, it0, lo, hi, 100 * worst);
         assert_true(worst < 0.20);

@@ -1,6 +1,6 @@
-/* Attraction sources and user source arrays: seed 000's p1/p2 against an
- * independent one-dimensional solution and on its three channels, seed
- * 004's line clustering (mu = 100, kappa = 0.2) on an annulus O-grid against
+/* Attraction sources and user source arrays: Petrilli's (1989) p1/p2 against an
+ * independent one-dimensional solution and on its three channels, the
+ * line clustering of Ly & Norrison (2007) (mu = 100, kappa = 0.2) on an annulus O-grid against
  * the exact radial recurrence, point sources and xi-lines across the O-grid
  * cut. Every solver. */
 #include <math.h>
@@ -26,7 +26,7 @@ static double *alloc(int n) {
     return p;
 }
 
-/* Seed 000's column values p1 = -20, -10 at i = 1, 2 and i = ni-1, ni-2 on
+/* Petrilli's (1989) column values p1 = -20, -10 at i = 1, 2 and i = ni-1, ni-2 on
  * every row of the rectangle [0, 1] x [0, 2] at the listing's 9 x 33 nodes,
  * with the points of JMIN and JMAX at X(i) and a uniform interior to start
  * from. The grid x = X(i), y = 2j/(nj-1) is then exact, with X solving the 1-D
@@ -35,7 +35,7 @@ static double *alloc(int n) {
  * which we solve here on its own. The first cell's factor against the
  * uniform 1/8 is the expected factor of the sources; the library must give
  * the same grid. */
-static void test_seed000_arrays_expected_factor(void **state) {
+static void test_user_source_arrays_expected_factor(void **state) {
     const int ni = 9, nj = 33;
     double X[9], Pc[9] = {0, -20, -10, 0, 0, 0, -10, -20, 0};
     double *P = alloc(ni * nj), *x = alloc(ni * nj), *y = alloc(ni * nj);
@@ -72,7 +72,7 @@ static void test_seed000_arrays_expected_factor(void **state) {
                 err = fmax(err, fabs(x[i + ni * j] - X[i]));
                 err = fmax(err, fabs(y[i + ni * j] - 2.0 * j / (nj - 1)));
             }
-        print_message("seed 000 p1 columns, %s: %d iterations; first cells %.5f and %.5f (factors %.3f, %.3f of 1/8), "
+        print_message("Petrilli (1989) p1 columns, %s: %d iterations; first cells %.5f and %.5f (factors %.3f, %.3f of 1/8), "
                       "distance from the 1-D solution %.1e\n",
                       eg2d_solver_name(id), it, X[1] - X[0], X[ni - 1] - X[ni - 2], (X[1] - X[0]) * 8,
                       (X[ni - 1] - X[ni - 2]) * 8, err);
@@ -80,7 +80,7 @@ static void test_seed000_arrays_expected_factor(void **state) {
         assert_true(err < 1e-9);
         eg2d_destroy(g);
     }
-    /* Negative P pushes xi-lines to lower i (seed 000's comment): both sides. */
+    /* Negative P pushes xi-lines to lower i (a comment of Petrilli 1989): both sides. */
     assert_true(X[1] - X[0] < 0.125 && X[ni - 1] - X[ni - 2] > 0.125);
     free(P);
     free(x);
@@ -115,7 +115,7 @@ static int solve_channel(int geom, int sources, int walls, int solver, double *x
     return status;
 }
 
-/* Seed 000's three channels with its p1/p2. Channel 1 converges unfolded
+/* Petrilli's (1989) three channels with its p1/p2. Channel 1 converges unfolded
  * in plain Winslow; the sources pull the xi-lines toward i = 0 in rows
  * 13..19 (p1 < 0 at i = 1, 2): the first cell next to the outer corner
  * (row 16) shrinks and the last one (i = 7..8) grows, while rows far from
@@ -123,7 +123,7 @@ static int solve_channel(int geom, int sources, int walls, int solver, double *x
  * which the converged Winslow grid folds (with or without the sources); with
  * the wall orthogonality on the channel walls (test_controls_wall) all three
  * converge unfolded, and the sources act the same way there. */
-static void test_seed000_channels(void **state) {
+static void test_petrilli_channels(void **state) {
     const int ni = 9, nj = 33;
     double *x0 = alloc(ni * nj), *y0 = alloc(ni * nj), *x = alloc(ni * nj), *y = alloc(ni * nj);
     int id, it0, it, geom;
@@ -167,7 +167,7 @@ static void test_seed000_channels(void **state) {
     free(y);
 }
 
-/* Seed 004's clustering toward the body, eq 14 with mu = 100, kappa = 0.2 at
+/* Ly & Norrison's (2007) clustering toward the body, eq 14 with mu = 100, kappa = 0.2 at
  * the inner wall eta = 0 of the annulus 1 <= r <= 2 (O-grid, 41 x 17). The
  * discrete solution stays rotationally symmetric, x = R_j cos(theta_i), and
  * at theta = 0 the equation reduces to the recurrence
@@ -188,7 +188,7 @@ static void radial_solution(int ni, int nj, double mu, double kappa, double *R) 
         }
 }
 
-static void test_seed004_line_clustering(void **state) {
+static void test_line_clustering_toward_body(void **state) {
     const int ni = 41, nj = 17;
     double R0[17], R[17], *x = alloc(ni * nj), *y = alloc(ni * nj);
     int id, pass;
@@ -215,7 +215,7 @@ static void test_seed004_line_clustering(void **state) {
             for (j = 0; j < nj; ++j)
                 for (i = 0; i < ni; ++i) err = fmax(err, fabs(hypot(x[i + ni * j], y[i + ni * j]) - want[j]));
             if (pass)
-                print_message("seed 004 eq 14 (mu 100, kappa 0.2) on the annulus O-grid %dx%d, %s: %d iterations; "
+                print_message("Ly & Norrison (2007) eq 14 (mu 100, kappa 0.2) on the annulus O-grid %dx%d, %s: %d iterations; "
                               "first cell %.5f vs %.5f without (x%.3f), last %.5f vs %.5f; distance from the "
                               "radial solution %.1e\n",
                               ni, nj, eg2d_solver_name(id), it, R[1] - R[0], R0[1] - R0[0],
@@ -275,9 +275,9 @@ static void test_xi_line_across_cut_and_point(void **state) {
 
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_seed000_arrays_expected_factor),
-        cmocka_unit_test(test_seed000_channels),
-        cmocka_unit_test(test_seed004_line_clustering),
+        cmocka_unit_test(test_user_source_arrays_expected_factor),
+        cmocka_unit_test(test_petrilli_channels),
+        cmocka_unit_test(test_line_clustering_toward_body),
         cmocka_unit_test(test_xi_line_across_cut_and_point),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,7 +1,7 @@
 /* Orthogonality: EG2D_ORTHO_WALL on the inner wall of an annulus O-grid and
  * of a NACA0012 O-grid (angle within 1 degree of 90, first-cell height within
- * 5 % of the request), on seed 000's corner-only channel walls, and
- * Middlecoff-Thomas (seed 000 section 4). Every solver. */
+ * 5 % of the request), on Petrilli's (1989) corner-only channel walls, and
+ * Middlecoff-Thomas (Petrilli 1989 section 4). Every solver. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -385,8 +385,8 @@ static double mean_deviation(const double *x, const double *y, int ni, int nj, i
     return sum / (nj - 2);
 }
 
-/* Seed 000's channels have walls made only of straight pieces and corners.
- * Middlecoff-Thomas is zero there away from the corners (seed 000 fig. 7)
+/* Petrilli's (1989) channels have walls made only of straight pieces and corners.
+ * Middlecoff-Thomas is zero there away from the corners (Petrilli 1989 fig. 7)
  * and leaves the lines far from orthogonal. The wall control does not
  * degenerate: with it on both channel walls all three channels (with their
  * p1/p2) converge unfolded at the listing's size (plain Winslow folds

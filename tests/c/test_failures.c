@@ -452,8 +452,8 @@ typedef enum {
     S_FRESH,  /* a new N x N grid */
     S_SQUARE, /* the unit square's boundary */
     S_INIT,   /* the unit square, initialised by TFI */
-    S_VALLEY, /* seed 003's valley, 9 x 9 */
-    S_SWAN,   /* seed 003's swan, 33 x 33 */
+    S_VALLEY, /* the elliptic-grid course notes' valley, 9 x 9 */
+    S_SWAN,   /* the elliptic-grid course notes' swan, 33 x 33 */
     S_OGRID,  /* a fresh N x N grid with the O topology */
     S_TINY,   /* the square of side 1e-100 */
     S_POINT,  /* the square of side 0: every boundary point at (0, 0) */

@@ -1,5 +1,5 @@
 /* O- and C-grids from curves: the annulus under every solver the library
- * has, a NACA0012 O-grid, C-grids with a wake cut, seed 003's rose in a
+ * has, a NACA0012 O-grid, C-grids with a wake cut, the elliptic-grid course notes' rose in a
  * circle, and the Hermite TFI initial grid. */
 #include <math.h>
 #include <setjmp.h>
@@ -262,7 +262,7 @@ static void test_c_grid_boundary_errors(void **state) {
     eg2d_destroy(g);
 }
 
-/* Seed 003, B2: the three-leaved rose inside the circle r = 9. */
+/* The elliptic-grid course notes, B2: the three-leaved rose inside the circle r = 9. */
 static void test_rose_in_circle(void **state) {
     eg2d_grid *g;
     int iters;
@@ -278,7 +278,7 @@ static void test_rose_in_circle(void **state) {
 }
 
 /* Hermite TFI on the annulus: radial lines and, along each, the cubic of
- * seed 001 eq 2.4 with r_eta = alpha (r_o - r_i) at both circles. */
+ * the grid-generation lecture notes eq 2.4 with r_eta = alpha (r_o - r_i) at both circles. */
 static void test_hermite_annulus(void **state) {
     const int ni = 33, nj = 11;
     const double alpha = 0.25;
@@ -342,7 +342,7 @@ static void valley_top(void *user, double t, double *x, double *y) {
     *y = 0.75 + 0.25 * sin(PI * (0.5 + 2 * t));
 }
 
-/* Seed 003's valley with its curved top sliding: grid lines meet it at right
+/* The elliptic-grid course notes' valley with its curved top sliding: grid lines meet it at right
  * angles, its nodes stay on the curve and in order, the corners stay. */
 static void test_sliding_side(void **state) {
     const int ni = 33, nj = 33;

@@ -1,4 +1,4 @@
-/* The host's locale (issue 35, item 8): a host that calls setlocale with a
+/* The host's locale: a host that calls setlocale with a
  * comma-decimal locale (GTK and Qt programs do) must get the same bytes from
  * every writer as under "C", and the readers must read them back. One
  * process writes every format under "C", switches to a comma locale (one

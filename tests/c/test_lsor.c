@@ -1,4 +1,4 @@
-/* Line SOR (EG2D_SOLVER_LSOR): the same grids as point SOR on the seed 003
+/* Line SOR (EG2D_SOLVER_LSOR): the same grids as point SOR on the elliptic-grid course notes
  * domains, the annulus O-grid with the branch cut solved
  * implicitly (columns 0 and ni-1 stay the same points), Laplace exact on a
  * bilinear map, and a given relaxation factor honoured. */

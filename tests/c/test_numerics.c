@@ -1,5 +1,5 @@
 /* The numerics against known answers: TFI, Laplace on a bilinear map,
- * Winslow's second-order convergence to a conformal map, the seed 003 domains
+ * Winslow's second-order convergence to a conformal map, the elliptic-grid course notes domains
  * without folds, folds reported. (Second order on the annulus O-grid, for
  * every solver, is in test_geometry_grids.) */
 #include <math.h>
@@ -123,7 +123,7 @@ static void test_winslow_second_order_conformal(void **state) {
     }
 }
 
-static void test_seed003_domains_converge_unfolded(void **state) {
+static void test_course_note_domains_converge_unfolded(void **state) {
     int d;
     (void)state;
     for (d = 0; domain_names[d]; ++d) {
@@ -185,7 +185,7 @@ int main(void) {
         cmocka_unit_test(test_tfi_exact_on_boundary),
         cmocka_unit_test(test_laplace_reproduces_bilinear),
         cmocka_unit_test(test_winslow_second_order_conformal),
-        cmocka_unit_test(test_seed003_domains_converge_unfolded),
+        cmocka_unit_test(test_course_note_domains_converge_unfolded),
         cmocka_unit_test(test_folded_start_is_reported),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

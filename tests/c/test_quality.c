@@ -1,5 +1,5 @@
 /* Quality metrics: hand-computed cells (a unit square, a 30 degree rhombus,
- * a stretched row, a folded bow-tie), a converged seed domain, the annulus
+ * a stretched row, a folded bow-tie), a converged test domain (the dome), the annulus
  * O-grid, and the fold check of eg2d_solve. */
 #include <math.h>
 #include <setjmp.h>
@@ -258,8 +258,9 @@ static void test_bow_tie(void **state) {
     eg2d_destroy(g);
 }
 
-/* A converged seed domain: the summaries are the extremes of the per-cell
- * values, and the cell areas add up to the area of the boundary polygon. */
+/* A converged test domain (the dome of the elliptic-grid course notes):
+ * the summaries are the extremes of the per-cell values, and the cell
+ * areas add up to the area of the boundary polygon. */
 static void test_converged_dome(void **state) {
     enum { NI = 33, NJ = 25, NC = (NI - 1) * (NJ - 1) };
     static double x[NI * NJ], y[NI * NJ], v[NC];
@@ -346,7 +347,7 @@ static void test_annulus_orthogonal(void **state) {
     eg2d_destroy(g);
 }
 
-/* Laplace (Amsden-Hirt) folds the valley of seed 003: eg2d_solve converges,
+/* Laplace (Amsden-Hirt) folds the valley of the elliptic-grid course notes: eg2d_solve converges,
  * then fails with EG2D_ERR_FOLDED naming the first folded cell, keeps the
  * grid, and the per-cell metrics show the same cells. */
 static void test_solve_reports_folds(void **state) {

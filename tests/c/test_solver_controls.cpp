@@ -1,5 +1,5 @@
-// Every solver honours the control fields: with a TTM source Q (d_eta, seed
-// 004 eq 14's attraction toward the inner wall) and a Thomas-Middlecoff-like
+// Every solver honours the control fields: with a TTM source Q (d_eta, the
+// attraction of Ly & Norrison 2007 eq 14 toward the inner wall) and a Thomas-Middlecoff-like
 // Phi (a_xi) on the annulus O-grid, each solver converges to the same grid as
 // PSOR, and that grid is not the uncontrolled one. The control terms are put
 // in through the core (no public control API exists yet), the rest through

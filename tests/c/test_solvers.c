@@ -23,7 +23,7 @@ static double *alloc(size_t n) {
     return p;
 }
 
-/* A case: a seed 003 domain (n x n) or the annulus 1 <= r <= 3 (n x (n/2+1)). */
+/* A case: an elliptic-grid course notes domain (n x n) or the annulus 1 <= r <= 3 (n x (n/2+1)). */
 static eg2d_grid *make_case(const char *domain, int n, int system) {
     eg2d_grid *g;
     const int annulus = !strcmp(domain, "annulus");
@@ -69,7 +69,7 @@ static void test_every_solver_reaches_the_same_grid(void **state) {
                     count = (size_t)ni * (size_t)nj;
                     assert_int_equal(eg2d_set_solver(g, id), EG2D_OK);
                     assert_int_equal(eg2d_set_tolerance(g, tol), EG2D_OK);
-                    /* Amsden-Hirt folds on the swan (seed 003): still the same grid. */
+                    /* Amsden-Hirt folds on the swan (the elliptic-grid course notes): still the same grid. */
                     assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_FOLD_CHECK, 0), EG2D_OK);
                     if (eg2d_solve(g) != EG2D_OK) fail_msg("%s on %s: %s", eg2d_solver_name(id), domains[d], eg2d_last_error(g));
                     assert_int_equal(eg2d_get_residual(g, &r), EG2D_OK);
@@ -263,7 +263,7 @@ static void provoke_hostile_start(eg2d_grid *g) {
     free(y);
 }
 
-/* A line attraction 100 times seed 004's (mu = 1e4): its first-order terms
+/* A line attraction 100 times Ly & Norrison's (2007) (mu = 1e4): its first-order terms
  * swamp the central differences. Multigrid with the ILU smoother recovers
  * from the hostile start (measured: 22 cycles), not from this. */
 static void provoke_strong_source(eg2d_grid *g) {
@@ -398,7 +398,7 @@ static void test_af_parameters_are_checked(void **state) {
     eg2d_destroy(g);
 }
 
-/* Seed 004 Table 1: the Euler implicit (default), three-point backward and
+/* Ly & Norrison (2007) Table 1: the Euler implicit (default), three-point backward and
  * trapezoidal rules, with a hand-set cycle too, reach the PSOR grid. */
 static void test_af_time_rules_converge_to_the_same_grid(void **state) {
     const double rules[][2] = {{0.0, 1.0}, {0.5, 1.0}, {0.0, 0.5}};
@@ -419,7 +419,7 @@ static void test_af_time_rules_converge_to_the_same_grid(void **state) {
             assert_int_equal(eg2d_set_solver(g, EG2D_SOLVER_AF), EG2D_OK);
             assert_int_equal(eg2d_set_tolerance(g, 1e-12), EG2D_OK);
             assert_int_equal(eg2d_set_af_time_rule(g, rules[r][0], rules[r][1]), EG2D_OK);
-            if (cyc) assert_int_equal(eg2d_set_af_cycle(g, 1.0, 300.0, 6), EG2D_OK); /* seed 004's M = 6 */
+            if (cyc) assert_int_equal(eg2d_set_af_cycle(g, 1.0, 300.0, 6), EG2D_OK); /* Ly & Norrison's (2007) M = 6 */
             if (eg2d_solve(g) != EG2D_OK) fail_msg("a = %g, b = %g: %s", rules[r][0], rules[r][1], eg2d_last_error(g));
             assert_int_equal(eg2d_get_iterations(g, &it), EG2D_OK);
             assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
@@ -432,7 +432,7 @@ static void test_af_time_rules_converge_to_the_same_grid(void **state) {
     free(ref_x); free(ref_y); free(x); free(y);
 }
 
-/* The branch cut moves implicitly (seed 004 figure 2): the xi lines of an
+/* The branch cut moves implicitly (Ly & Norrison 2007 figure 2): the xi lines of an
  * O-grid are solved as cyclic systems, so AF cannot tell where the cut is.
  * The same annulus with its cut rotated by `shift` columns gives, after a few
  * unconverged iterations, the same grid rotated (to round-off). A solver that
@@ -530,8 +530,8 @@ static void test_af_step_is_scale_free(void **state) {
     free(ref_y);
 }
 
-/* Issue 3's AF target: on an O-grid, at most 1/5 of the iterations of PSOR
- * at its best omega (seed 004: 31 vs 189). The annulus at 129 x 65 to 1e-10;
+/* The AF speed target: on an O-grid, at most 1/5 of the iterations of PSOR
+ * at its best omega (Ly & Norrison 2007: 31 vs 189). The annulus at 129 x 65 to 1e-10;
  * PSOR's omega is scanned in steps of 0.01 around the optimum. */
 static void test_af_beats_best_psor_on_an_o_grid(void **state) {
     const int n = 129;

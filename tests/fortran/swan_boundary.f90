@@ -1,4 +1,4 @@
-! The swan domain of seed 003 (A4) as the Fortran tests build it: the same
+! The swan domain of the elliptic-grid course notes (A4) as the Fortran tests build it: the same
 ! formulas as tests/support/domains.c, points uniform in s = (i-1)/(n-1).
 module swan_boundary
   use eg2d

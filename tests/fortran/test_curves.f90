@@ -88,7 +88,7 @@ program test_curves
   call check(st == EG2D_OK .and. maxval(abs(s - [0d0, 0.25d0, 0.5d0, 0.75d0, 1d0])) < 1d-15, 'uniform distribution')
   call eg2d_get_distribution(EG2D_DIST_EXPONENTIAL, 2d0, 0d0, s, st)
   call check(st == EG2D_OK .and. abs(s(2) - (exp(0.5d0) - 1) / (exp(2d0) - 1)) < 1d-14, &
-       'exponential distribution, beta = 2 (seed 001)')
+       'exponential distribution, beta = 2 (the grid-generation lecture notes)')
   call eg2d_get_distribution(EG2D_DIST_EXPONENTIAL, 0d0, 0d0, s, st)
   call check_status(st, EG2D_ERR_ARGUMENT, 'exponential with beta = 0')
   call eg2d_get_first_cell_height(1d0, 1d6, 1d0, h, st)

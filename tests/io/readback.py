@@ -3,7 +3,7 @@
 
 Usage: readback.py WRITE_SAMPLES OUTDIR cgns|no-cgns [CGNSCHECK]
 (no-cgns: the library was built without the CGNS plugin).
-Runs WRITE_SAMPLES OUTDIR (a converged seed grid in every format, plus the
+Runs WRITE_SAMPLES OUTDIR (a converged test-domain grid in every format, plus the
 reference coordinates and per-cell quality printed by the test program),
 then: VTK's vtkXMLStructuredGridReader (.vts, points and cell data) and
 vtkMultiBlockPLOT3DReader (every Plot3D variant), cgnscheck and (when VTK

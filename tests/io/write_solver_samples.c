@@ -3,7 +3,7 @@
  * OpenFOAM's checkMesh, cgnscheck). Usage: write_solver_samples DIR [no-cgns].
  * Grids (NAME): "c", the NACA 0012 C-grid 65 x 17 with a wake of 16 points
  * (default patches); "o", the NACA 0012 O-grid 65 x 17 (default patches);
- * "single", seed 003's valley 21 x 13 with the user's patches: JMIN
+ * "single", the elliptic-grid course notes' valley 21 x 13 with the user's patches: JMIN
  * "bottom" wall, IMIN "inlet" inflow, IMAX "outlet" outflow, JMAX nodes
  * 0..10 "top" symmetry and 10..20 "lid" wall.
  * For each, with a span of 0.5: DIR/NAME.su2, DIR/NAME.cgns, the OpenFOAM

@@ -1,4 +1,4 @@
-/* Seed 000's three test channels (`boundary(1..3)` of the Pascal listing)
+/* Petrilli's (1989) three test channels (`boundary(1..3)` of the Pascal listing)
  * and its source arrays p1/p2, for grids of (ni+1) x (nj+1) nodes where ni,
  * nj are the listing's interval counts (it runs ni = 8, nj = 32). */
 #ifndef EG2D_TEST_CHANNELS_H

@@ -1,4 +1,4 @@
-/* Seed 002's circle test domain: the unit circle split into four quarter
+/* Khattri's (2006) circle test domain: the unit circle split into four quarter
  * arcs, one per side (its XYcircle): JMIN from theta = 0 to pi/2, IMAX from
  * pi/2 to pi, JMAX from 3pi/2 back to pi, IMIN from 2pi back to 3pi/2, points
  * uniform in angle. */

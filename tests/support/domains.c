@@ -10,7 +10,7 @@ const char *const domain_names[] = {"valley", "almost-convex", "swan", "dome", N
 
 typedef void (*curve_fn)(double s, double *x, double *y);
 
-/* Seed 003, A1: valley. */
+/* The elliptic-grid course notes, A1: valley. */
 static void valley_b(double s, double *x, double *y) { *x = s; *y = 0; }
 static void valley_t(double s, double *x, double *y) { *x = s; *y = 0.75 + 0.25 * sin(EG2D_TEST_PI * (0.5 + 2 * s)); }
 static void valley_l(double s, double *x, double *y) { *x = 0; *y = s; }
@@ -45,7 +45,7 @@ static int side_buffers(eg2d_grid *g, int *ni, int *nj, double **x, double **y) 
     return EG2D_OK;
 }
 
-/* Seed 003, A3: the antenna, a stem [-3, 0] x [0, 1] joined to the half disc
+/* The elliptic-grid course notes, A3: the antenna, a stem [-3, 0] x [0, 1] joined to the half disc
  * x >= 0 of radius 3 about (0, 1/2) (examples/antenna.toml): bottom and top
  * run along the stem (70% of their intervals) and turn at the stem's mouth
  * along the wall x = 0; the right side is the half circle. Sets the sides. */

@@ -1,4 +1,4 @@
-/* The seed domains as boundary points, shared by the tests, the examples and
+/* The test domains of the source documents as boundary points, shared by the tests, the examples and
  * the benchmark. Points are uniform in each side's parameter s in [0, 1]. */
 #ifndef EG2D_TEST_DOMAINS_H
 #define EG2D_TEST_DOMAINS_H
@@ -9,7 +9,7 @@
 extern "C" {
 #endif
 
-/* Simply connected domains of seed 003: "valley", "almost-convex", "swan",
+/* Simply connected domains of the elliptic-grid course notes: "valley", "almost-convex", "swan",
  * "dome", "antenna" (as examples/antenna.toml: the stem gets 70% of the
  * intervals of bottom and top; not in domain_names); and the bilinear quadrilateral "quad" with corners (0,0), (2,0.2),
  * (2.4,1.6), (0.3,1). Sets the four sides; returns the eg2d status. */
@@ -19,7 +19,7 @@ int domain_set(eg2d_grid *grid, const char *name);
  * counter-clockwise from theta = 0). Sets the topology and both sides. */
 int domain_set_annulus(eg2d_grid *grid, double r_inner, double r_outer);
 
-/* Seed 003, B2: the three-leaved rose r = 0.3 (2 + cos 3t) inside the circle
+/* The elliptic-grid course notes, B2: the three-leaved rose r = 0.3 (2 + cos 3t) inside the circle
  * r = 9, as an O-grid (JMIN the rose, JMAX the circle, both counter-clockwise
  * from t = 0, points uniform in arc length). Sets the topology and both sides. */
 int domain_set_rose(eg2d_grid *grid);

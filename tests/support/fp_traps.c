@@ -1,7 +1,7 @@
 /* Linked into every C test program: invalid, divide-by-zero and overflow
  * traps on from the start, so any library call that raises one of these
- * flags on valid input dies with SIGFPE where it happens (issue 35, item 4:
- * Fortran hosts built with -ffpe-trap run so). Inexact and underflow stay
+ * flags on valid input dies with SIGFPE where it happens (as
+ * Fortran hosts built with -ffpe-trap do). Inexact and underflow stay
  * off: they are raised by ordinary rounding. */
 #define _GNU_SOURCE
 #include "fp_traps.h"

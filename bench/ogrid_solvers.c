@@ -1,4 +1,4 @@
-/* Seed 004 Table 2 (eg2d_bench --seed004): an 87 x 31 O-grid around an
+/* Ly & Norrison (2007) Table 2 (eg2d_bench --ogrid): an 87 x 31 O-grid around an
  * irregular body, every scheme stopped when E, the mean change of a node in
  * one iteration, is below 5e-5, and at the residual 1e-10. */
 #include <math.h>
@@ -36,11 +36,11 @@ static int watch_change(void *user, int iteration, double residual) {
 typedef struct {
     int e_iterations, iterations; /* to E < 5e-5; to the residual 1e-10 (-1: never) */
     double e_residual;
-} seed004_result;
+} ogrid_result;
 
-static seed004_result seed004_run(int solver, double omega) {
+static ogrid_result ogrid_run(int solver, double omega) {
     const int ni = 87, nj = 31;
-    seed004_result out = {-1, -1, 0};
+    ogrid_result out = {-1, -1, 0};
     change_watch c;
     if (eg2d_create(ni, nj, &c.g) || domain_set_blob(c.g) || eg2d_set_solver(c.g, solver) ||
         eg2d_initialize(c.g, EG2D_INIT_TFI)) {
@@ -68,30 +68,30 @@ static seed004_result seed004_run(int solver, double omega) {
     return out;
 }
 
-static void seed004_row(const char *name, const char *label, double omega, seed004_result r) {
+static void ogrid_row(const char *name, const char *label, double omega, ogrid_result r) {
     printf("| %s | %s", name, label);
     if (omega > 0) printf(" %.2f", omega);
     printf(" | %d | %.2e | %d |\n", r.e_iterations, r.e_residual, r.iterations);
 }
 
-void bench_seed004(void) {
+void bench_ogrid(void) {
     int id;
-    printf("Seed 004 Table 2 case: Winslow, 87x31 O-grid (irregular body inside r = 8), TFI start.\n"
-           "E = mean node move of one iteration (seed 004's stop: E < 5e-5); best omega scanned\n"
+    printf("Ly & Norrison (2007) Table 2 case: Winslow, 87x31 O-grid (irregular body inside r = 8), TFI start.\n"
+           "E = mean node move of one iteration (the stop test of Ly & Norrison 2007: E < 5e-5); best omega scanned\n"
            "(point solvers 1.00..1.98 by 0.02, AF 0.1..3.0 by 0.1).\n\n");
     printf("| solver | omega | iterations to E < 5e-5 | residual there | iterations to residual 1e-10 |\n");
     printf("|---|---|---:|---:|---:|\n");
     for (id = 0; id < 100; ++id) {
         const char *name = eg2d_solver_name(id);
-        seed004_result r, best_e = {-1, -1, 0}, best_r = {-1, -1, 0};
+        ogrid_result r, best_e = {-1, -1, 0}, best_r = {-1, -1, 0};
         double w_e = 0, w_r = 0;
         int k;
         if (!name) continue;
-        seed004_row(name, "automatic", 0, seed004_run(id, 0));
+        ogrid_row(name, "automatic", 0, ogrid_run(id, 0));
         for (k = 0; k < 50; ++k) {
             const double w = id == EG2D_SOLVER_AF ? 0.1 * (k + 1) : 1.0 + 0.02 * k;
             if (id == EG2D_SOLVER_AF && w > 3.0) break;
-            r = seed004_run(id, w);
+            r = ogrid_run(id, w);
             if (r.e_iterations > 0 && (best_e.e_iterations < 0 || r.e_iterations < best_e.e_iterations)) {
                 best_e = r;
                 w_e = w;
@@ -101,7 +101,7 @@ void bench_seed004(void) {
                 w_r = w;
             }
         }
-        seed004_row(name, "best for E", w_e, best_e);
-        seed004_row(name, "best for 1e-10", w_r, best_r);
+        ogrid_row(name, "best for E", w_e, best_e);
+        ogrid_row(name, "best for 1e-10", w_r, best_r);
     }
 }
