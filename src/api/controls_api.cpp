@@ -1,5 +1,5 @@
 // Grid control: attraction sources, user arrays, orthogonality (Middlecoff-
-// Thomas, wall), parameter grid, weight; and seed 002's clustering helpers.
+// Thomas, wall), parameter grid, weight; and Khattri's (2006) clustering helpers.
 // Each call checks everything, builds the new ControlSet on a copy and only
 // then replaces the grid's (a failed call changes nothing).
 #include <algorithm>
@@ -173,7 +173,7 @@ EG2D_API int eg2d_clustering_map(int kind, double a, double b, double strength, 
             require_finite(b, "b");
             require(b > a && b < 1.0, format("b = %g: must be in (a, 1) = (%g, 1)", b, a));
         }
-        require(strength >= 0.0 && strength <= 50.0, format("strength = %g: must be in (0, 50] (or 0 for the seed's)", strength));
+        require(strength >= 0.0 && strength <= 50.0, format("strength = %g: must be in (0, 50] (or 0 for Khattri's (2006) default)", strength));
         const double k = strength > 0.0 ? strength : (kind == EG2D_CLUSTER_BOUNDARIES ? 4.0 : 3.0);
         for (int i = 0; i < n; ++i) {
             const double u = i == n - 1 ? 1.0 : static_cast<double>(i) / (n - 1);

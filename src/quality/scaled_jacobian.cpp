@@ -1,10 +1,11 @@
 // Scaled Jacobian: the smallest over a cell's four corners of the cross
 // product of the corner's two edges over the product of their lengths, the
 // sine of the corner angle: the quadrilateral scaled Jacobian of the Verdict
-// library (Stimpson et al. 2007), which VTK's vtkMeshQuality computes. 1 for a rectangle, 0 for a corner
-// with a zero-length edge; signed by the grid's orientation (cell.hpp), so
-// it is negative in a folded cell, where Verdict, which orients each cell
-// by itself, can read a convex cell turned over as unfolded.
+// library (Stimpson et al. 2007), which VTK's vtkMeshQuality computes. 1 for
+// a rectangle, 0 for a corner with a zero-length edge; signed by the grid's
+// orientation (cell.hpp), so it is negative in a folded cell, where Verdict,
+// which orients each cell by itself, can read a convex cell turned over as
+// unfolded.
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -1,4 +1,4 @@
-/* Writes a converged seed grid in every format eg2d has, for readback.py to
+/* Writes a converged test grid in every format eg2d has, for readback.py to
  * read back with readers eg2d did not write (VTK, cgnscheck, Python's xml).
  * Usage: write_samples DIR [no-cgns]. Also writes DIR/reference.txt: "ni nj" and then
  * one "x y" line per node in Fortran order, printed here with %.17g (not by

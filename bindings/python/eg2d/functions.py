@@ -140,7 +140,7 @@ def first_cell_height(yplus, reynolds, chord=1.0):
 
 
 def clustering_map(kind, a, n, b=0.0, strength=0.0):
-    """Seed 002's clustering map CLUSTER_* of [0, 1] sampled at n points (numpy array)."""
+    """Khattri's (2006) clustering map CLUSTER_* of [0, 1] sampled at n points (numpy array)."""
     u = np.empty(int(n))
     _check(lib.eg2d_clustering_map(int(kind), float(a), float(b), float(strength), int(n), _dp(u)))
     return u

@@ -152,7 +152,7 @@ class Grid(Handle):
         self._check(lib.eg2d_set_af_cycle(self._handle(), float(dtau_min), float(dtau_max), int(steps)))
 
     def set_af_time_rule(self, a, b):
-        """The Warming-Beam time rule of AF (seed 004 Table 1)."""
+        """The Warming-Beam time rule of AF (Ly & Norrison (2007), Table 1)."""
         self._check(lib.eg2d_set_af_time_rule(self._handle(), float(a), float(b)))
 
     # ---- grid control
@@ -185,7 +185,7 @@ class Grid(Handle):
         self._check(lib.eg2d_set_wall_spacing(self._handle(), int(side), float(height)))
 
     def set_parameter_grid(self, s=None, t=None):
-        """Seed 002's parameter-space grid s, t (ni, nj); both None remove it."""
+        """Khattri's (2006) parameter-space grid s, t (ni, nj); both None remove it."""
         s, t = self._optional_fields(s=s, t=t)
         self._check(lib.eg2d_set_parameter_grid(self._handle(), s if s is None else _ptr(s),
                                                 t if t is None else _ptr(t)))
