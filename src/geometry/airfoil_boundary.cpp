@@ -50,6 +50,10 @@ double leading_edge(const ArcLength &c, P te) {
     return 0.5 * (a + b);
 }
 
+// The least end spacing of a surface, as a share of its length: Vinokur's
+// function (distribution.cpp) refuses less.
+constexpr double kLeastShare = 1e-14;
+
 // n points of the section between normalized arc lengths s0 and s1 by
 // Vinokur's distribution with end spacings d0, d1 (chords, scaled to the
 // piece's length).
@@ -60,6 +64,11 @@ std::vector<P> surface(const ArcLength &c, double s0, double s1, int n, double d
         fail(Failure::Argument,
              format("eg2d_set_airfoil: end spacings %g and %g do not fit a surface %g long: lower "
                     "EG2D_PARAM_AIRFOIL_LE_SPACING or EG2D_PARAM_AIRFOIL_TE_SPACING", d0, d1, length));
+    if (std::min(d0, d1) < kLeastShare * length)
+        fail(Failure::Argument,
+             format("eg2d_set_airfoil: end spacings %g and %g on a surface %g long: below %g of it, finer than "
+                    "double precision resolves: raise EG2D_PARAM_AIRFOIL_LE_SPACING or EG2D_PARAM_AIRFOIL_TE_SPACING",
+                    d0, d1, length, kLeastShare));
     distribute(4 /* EG2D_DIST_VINOKUR */, n, d0, d1, length, s.data());
     std::vector<P> out;
     for (double v : s) out.push_back(point(c, s0 + (s1 - s0) * v));
@@ -185,8 +194,14 @@ void airfoil_boundary(const ArcLength &c, const AirfoilSpec &spec, int ni, int n
     const double mean = perimeter / std::max(1, ni - 2 * wake);
     double te_ds = spec.te_spacing > 0 ? spec.te_spacing : kTeShare * mean;
     const double le_ds = spec.le_spacing > 0 ? spec.le_spacing : kLeShare * mean;
+    if (std::min(te_ds, le_ds) < kLeastShare * perimeter)
+        fail(Failure::Argument,
+             format("eg2d_set_airfoil: EG2D_PARAM_AIRFOIL_TE_SPACING = %g, EG2D_PARAM_AIRFOIL_LE_SPACING = %g chords: "
+                    "below %g of the section's perimeter, finer than double precision resolves",
+                    te_ds, le_ds, kLeastShare));
     int base = 0;
-    if (blunt) base = std::max(cgrid ? 1 : 2, static_cast<int>(std::lround((cgrid ? 0.5 : 1.0) * gap / te_ds)));
+    if (blunt)  // at most ni cells: more leave no section, which the count below refuses
+        base = static_cast<int>(std::max<double>(cgrid ? 1 : 2, std::min<double>(ni, std::round((cgrid ? 0.5 : 1.0) * gap / te_ds))));
     // A base: the surfaces (and a C-grid's cut) start at the base's own
     // spacing, so that each of its corners has equal edges and the march's
     // dissipation (a second difference) pulls it along the corner's

@@ -191,6 +191,10 @@ void distribute(int id, int n, double p1, double p2, double length, double *s) {
         if (N < 2 || d0 + d1 >= 1.0)
             fail(Failure::Argument, format("Vinokur spacings %g + %g leave no room on length %g with %d points",
                                            p1, p2, length, n));
+        // Below this share of the length B = 1/sqrt(S0 S1) and the stretching
+        // dy solved from sinh(dy)/dy = B overflow.
+        if (std::min(d0, d1) < 1e-100)
+            fail(Failure::Argument, format("Vinokur spacings %g, %g: below 1e-100 of the length %g", p1, p2, length));
         fill_vinokur(n, d0, d1, s);
     } else {
         check_closed_form(id, p1, p2);

@@ -388,15 +388,18 @@ void march(Grid &g, const Settings &settings, const std::vector<double> &raised,
     m.prev = m.r;
     m.corner = convex_corners(L, m.r, m.side);
 
-    double distance = s.march_distance;
-    if (distance == 0.0) {
-        double xmin = m.r[0].x, xmax = xmin, ymin = m.r[0].y, ymax = ymin;
-        for (const Vec2 &p : m.r) {
-            xmin = std::min(xmin, p.x); xmax = std::max(xmax, p.x);
-            ymin = std::min(ymin, p.y); ymax = std::max(ymax, p.y);
-        }
-        distance = 10.0 * len(xmax - xmin, ymax - ymin);
+    double xmin = m.r[0].x, xmax = xmin, ymin = m.r[0].y, ymax = ymin;
+    for (const Vec2 &p : m.r) {
+        xmin = std::min(xmin, p.x); xmax = std::max(xmax, p.x);
+        ymin = std::min(ymin, p.y); ymax = std::max(ymax, p.y);
     }
+    const double size = len(xmax - xmin, ymax - ymin);
+    const double distance = s.march_distance > 0.0 ? s.march_distance : 10.0 * size;
+    // Layers thinner than this are rounding in the coordinates (and their
+    // heights' ratios 0/0 when they underflow).
+    if (!(distance >= 1e-10 * size))
+        fail(Failure::Argument, format("march_distance = %g: below 1e-10 of the curve's size %g, too thin for its "
+                                       "layers to be told apart in double precision", distance, size));
     const std::vector<double> h = march_schedule(layers, distance, s.march_first_height, s.march_growth);
     // Chan & Steger's scaling of the dissipation with the layer index l:
     // Sl = sqrt((l-1)/(lmax-1)) up to 3/4 of the layers, constant beyond.

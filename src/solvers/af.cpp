@@ -66,9 +66,12 @@ std::vector<double> af_cycle(const Settings &st, int ni, int nj, double top) {
     const double n = std::max(ni, nj) - 1.0;
     const double tmin = st.af_dtau_min;
     const double tmax = st.af_dtau_max > 0.0 ? st.af_dtau_max : std::max(tmin, top * 4.0 * n * n / (kPi * kPi));
+    // In logarithms: tmax / tmin overflows for a tmin near the least double,
+    // which the parameter's range (0, 1e12] allows.
+    const double span = std::log(tmax) - std::log(tmin);
     int steps = static_cast<int>(st.af_steps);
     if (steps <= 0) {
-        const int distinct = tmax > tmin ? static_cast<int>(std::ceil(std::log(tmax / tmin) / std::log(kStepRatio))) + 1 : 1;
+        const int distinct = tmax > tmin ? static_cast<int>(std::ceil(span / std::log(kStepRatio))) + 1 : 1;
         steps = std::max(distinct, 2) + 2;
     }
     const int distinct = steps - 2;  // the end points are repeated
@@ -76,7 +79,7 @@ std::vector<double> af_cycle(const Settings &st, int ni, int nj, double top) {
     cycle.reserve(static_cast<std::size_t>(steps));
     cycle.push_back(tmin);
     for (int k = 0; k < distinct; ++k)
-        cycle.push_back(distinct > 1 ? tmin * std::pow(tmax / tmin, static_cast<double>(k) / (distinct - 1)) : tmin);
+        cycle.push_back(distinct > 1 ? std::exp(std::log(tmin) + span * k / (distinct - 1)) : tmin);
     cycle.push_back(cycle.back());
     return cycle;
 }
