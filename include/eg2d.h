@@ -515,8 +515,8 @@ EG2D_API int eg2d_set_boundary(eg2d_grid *grid, const double *x, const double *y
  * its stretch only. Patches are kept across boundary changes and forgotten
  * with the topology. Details: docs/methods.md, "Boundary patches".
  *
- * eg2d_set_patch gives nodes first..last (0 <= first < last <= side length
- * - 1) of `side` a type (EG2D_PATCH_WALL..SYMMETRY) and a name: 1 to 32
+ * eg2d_set_patch gives nodes first..last of `side`, 0 <= first < last <=
+ * (side length) - 1, a type (EG2D_PATCH_WALL..SYMMETRY) and a name: 1 to 32
  * characters, a letter first, then letters, digits, '_' or '-'. Two
  * stretches may share a name only with the same type; a patch of exactly
  * the range of an existing one replaces it. EG2D_ERR_ARGUMENT, nothing
@@ -595,7 +595,10 @@ EG2D_API int eg2d_set_coordinates(eg2d_grid *grid, const double *x, const double
  * the single-block topology (EG2D_ERR_UNSUPPORTED on O- and C-grids); rows
  * work on all three. TFI and Hermite TFI fill each sub-block between the
  * lines (piecewise TFI, Thompson, Warsi & Mastin 1985); every solver keeps
- * the lines' nodes fixed. Setting or clearing a line restarts the run like
+ * the lines' nodes fixed; EG2D_INIT_HYPERBOLIC fails with EG2D_ERR_STATE
+ * and EG2D_ORTHO_WALL makes no marched wall layer while lines are set; a
+ * grid given by eg2d_set_coordinates gets the lines' points. Setting or
+ * clearing a line restarts the run like
  * a new start grid; on an initialised grid the new line's nodes move onto
  * it at once. Errors, the handle unchanged: EG2D_ERR_ARGUMENT for a bad
  * direction, index, NULL or non-finite point; EG2D_ERR_BOUNDARY for ends off
