@@ -93,7 +93,7 @@ inline int list_find(int list, const std::string &name) {
     return id;
 }
 struct parameter_description {
-    int kind;  // EG2D_PARAM_KIND_* bits
+    int kind;  // EG2D_VALUE_* bits
     std::string unit, summary;
 };
 inline parameter_description describe_parameter(int param) {
@@ -105,7 +105,7 @@ inline parameter_description describe_parameter(int param) {
     return d;
 }
 struct format_description {
-    int kind;  // EG2D_FORMAT_KIND_*
+    int kind;  // EG2D_WRITES_*
     std::string suffix;
 };
 inline format_description describe_format(int format) {

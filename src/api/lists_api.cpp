@@ -138,8 +138,8 @@ EG2D_API int eg2d_parameter_info(int param, int *kind, const char **unit, const 
         const ParameterInfo *p = find_parameter(param);
         require(p != nullptr, format("parameter %d: no such parameter", param));
         if (kind)
-            *kind = p->kind | (p->range.open_lower ? EG2D_PARAM_KIND_OPEN_LOWER : 0) |
-                    (p->range.open_upper ? EG2D_PARAM_KIND_OPEN_UPPER : 0);
+            *kind = p->kind | (p->range.open_lower ? EG2D_VALUE_OPEN_LOWER : 0) |
+                    (p->range.open_upper ? EG2D_VALUE_OPEN_UPPER : 0);
         if (unit) *unit = p->unit;
         if (summary) *summary = p->summary;
     });
@@ -149,7 +149,7 @@ EG2D_API int eg2d_format_info(int format_id, int *kind, const char **suffix) {
     return guard_without_grid("eg2d_format_info", [&] {
         const FileFormat *f = find_format(format_id);
         require(f != nullptr, format("format = %d: no such format", format_id));
-        if (kind) *kind = f->write_directory ? EG2D_FORMAT_KIND_DIRECTORY : EG2D_FORMAT_KIND_FILE;
+        if (kind) *kind = f->write_directory ? EG2D_WRITES_DIRECTORY : EG2D_WRITES_FILE;
         if (suffix) *suffix = f->suffix;
     });
 }

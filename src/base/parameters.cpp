@@ -14,8 +14,8 @@ constexpr Range closed(double a, double b) { return {a, b, false, false}; }
 constexpr Range open(double a, double b) { return {a, b, true, true}; }
 constexpr Range open_closed(double a, double b) { return {a, b, true, false}; }  // (a, b]
 
-constexpr int kReal = EG2D_PARAM_KIND_REAL, kInteger = EG2D_PARAM_KIND_INTEGER;
-constexpr int kFlag = EG2D_PARAM_KIND_FLAG | EG2D_PARAM_KIND_INTEGER, kAuto = EG2D_PARAM_KIND_AUTOMATIC;
+constexpr int kReal = EG2D_VALUE_REAL, kInteger = EG2D_VALUE_INTEGER;
+constexpr int kFlag = EG2D_VALUE_FLAG | EG2D_VALUE_INTEGER, kAuto = EG2D_VALUE_AUTOMATIC;
 
 using S = Settings;
 const ParameterInfo kParameters[] = {
@@ -130,7 +130,7 @@ const ParameterInfo *find_parameter(int id) { return parameter_table().find(id);
 
 void check_parameter(const ParameterInfo &p, double v) {
     if (!std::isfinite(v)) fail(Failure::Argument, format("%s = %g: must be finite", p.name, v));
-    const bool automatic = p.kind & EG2D_PARAM_KIND_AUTOMATIC;
+    const bool automatic = p.kind & EG2D_VALUE_AUTOMATIC;
     if (automatic && v == 0.0) return;
     const Range &r = p.range;
     const bool below = r.open_lower ? !(v > r.lower) : !(v >= r.lower);
@@ -139,7 +139,7 @@ void check_parameter(const ParameterInfo &p, double v) {
         fail(Failure::Argument, format("%s = %g: must be in %c%g, %g%c%s", p.name, v, r.open_lower ? '(' : '[',
                                        r.lower, r.upper, r.open_upper ? ')' : ']',
                                        automatic ? " (or 0 for automatic)" : ""));
-    if ((p.kind & EG2D_PARAM_KIND_INTEGER) && v != std::floor(v))
+    if ((p.kind & EG2D_VALUE_INTEGER) && v != std::floor(v))
         fail(Failure::Argument, format("%s = %g: must be a whole number", p.name, v));
 }
 

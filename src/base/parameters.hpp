@@ -17,7 +17,7 @@ struct ParameterInfo {
     int id;                 // EG2D_PARAM_*
     const char *name;       // "wall_growth"
     Range range;
-    int kind;               // EG2D_PARAM_KIND_* bits
+    int kind;               // EG2D_VALUE_* bits
     const char *unit;       // "1", "length", "chords", "nodes", "iterations", "sweeps"
     const char *summary;    // one line
     double Settings::*field;

@@ -93,10 +93,10 @@ static void parameters_are_described(void **state) {
         assert_int_equal(eg2d_parameter_bounds(id, &lo, &hi, &def), EG2D_OK);
         assert_int_equal(eg2d_parameter_info(id, &kind, &unit, &summary), EG2D_OK);
         assert_true(lo < hi);
-        assert_true((def >= lo && def <= hi) || (def == 0 && (kind & EG2D_PARAM_KIND_AUTOMATIC)));
+        assert_true((def >= lo && def <= hi) || (def == 0 && (kind & EG2D_VALUE_AUTOMATIC)));
         assert_true(kind >= 0 && kind <= 31);
-        if (kind & EG2D_PARAM_KIND_FLAG) {
-            assert_true(kind & EG2D_PARAM_KIND_INTEGER);
+        if (kind & EG2D_VALUE_FLAG) {
+            assert_true(kind & EG2D_VALUE_INTEGER);
             assert_true(lo == 0 && hi == 1);
         }
         assert_true(unit && *unit && summary && strlen(summary) > 8);
@@ -106,11 +106,11 @@ static void parameters_are_described(void **state) {
     {
         int kind;
         assert_int_equal(eg2d_parameter_info(EG2D_PARAM_MG_FMG, &kind, NULL, NULL), EG2D_OK);
-        assert_int_equal(kind, EG2D_PARAM_KIND_FLAG | EG2D_PARAM_KIND_INTEGER);
+        assert_int_equal(kind, EG2D_VALUE_FLAG | EG2D_VALUE_INTEGER);
         assert_int_equal(eg2d_parameter_info(EG2D_PARAM_RELAXATION, &kind, NULL, NULL), EG2D_OK);
-        assert_int_equal(kind, EG2D_PARAM_KIND_AUTOMATIC | EG2D_PARAM_KIND_OPEN_LOWER | EG2D_PARAM_KIND_OPEN_UPPER);
+        assert_int_equal(kind, EG2D_VALUE_AUTOMATIC | EG2D_VALUE_OPEN_LOWER | EG2D_VALUE_OPEN_UPPER);
         assert_int_equal(eg2d_parameter_info(EG2D_PARAM_WALL_RELAXATION, &kind, NULL, NULL), EG2D_OK);
-        assert_int_equal(kind, EG2D_PARAM_KIND_REAL | EG2D_PARAM_KIND_OPEN_LOWER);
+        assert_int_equal(kind, EG2D_VALUE_REAL | EG2D_VALUE_OPEN_LOWER);
     }
 }
 
@@ -119,10 +119,10 @@ static void formats_and_metrics_are_described(void **state) {
     const char *suffix = NULL;
     (void)state;
     assert_int_equal(eg2d_format_info(EG2D_FORMAT_VTS, &kind, &suffix), EG2D_OK);
-    assert_int_equal(kind, EG2D_FORMAT_KIND_FILE);
+    assert_int_equal(kind, EG2D_WRITES_FILE);
     assert_string_equal(suffix, ".vts");
     assert_int_equal(eg2d_format_info(EG2D_FORMAT_OPENFOAM, &kind, &suffix), EG2D_OK);
-    assert_int_equal(kind, EG2D_FORMAT_KIND_DIRECTORY);
+    assert_int_equal(kind, EG2D_WRITES_DIRECTORY);
     assert_string_equal(suffix, "_foam");
     assert_int_equal(eg2d_format_info(77, &kind, &suffix), EG2D_ERR_ARGUMENT);
     assert_non_null(strstr(eg2d_last_error(NULL), "format = 77"));

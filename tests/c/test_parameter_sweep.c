@@ -94,16 +94,16 @@ static void exercise(eg2d_grid *g, int id, double value) {
  * points between (geometric over a wide positive range), 0 if automatic;
  * whole numbers for an integer parameter. Returns the count. */
 static int sweep_values(double lo, double hi, int kind, double *v) {
-    const double a = (kind & EG2D_PARAM_KIND_OPEN_LOWER) ? nextafter(lo, hi) : lo;
-    const double b = (kind & EG2D_PARAM_KIND_OPEN_UPPER) ? nextafter(hi, lo) : hi;
+    const double a = (kind & EG2D_VALUE_OPEN_LOWER) ? nextafter(lo, hi) : lo;
+    const double b = (kind & EG2D_VALUE_OPEN_UPPER) ? nextafter(hi, lo) : hi;
     int n = 0, k;
     v[n++] = a;
     v[n++] = b;
     v[n++] = a + 0.5 * (b - a);
     v[n++] = a + 0.1 * (b - a);
     if (a > 0 && b > 1e3 * a) v[n++] = sqrt(a) * sqrt(b);
-    if (kind & EG2D_PARAM_KIND_AUTOMATIC) v[n++] = 0.0;
-    if (kind & EG2D_PARAM_KIND_INTEGER)
+    if (kind & EG2D_VALUE_AUTOMATIC) v[n++] = 0.0;
+    if (kind & EG2D_VALUE_INTEGER)
         for (k = 0; k < n; ++k) v[k] = v[k] == b ? floor(v[k]) : ceil(v[k]);
     return n;
 }

@@ -44,7 +44,7 @@ const std::vector<Feature> &parameters() {
         int kind = 0;
         eg2d_parameter_info(f.id, &kind, nullptr, nullptr);
         f.section = section_of(f.id);
-        f.flag = (kind & EG2D_PARAM_KIND_FLAG) != 0;
+        f.flag = (kind & EG2D_VALUE_FLAG) != 0;
     });
     return t;
 }
@@ -71,7 +71,7 @@ const std::vector<Feature> &formats() {
         std::vector<Feature> v = library_list(EG2D_LIST_FORMATS, [](Feature &f) {
             int kind = 0;
             eg2d_format_info(f.id, &kind, &f.extension);
-            f.directory = kind == EG2D_FORMAT_KIND_DIRECTORY;
+            f.directory = kind == EG2D_WRITES_DIRECTORY;
         });
         // written by the command (run_files.hpp): the run's history and the control functions
         v.push_back({"history", -1, true, ".history.csv", "", false, false, kHistoryCsv});

@@ -16,8 +16,8 @@ std::string number(double v) {
 }
 
 std::string kind_text(int kind) {
-    std::string s = kind & EG2D_PARAM_KIND_FLAG ? "on/off" : kind & EG2D_PARAM_KIND_INTEGER ? "integer" : "real";
-    return kind & EG2D_PARAM_KIND_AUTOMATIC ? s + ", 0 automatic" : s;
+    std::string s = kind & EG2D_VALUE_FLAG ? "on/off" : kind & EG2D_VALUE_INTEGER ? "integer" : "real";
+    return kind & EG2D_VALUE_AUTOMATIC ? s + ", 0 automatic" : s;
 }
 
 // A list of names with their ids: "| name | EG2D id |".
@@ -40,8 +40,8 @@ std::string tables_markdown() {
         eg2d_parameter_bounds(p.id, &lo, &hi, &def);
         eg2d_parameter_info(p.id, &kind, &unit, &summary);
         s += std::string("| `") + p.name + "` | " + std::to_string(p.id) + " | " + p.section + " | " +
-             (kind & EG2D_PARAM_KIND_OPEN_LOWER ? "(" : "[") + number(lo) + ", " + number(hi) +
-             (kind & EG2D_PARAM_KIND_OPEN_UPPER ? ")" : "]") + " | " + number(def) + " | " + kind_text(kind) + " | " + unit + " | " + summary +
+             (kind & EG2D_VALUE_OPEN_LOWER ? "(" : "[") + number(lo) + ", " + number(hi) +
+             (kind & EG2D_VALUE_OPEN_UPPER ? ")" : "]") + " | " + number(def) + " | " + kind_text(kind) + " | " + unit + " | " + summary +
              " |\n";
     }
     s += "\n## Formats\n\n`[output] formats` in a case file; `eg2d_write` with the id.\n\n"

@@ -16,11 +16,11 @@ monitor_fn = CFUNCTYPE(c_int, c_void_p, c_int, c_double)
 curve_fn = CFUNCTYPE(None, c_void_p, c_double, double_p, double_p)
 
 PROTOTYPES = {
-    # Status codes
+    # 1) Status codes, errors and version
     "eg2d_status_string": (c_char_p, [c_int]),
     "eg2d_last_error": (c_char_p, [grid_p]),
     "eg2d_version": (None, [int_p, int_p, int_p]),
-    # Lists: what this library has, by name
+    # 2) Lists: what this library has, by name
     "eg2d_list_count": (c_int, [c_int, int_p]),
     "eg2d_list_entry": (c_int, [c_int, c_int, int_p, POINTER(c_char_p)]),
     "eg2d_list_name": (c_char_p, [c_int, c_int]),
@@ -28,22 +28,37 @@ PROTOTYPES = {
     "eg2d_parameter_info": (c_int, [c_int, int_p, POINTER(c_char_p), POINTER(c_char_p)]),
     "eg2d_format_info": (c_int, [c_int, int_p, POINTER(c_char_p)]),
     "eg2d_quality_cell_field": (c_char_p, [c_int]),
-    # Creating a grid
+    # 4) Create and boundary
     "eg2d_create": (c_int, [c_int, c_int, POINTER(grid_p)]),
     "eg2d_destroy": (None, [grid_p]),
     "eg2d_set_topology": (c_int, [grid_p, c_int]),
     "eg2d_get_topology": (c_int, [grid_p, int_p]),
     "eg2d_get_cut": (c_int, [grid_p, int_p]),
-    # Boundary
     "eg2d_set_side": (c_int, [grid_p, c_int, double_p, double_p]),
     "eg2d_set_boundary": (c_int, [grid_p, double_p, double_p]),
-    # Initial grid
+    "eg2d_set_patch": (c_int, [grid_p, c_int, c_int, c_int, c_int, c_char_p]),
+    "eg2d_clear_patches": (c_int, [grid_p]),
+    "eg2d_get_patch_count": (c_int, [grid_p, int_p]),
+    "eg2d_get_patch": (c_int, [grid_p, c_int, int_p, int_p, int_p, int_p, c_char_p, c_int]),
+    # 5) Initial grid
     "eg2d_initialize": (c_int, [grid_p, c_int]),
     "eg2d_set_coordinates": (c_int, [grid_p, double_p, double_p]),
     "eg2d_set_interior_line": (c_int, [grid_p, c_int, c_int, double_p, double_p]),
     "eg2d_clear_interior_lines": (c_int, [grid_p]),
-    # System, solver and run settings
+    # 6) System, controls and walls
     "eg2d_set_system": (c_int, [grid_p, c_int]),
+    "eg2d_add_line_source": (c_int, [grid_p, c_int, c_double, c_double, c_double]),
+    "eg2d_add_point_source": (c_int, [grid_p, c_double, c_double, c_double, c_double]),
+    "eg2d_clear_sources": (c_int, [grid_p]),
+    "eg2d_set_source_arrays": (c_int, [grid_p, double_p, double_p]),
+    "eg2d_set_orthogonality": (c_int, [grid_p, c_int]),
+    "eg2d_set_wall_spacing": (c_int, [grid_p, c_int, c_double]),
+    "eg2d_set_parameter_grid": (c_int, [grid_p, double_p, double_p]),
+    "eg2d_clustering_map": (c_int, [c_int, c_double, c_double, c_double, c_int, double_p]),
+    "eg2d_tensor_parameter_grid": (c_int, [c_int, c_int, double_p, double_p, double_p, double_p]),
+    "eg2d_set_weight": (c_int, [grid_p, double_p]),
+    "eg2d_get_controls": (c_int, [grid_p, double_p, double_p]),
+    # 7) Solvers and the run
     "eg2d_set_solver": (c_int, [grid_p, c_int]),
     "eg2d_get_solver": (c_int, [grid_p, int_p]),
     "eg2d_solver_name": (c_char_p, [c_int]),
@@ -55,11 +70,26 @@ PROTOTYPES = {
     "eg2d_parameter_bounds": (c_int, [c_int, double_p, double_p, double_p]),
     "eg2d_set_af_cycle": (c_int, [grid_p, c_double, c_double, c_int]),
     "eg2d_set_af_time_rule": (c_int, [grid_p, c_double, c_double]),
-    # Running
     "eg2d_set_monitor": (c_int, [grid_p, monitor_fn, c_void_p]),
     "eg2d_iterate": (c_int, [grid_p, c_int, double_p]),
     "eg2d_solve": (c_int, [grid_p]),
-    # Curves and point distributions (the grid-generation lecture notes sections 2.4-2.5)
+    # 8) Results and quality
+    "eg2d_get_size": (c_int, [grid_p, int_p, int_p]),
+    "eg2d_get_coordinates": (c_int, [grid_p, double_p, double_p]),
+    "eg2d_get_residual": (c_int, [grid_p, double_p]),
+    "eg2d_get_iterations": (c_int, [grid_p, int_p]),
+    "eg2d_get_run_info": (c_int, [grid_p, c_int, int_p]),
+    "eg2d_get_run_event": (c_int, [grid_p, c_int, int_p, c_char_p, c_int]),
+    "eg2d_get_quality": (c_int, [grid_p, c_int, double_p]),
+    "eg2d_get_cell_quality": (c_int, [grid_p, c_int, double_p]),
+    "eg2d_get_wall_layer": (c_int, [grid_p, c_int, c_int, double_p]),
+    # 9) Files
+    "eg2d_write": (c_int, [grid_p, c_char_p, c_int]),
+    "eg2d_read_plot3d": (c_int, [c_char_p, c_int, int_p, int_p, int_p, int_p, double_p, double_p]),
+    "eg2d_read_plot3d_into": (c_int, [c_char_p, c_int, c_int, int_p, int_p, int_p, int_p, double_p, double_p]),
+    "eg2d_read_points": (c_int, [c_char_p, c_int, int_p, double_p, double_p]),
+    "eg2d_set_side_from_file": (c_int, [grid_p, c_int, c_char_p]),
+    # 10) Curves and airfoils
     "eg2d_curve_polyline": (c_int, [c_int, double_p, double_p, POINTER(curve_p)]),
     "eg2d_curve_spline": (c_int, [c_int, double_p, double_p, POINTER(curve_p)]),
     "eg2d_curve_function": (c_int, [curve_fn, c_void_p, POINTER(curve_p)]),
@@ -73,40 +103,5 @@ PROTOTYPES = {
     "eg2d_curve_points": (c_int, [curve_p, c_int, c_int, c_double, c_double, double_p, double_p]),
     "eg2d_set_side_curve": (c_int, [grid_p, c_int, curve_p, c_int, c_double, c_double, c_int]),
     "eg2d_first_cell_height": (c_int, [c_double, c_double, c_double, double_p]),
-    # Queries
-    "eg2d_get_size": (c_int, [grid_p, int_p, int_p]),
-    "eg2d_get_coordinates": (c_int, [grid_p, double_p, double_p]),
-    "eg2d_get_residual": (c_int, [grid_p, double_p]),
-    "eg2d_get_iterations": (c_int, [grid_p, int_p]),
-    "eg2d_get_run_info": (c_int, [grid_p, c_int, int_p]),
-    "eg2d_get_run_event": (c_int, [grid_p, c_int, int_p, c_char_p, c_int]),
-    # Quality
-    "eg2d_get_quality": (c_int, [grid_p, c_int, double_p]),
-    "eg2d_get_cell_quality": (c_int, [grid_p, c_int, double_p]),
-    "eg2d_get_wall_layer": (c_int, [grid_p, c_int, c_int, double_p]),
-    # Files
-    "eg2d_write": (c_int, [grid_p, c_char_p, c_int]),
-    "eg2d_read_plot3d": (c_int, [c_char_p, c_int, int_p, int_p, int_p, int_p, double_p, double_p]),
-    "eg2d_read_plot3d_into": (c_int, [c_char_p, c_int, c_int, int_p, int_p, int_p, int_p, double_p, double_p]),
-    "eg2d_read_points": (c_int, [c_char_p, c_int, int_p, double_p, double_p]),
-    "eg2d_set_side_from_file": (c_int, [grid_p, c_int, c_char_p]),
-    # Grid control
-    "eg2d_add_line_source": (c_int, [grid_p, c_int, c_double, c_double, c_double]),
-    "eg2d_add_point_source": (c_int, [grid_p, c_double, c_double, c_double, c_double]),
-    "eg2d_clear_sources": (c_int, [grid_p]),
-    "eg2d_set_source_arrays": (c_int, [grid_p, double_p, double_p]),
-    "eg2d_set_orthogonality": (c_int, [grid_p, c_int]),
-    "eg2d_set_wall_spacing": (c_int, [grid_p, c_int, c_double]),
-    "eg2d_set_parameter_grid": (c_int, [grid_p, double_p, double_p]),
-    "eg2d_clustering_map": (c_int, [c_int, c_double, c_double, c_double, c_int, double_p]),
-    "eg2d_tensor_parameter_grid": (c_int, [c_int, c_int, double_p, double_p, double_p, double_p]),
-    "eg2d_set_weight": (c_int, [grid_p, double_p]),
-    "eg2d_get_controls": (c_int, [grid_p, double_p, double_p]),
-    # Hyperbolic marching
     "eg2d_set_airfoil": (c_int, [grid_p, curve_p, c_int]),
-    # Boundary patches
-    "eg2d_set_patch": (c_int, [grid_p, c_int, c_int, c_int, c_int, c_char_p]),
-    "eg2d_clear_patches": (c_int, [grid_p]),
-    "eg2d_get_patch_count": (c_int, [grid_p, int_p]),
-    "eg2d_get_patch": (c_int, [grid_p, c_int, int_p, int_p, int_p, int_p, c_char_p, c_int]),
 }

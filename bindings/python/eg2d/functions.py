@@ -73,14 +73,14 @@ def list_find(list_id, name):
 
 
 def parameter_info(param):
-    """(kind, unit, summary) of a parameter: kind has the PARAM_KIND_* bits."""
+    """(kind, unit, summary) of a parameter: kind has the VALUE_* bits."""
     kind, unit, summary = c_int(), c_char_p(), c_char_p()
     _check(lib.eg2d_parameter_info(int(param), byref(kind), byref(unit), byref(summary)))
     return kind.value, _text(unit.value), _text(summary.value)
 
 
 def format_info(fmt):
-    """(kind, suffix) of a file format: kind FORMAT_KIND_FILE or FORMAT_KIND_DIRECTORY."""
+    """(kind, suffix) of a file format: kind WRITES_FILE or WRITES_DIRECTORY."""
     kind, suffix = c_int(), c_char_p()
     _check(lib.eg2d_format_info(int(fmt), byref(kind), byref(suffix)))
     return kind.value, _text(suffix.value)
