@@ -374,9 +374,9 @@ EG2D_API const char *eg2d_quality_cell_field(int metric);
 #define EG2D_PARAM_HERMITE_HEIGHT_IMAX 403  /* the same for IMAX */
 #define EG2D_PARAM_HERMITE_HEIGHT_JMAX 404  /* JMAX */
 #define EG2D_PARAM_HERMITE_HEIGHT_IMIN 405  /* IMIN (= EG2D_PARAM_HERMITE_HEIGHT_JMIN + side) */
-#define EG2D_PARAM_MARCH_DISTANCE      410  /* [0, 1e30], length, auto (default): D, 10 x the
+#define EG2D_PARAM_MARCH_DISTANCE      410  /* (0, 1e30], length, auto (default): D, 10 x the
                                                diagonal of JMIN's bounding box */
-#define EG2D_PARAM_MARCH_FIRST_HEIGHT  411  /* [0, 1e30], length, auto (default): h_1, the one whose
+#define EG2D_PARAM_MARCH_FIRST_HEIGHT  411  /* (0, 1e30], length, auto (default): h_1, the one whose
                                                constant ratio r = 1 + (G-1)/2 reaches D */
 #define EG2D_PARAM_MARCH_GROWTH        412  /* [1, 3], default 1.2: G, the largest layer ratio */
 #define EG2D_PARAM_MARCH_SMOOTHING     413  /* [0, 20], default 0.5: eps_c, strength of the explicit

@@ -2148,6 +2148,30 @@ class CaseParameters(unittest.TestCase):
                     self.assertIn(f"eg2d_set_parameter: {row['key']} = ", stderr)
                     self.assertIn("must be in", stderr)
 
+    def test_the_header_says_what_the_table_says(self):
+        """Where eg2d.h's parameter table gives a range or a default, it is the library's."""
+        with open(os.path.join(EXAMPLES, "..", "include", "eg2d.h")) as f:
+            header = f.read()
+        rows = {int(r["id"]): r for r in tables()["Parameters"]}
+        num = r"(-?\d+(?:\.\d+)?(?:e[+-]?\d+)?)"
+        checked = 0
+        for name, ident, comment in re.findall(r"#define (EG2D_PARAM_\w+)\s+(\d+)\s*/\*(.*?)\*/", header, re.S):
+            comment, row = " ".join(comment.split()), rows[int(ident)]
+            with self.subTest(name=name):
+                m = re.match(r"([\[(])" + num + r", " + num + r"([\])])", comment)
+                if m:
+                    lo, hi = (float(t) for t in row["range"][1:-1].split(","))
+                    self.assertEqual((m.group(1), float(m.group(2)), float(m.group(3)), m.group(4)),
+                                     (row["range"][0], lo, hi, row["range"][-1]), comment)
+                    checked += 1
+                d = re.search(r"default " + num, comment) or re.search(r"(?:^|, )" + num + r" \(default\)", comment)
+                if d:
+                    self.assertEqual(float(d.group(1)), float(row["default"]), comment)
+                if "auto (default" in comment:
+                    self.assertEqual(float(row["default"]), 0.0, comment)
+                    self.assertIn("automatic", row["kind"], comment)
+        self.assertGreaterEqual(checked, 30)
+
     def test_every_initializer(self):
         names = [r["name"] for r in tables()["Initial grids"]]
         self.assertIn("hyperbolic", names)
