@@ -19,8 +19,13 @@ namespace {
 
 const std::vector<std::string> top_keys = {"title", "size", "topology", "system", "initial", "solve",
                                            "constants", "solver", "sides", "controls", "output", "patches", "interior_lines"};
-const std::vector<std::string> controls_keys = {"orthogonality", "wall_spacing",  "wall_growth_limit", "line_source",
-                                                "point_source", "source_arrays", "parameter_grid", "weight"};
+// [controls]: the orthogonality, the growth limit, the command's control
+// kinds (features.cpp) and the controls' parameters (read with them).
+std::vector<std::string> controls_keys() {
+    std::vector<std::string> keys = {"orthogonality", "wall_growth_limit"};
+    for (const auto &k : names(controls())) keys.push_back(k);
+    return keys;
+}
 
 // A name of `table`, or EXIT_CASE (unknown) / EXIT_UNSUPPORTED (not in this build).
 const Feature &pick(const std::vector<Feature> &table, const std::string &name, const Location &at) {
@@ -94,7 +99,6 @@ void read_sides(const Fields &top, Case &c) {
     }
 }
 
-#ifdef EG2D_XI
 // [controls] wall_spacing: a first-cell height per wall side, or a table
 // {yplus, reynolds, chord} turned into one by eg2d_first_cell_height.
 void read_wall_spacing(const Fields &f, Case &c) {
@@ -199,11 +203,10 @@ void read_parameter_grid(const Fields &f, Case &c) {
     }
     c.parameter_grid = true;
 }
-#endif
 
 void read_controls(const Fields &top, Case &c) {
     if (!top.has("controls")) return;
-    std::vector<std::string> keys = controls_keys;
+    std::vector<std::string> keys = controls_keys();
     for (const auto &k : parameter_keys("controls")) keys.push_back(k);
     Fields f(top.table("controls"), top.at("controls"), keys);
     f.finish();
@@ -212,15 +215,10 @@ void read_controls(const Fields &top, Case &c) {
         c.orthogonality = pick_key(f, "orthogonality", "none", orthogonality()).id;
         c.orthogonality_at = f.at("orthogonality");
     }
-    for (const auto &feature : controls())
-        if (f.has(feature.name) && !feature.available)
-            throw Failure(EXIT_UNSUPPORTED, f.at(feature.name).str() + ": is not available in this build of eg2d");
-#ifdef EG2D_XI
     read_wall_spacing(f, c);
     read_sources(f, c);
     read_weight(f, c);
     read_parameter_grid(f, c);
-#endif
 }
 
 // [[patches]]: side (a name of [sides]), first and last node (default: the

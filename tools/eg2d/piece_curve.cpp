@@ -15,7 +15,6 @@ bool needs_curve(const SidePiece &p) {
     return p.distribution.given || !p.curve.empty() || !p.naca.empty() || !p.airfoil.empty() || p.sliding;
 }
 
-#ifdef EG2D_DIST_VINOKUR
 
 namespace {
 
@@ -47,8 +46,6 @@ void check(int status, const Location &at) {
 }
 
 }  // namespace
-
-bool curves_available() { return true; }
 
 namespace {
 
@@ -191,26 +188,5 @@ SlidingSide::SlidingSide(eg2d_grid *grid, const SideSpec &spec, const Constants 
     keep_ = std::shared_ptr<void>(c.release(), [](void *q) { delete static_cast<PieceCurve *>(q); });
 }
 
-#else  // the library has no curves
-
-namespace {
-const char *unavailable = ": is not available in this build of eg2d (it has no curves)";
-}
-
-bool curves_available() { return false; }
-
-Distribution parse_distribution(const toml::node &, const Location &where, const Constants &) {
-    throw Failure(EXIT_UNSUPPORTED, where.str() + unavailable);
-}
-
-void curve_nodes(const SidePiece &p, int, const Constants &, std::vector<double> &, std::vector<double> &) {
-    throw Failure(EXIT_UNSUPPORTED, p.where.str() + unavailable);
-}
-
-SlidingSide::SlidingSide(eg2d_grid *, const SideSpec &spec, const Constants &) {
-    throw Failure(EXIT_UNSUPPORTED, spec.where.str() + unavailable);
-}
-
-#endif
 
 }  // namespace eg2dtool

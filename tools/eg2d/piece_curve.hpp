@@ -17,9 +17,6 @@ namespace eg2dtool {
 // True when the piece needs a library curve (a distribution, a curve kind, an airfoil).
 bool needs_curve(const SidePiece &piece);
 
-// Whether this build's library has curves (else such keys are "not available").
-bool curves_available();
-
 // The distribution named by a case file: "uniform" or a table {kind = ..., ...}.
 Distribution parse_distribution(const toml::node &node, const Location &where, const Constants &constants);
 

@@ -69,7 +69,6 @@ void preflight(const Case &c, const RunOptions &o) {
 }
 
 void apply_controls(eg2d_grid *g, const Case &c) {
-#ifdef EG2D_XI
     if (c.orthogonality >= 0) check(g, eg2d_set_orthogonality(g, c.orthogonality), c.orthogonality_at);
     for (const auto &w : c.wall_spacings) check(g, eg2d_set_wall_spacing(g, w.side, w.height), w.where);
     for (const auto &s : c.line_sources)
@@ -110,10 +109,6 @@ void apply_controls(eg2d_grid *g, const Case &c) {
         check(nullptr, eg2d_tensor_parameter_grid(c.ni, c.nj, u.data(), v.data(), s.data(), t.data()), c.cluster_i.where);
         check(g, eg2d_set_parameter_grid(g, s.data(), t.data()), c.cluster_i.where);
     }
-#else
-    (void)g;
-    (void)c;  // read_case already refused controls this build lacks
-#endif
 }
 
 // The quality summary: the library's metrics (EG2D_QUALITY_*), orthogonality at each side.

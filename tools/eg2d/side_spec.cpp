@@ -42,9 +42,6 @@ SidePiece parse_piece(const toml::table &table, const Location &where, const std
                       const Constants &constants) {
     Fields f(table, where, piece_keys);
     f.finish();
-    if (!curves_available())
-        for (const char *k : {"naca", "airfoil", "curve", "closed_te", "distribution", "sliding"})
-            if (f.has(k)) throw Failure(EXIT_UNSUPPORTED, f.at(k).str() + ": is not available in this build of eg2d");
     SidePiece p;
     p.where = where;
     const int kinds = (f.has("x") || f.has("y")) + f.has("points") + f.has("file") + f.has("naca") + f.has("airfoil");
