@@ -1127,10 +1127,14 @@ EG2D_API int eg2d_first_cell_height(double yplus, double reynolds, double chord,
  * outflow. EG2D_ERR_ARGUMENT, the handle unchanged, when ni leaves fewer
  * than 9 nodes on the section or the spacings do not fit it. The
  * EG2D_PARAM_AIRFOIL_* parameters set afterwards make the boundary again
- * while it is still the one this call made. For a wall-resolved grid set
- * the first cell with eg2d_set_wall_spacing(grid, EG2D_SIDE_JMIN, h)
- * (eg2d_first_cell_height) and solve. The layout in full: docs/methods.md;
- * a walk-through: docs/airfoil.md. */
+ * while it is still the one this call made. The run's defaults become an
+ * airfoil grid's, for each parameter the caller has not set (before or
+ * after this call): EG2D_PARAM_TOLERANCE 1e-10 and, on a C-grid, the
+ * multigrid cycle V(1,2) (EG2D_PARAM_MG_CYCLE 1, _PRE_SMOOTH 1,
+ * _POST_SMOOTH 2). For a wall-resolved grid set the first cell with
+ * eg2d_set_wall_spacing(grid, EG2D_SIDE_JMIN, h) (eg2d_first_cell_height)
+ * and solve: that is the eg2d airfoil command's grid. The layout in full:
+ * docs/methods.md; a walk-through: docs/airfoil.md. */
 EG2D_API int eg2d_set_airfoil(eg2d_grid *grid, const eg2d_curve *section, int topology);
 
 /*=====================================================================

@@ -25,14 +25,11 @@ int main(int argc, char **argv) {
         fprintf(stderr, "%s\n", eg2d_last_error(NULL));
         return 1;
     }
-    /* The section, the wall's first cell (the wall control comes with it),
-     * the tolerance and, on a C-grid, the V(1,2) cycle the command uses. */
+    /* The section (with an airfoil grid's run: its tolerance and cycle) and
+     * the wall's first cell (the wall control comes with it): the command's
+     * grid. */
     int status = eg2d_set_airfoil(g, section, EG2D_TOPO_C);
     if (!status) status = eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h);
-    if (!status) status = eg2d_set_tolerance(g, 1e-10);
-    if (!status) status = eg2d_set_parameter(g, EG2D_PARAM_MG_CYCLE, 1);
-    if (!status) status = eg2d_set_parameter(g, EG2D_PARAM_MG_PRE_SMOOTH, 1);
-    if (!status) status = eg2d_set_parameter(g, EG2D_PARAM_MG_POST_SMOOTH, 2);
     if (!status) status = eg2d_solve(g);
     if (!status) status = eg2d_write(g, argv[3], EG2D_FORMAT_PLOT3D);
     if (status) {

@@ -21,13 +21,9 @@ program command_grid
   h = 1 / (re * sqrt(cf / 2))
   call section%naca4('0012')
   call g%create(ni, nj)
-  ! the section, the wall's first cell, the tolerance and the C-grid's V(1,2) cycle, as the command
+  ! the section (with an airfoil grid's run: tolerance, cycle) and the wall's first cell, as the command
   call g%set_airfoil(section, EG2D_TOPO_C)
   call g%set_wall_spacing(EG2D_SIDE_JMIN, h)
-  call g%set_tolerance(1d-10)
-  call g%set_parameter(EG2D_PARAM_MG_CYCLE, 1d0)
-  call g%set_parameter(EG2D_PARAM_MG_PRE_SMOOTH, 1d0)
-  call g%set_parameter(EG2D_PARAM_MG_POST_SMOOTH, 2d0)
   call g%solve()                        ! stops with the library's message on failure
   call g%write(trim(path), EG2D_FORMAT_PLOT3D)
   call g%get_cut(cut)

@@ -14,13 +14,9 @@ ni, nj, path = int(sys.argv[1]), int(sys.argv[2]), sys.argv[3]
 re = 6e6
 cf = (2 * math.log10(re) - 0.65) ** -2.3  # turbulent flat plate (Schlichting 1979), as the command
 with eg2d.Grid(ni, nj) as g:
-    # the section, the wall's first cell, the tolerance and the C-grid's V(1,2) cycle, as the command
+    # the section (with an airfoil grid's run: tolerance, cycle) and the wall's first cell, as the command
     g.set_airfoil(eg2d.Curve.naca4("0012"), eg2d.TOPO_C)
     g.set_wall_spacing(eg2d.SIDE_JMIN, 1 / (re * math.sqrt(cf / 2)))
-    g.set_tolerance(1e-10)
-    g.set_parameter(eg2d.PARAM_MG_CYCLE, 1)
-    g.set_parameter(eg2d.PARAM_MG_PRE_SMOOTH, 1)
-    g.set_parameter(eg2d.PARAM_MG_POST_SMOOTH, 2)
     g.solve()                                    # raises eg2d.Error with the message
     g.write(path, eg2d.FORMAT_PLOT3D)
     print(f"NACA 0012 C-grid {ni}x{nj}, {g.get_cut()} cut nodes a side, written to {path}")

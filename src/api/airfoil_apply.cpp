@@ -1,5 +1,6 @@
 #include "api/airfoil_apply.hpp"
 
+#include "base/parameters.hpp"
 #include "geometry/airfoil_boundary.hpp"
 
 namespace eg2d {
@@ -24,6 +25,24 @@ void apply_airfoil(eg2d_grid *grid, std::shared_ptr<const ArcLength> section, in
     grid->gen.set_topology(spec.topology);
     grid->gen.set_boundary(x.data(), y.data());
     grid->airfoil = std::move(memory);
+}
+
+void airfoil_run_defaults(eg2d_grid *grid, int topology) {
+    struct Default {
+        int param;
+        double value;
+        bool c_grid_only;
+    };
+    static const Default kDefaults[] = {
+        {EG2D_PARAM_TOLERANCE, 1e-10, false},
+        {EG2D_PARAM_MG_CYCLE, 1, true},
+        {EG2D_PARAM_MG_PRE_SMOOTH, 1, true},
+        {EG2D_PARAM_MG_POST_SMOOTH, 2, true},
+    };
+    Settings &s = grid->gen.settings;
+    for (const Default &d : kDefaults)
+        if (!grid->set_by_caller.count(d.param) && (!d.c_grid_only || topology == EG2D_TOPO_C))
+            s.*(find_parameter(d.param)->field) = d.value;
 }
 
 void set_settings_remaking_airfoil(eg2d_grid *grid, const Settings &next) {

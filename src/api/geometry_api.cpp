@@ -164,6 +164,7 @@ EG2D_API int eg2d_set_airfoil(eg2d_grid *grid, const eg2d_curve *section, int to
         require(topology == EG2D_TOPO_O || topology == EG2D_TOPO_C,
                 format("topology = %d: an airfoil grid is EG2D_TOPO_O (1) or EG2D_TOPO_C (2)", topology));
         apply_airfoil(grid, std::make_shared<const ArcLength>(section->arc), topology, grid->gen.settings);
+        airfoil_run_defaults(grid, topology);
     });
 }
 

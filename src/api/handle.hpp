@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <new>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -32,6 +33,9 @@ struct eg2d_grid {
         int topology = 0;
         std::vector<double> x, y;
     } airfoil;
+    // The EG2D_PARAM_* ids the caller has set: eg2d_set_airfoil's run
+    // defaults (airfoil_apply.hpp) leave them as they are.
+    std::set<int> set_by_caller;
 };
 
 namespace eg2d {

@@ -16,7 +16,10 @@ int set_param(eg2d_grid *grid, const char *function, int param, double value) {
         Settings next = grid->gen.settings;
         next.*(p->field) = value;
         check_settings(next);
+        std::set<int> by_caller = grid->set_by_caller;  // allocates before the change: strong guarantee
+        by_caller.insert(param);
         set_settings_remaking_airfoil(grid, next);
+        grid->set_by_caller.swap(by_caller);
     });
 }
 }  // namespace

@@ -170,6 +170,51 @@ static void test_o_grid_sharp_edge_base(void **state) {
  * eg2d_set_airfoil they make its boundary again (a far field of 500 set
  * afterwards was 100, with EG2D_OK), identical to the grid they make set
  * before; once the user has replaced a side, no longer. */
+/* eg2d_set_airfoil makes the run an airfoil grid's (tolerance 1e-10, on a
+ * C-grid the V(1,2) cycle) for each parameter the caller has not set, before
+ * or after it; a caller's setting stays. */
+static double param(const eg2d_grid *g, int id) {
+    double v = -1;
+    assert_int_equal(eg2d_get_parameter(g, id, &v), EG2D_OK);
+    return v;
+}
+
+static void test_airfoil_run_defaults(void **state) {
+    eg2d_curve *naca;
+    eg2d_grid *g;
+    double def;
+    (void)state;
+    assert_int_equal(eg2d_curve_naca4("0012", 0, &naca), EG2D_OK);
+    /* nothing set: the C-grid's run */
+    assert_int_equal(eg2d_create(129, 33, &g), EG2D_OK);
+    assert_int_equal(eg2d_set_airfoil(g, naca, EG2D_TOPO_C), EG2D_OK);
+    assert_true(param(g, EG2D_PARAM_TOLERANCE) == 1e-10);
+    assert_true(param(g, EG2D_PARAM_MG_CYCLE) == 1 && param(g, EG2D_PARAM_MG_PRE_SMOOTH) == 1 &&
+                param(g, EG2D_PARAM_MG_POST_SMOOTH) == 2);
+    /* set afterwards: the caller's value */
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_MG_CYCLE, 2), EG2D_OK);
+    assert_int_equal(eg2d_set_airfoil(g, naca, EG2D_TOPO_C), EG2D_OK);
+    assert_true(param(g, EG2D_PARAM_MG_CYCLE) == 2);
+    eg2d_destroy(g);
+    /* set before, even to the library's own default: kept */
+    assert_int_equal(eg2d_parameter_bounds(EG2D_PARAM_TOLERANCE, NULL, NULL, &def), EG2D_OK);
+    assert_int_equal(eg2d_create(129, 33, &g), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(g, def), EG2D_OK);
+    assert_int_equal(eg2d_set_airfoil(g, naca, EG2D_TOPO_O), EG2D_OK);
+    assert_true(param(g, EG2D_PARAM_TOLERANCE) == def);
+    /* an O-grid keeps the default cycle */
+    assert_int_equal(eg2d_parameter_bounds(EG2D_PARAM_MG_CYCLE, NULL, NULL, &def), EG2D_OK);
+    assert_true(param(g, EG2D_PARAM_MG_CYCLE) == def);
+    /* a failed eg2d_set_airfoil changes nothing */
+    eg2d_destroy(g);
+    assert_int_equal(eg2d_create(9, 5, &g), EG2D_OK);
+    assert_int_equal(eg2d_set_airfoil(g, naca, EG2D_TOPO_C), EG2D_ERR_ARGUMENT);
+    assert_int_equal(eg2d_parameter_bounds(EG2D_PARAM_TOLERANCE, NULL, NULL, &def), EG2D_OK);
+    assert_true(param(g, EG2D_PARAM_TOLERANCE) == def);
+    eg2d_destroy(g);
+    eg2d_curve_destroy(naca);
+}
+
 static void test_settings_after_set_airfoil(void **state) {
     const int ni = 129, nj = 33, n = ni * nj;
     double *x1 = alloc(n), *y1 = alloc(n), *x2 = alloc(n), *y2 = alloc(n);
@@ -290,6 +335,7 @@ int main(void) {
         cmocka_unit_test(test_o_grid_sharp_edge_base),
         cmocka_unit_test(test_refused),
         cmocka_unit_test(test_settings_after_set_airfoil),
+        cmocka_unit_test(test_airfoil_run_defaults),
         cmocka_unit_test(test_wall_resolved),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -341,17 +341,7 @@ int run_airfoil(int argc, char **argv, char **whole_argv) {
         check(g, eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, h), "the first cell");
         check(g, eg2d_set_orthogonality(g, EG2D_ORTHO_WALL), "the wall control");
         check(g, eg2d_set_parameter(g, EG2D_PARAM_WALL_LAYER, a.method == "hybrid" ? 2 : 0), "--method");
-        check(g, eg2d_set_tolerance(g, 1e-10), "tolerance");
-        // The hybrid C-grids' cycle: V with one sweep before the coarse
-        // correction and two after. On the C-grids (385x97 to
-        // 3585x1025) V(2,1) needed as many cycles as the library's default
-        // W(2,1) in 20-35% less time, and V(1,2) as many again; on 7169x2049
-        // V(1,2) took 6 cycles where V(2,1) took 9 (bench/RESULTS.md).
-        if (a.method == "hybrid" && cgrid) {
-            check(g, eg2d_set_parameter(g, EG2D_PARAM_MG_CYCLE, 1), "the cycle");
-            check(g, eg2d_set_parameter(g, EG2D_PARAM_MG_PRE_SMOOTH, 1), "the cycle");
-            check(g, eg2d_set_parameter(g, EG2D_PARAM_MG_POST_SMOOTH, 2), "the cycle");
-        }
+        // The tolerance and the cycle are eg2d_set_airfoil's run defaults.
         status = eg2d_solve(g);
     }
     progress.finish();
