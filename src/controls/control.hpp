@@ -77,6 +77,10 @@ public:
     // initialisation and after any change of grid, boundary or controls.
     // Default: nothing.
     virtual WallLayerShape shape_start(Grid &, const Settings &, bool /*fill_above*/) { return {}; }
+    // Throws Argument when the control cannot act on this grid (a wall's
+    // first cell below what double precision resolves); called before a
+    // start grid or a run changes anything.
+    virtual void check(const Grid &) const {}
     // True when shape_start re-spaces the start's lines (the graded wall
     // layer): the run then gives it the Winslow grid without controls.
     virtual bool grades(const Grid &, const Settings &) const { return false; }

@@ -584,6 +584,28 @@ private:
     }
 
     std::array<double, 4> height_;
+
+    // A first cell below this share of the wall's coordinates is rounding:
+    // its nodes cannot be told from the wall's (1e-20 chords made cells of
+    // zero area that the fold count, a sign test, passed).
+    static constexpr double kLeastHeight = 1e-13;
+
+    void check(const Grid &g) const override {
+        for (int side = 0; side < 4; ++side) {
+            const Side s = static_cast<Side>(side);
+            if (!(height_[side] > 0.0) || !g.has_side(s)) continue;
+            double largest = 0.0;
+            for (int p = 0; p < g.side_length(s); ++p) {
+                const std::size_t k = side_node(g, s, p);
+                largest = std::max({largest, std::fabs(g.x[k]), std::fabs(g.y[k])});
+            }
+            if (height_[side] < kLeastHeight * largest)
+                fail(Failure::Argument,
+                     format("the first cell at %s, %g, is below %g of the side's coordinates (up to %g): double "
+                            "precision cannot tell its nodes from the wall's (eg2d_set_wall_spacing)",
+                            side_name(s), height_[side], kLeastHeight, largest));
+        }
+    }
     GradedLayer graded_;
     double graded_rel_ = 0.0;  // the last update's relative_gap
     double layer_growth_ = 0.0;  // > 0: a marched layer is held, and this is its growth

@@ -283,6 +283,36 @@ static eg2d_grid *channel(int ni, int nj, double h) {
     return g;
 }
 
+/* A first cell below 1e-13 of the wall's coordinates is refused at the run's
+ * start, named, the grid as it was (1e-20 chords made cells of zero area
+ * that the fold count passed); 1e-12 of a unit channel is made. */
+static void test_unresolvable_first_cell_refused(void **state) {
+    (void)state;
+    eg2d_grid *g = channel(65, 33, 1e-20);
+    double x0[65 * 33], y0[65 * 33], x[65 * 33], y[65 * 33];
+    assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_ERR_ARGUMENT);  /* the layer is made there too */
+    if (!strstr(eg2d_last_error(g), "the first cell at JMIN, 1e-20, is below 1e-13"))
+        fail_msg("message: %s", eg2d_last_error(g));
+    assert_int_equal(eg2d_get_coordinates(g, x0, y0), EG2D_ERR_STATE);  /* no grid made */
+    eg2d_destroy(g);
+    g = channel(65, 33, 1e-3);  /* a grid solved, then a first cell too small: refused, the grid kept */
+    solve_ok(g);
+    assert_int_equal(eg2d_get_coordinates(g, x0, y0), EG2D_OK);
+    assert_int_equal(eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 1e-20), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_ERR_ARGUMENT);
+    if (!strstr(eg2d_last_error(g), "the first cell at JMIN, 1e-20, is below 1e-13"))
+        fail_msg("message: %s", eg2d_last_error(g));
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    assert_memory_equal(x, x0, sizeof x);
+    assert_memory_equal(y, y0, sizeof y);
+    eg2d_destroy(g);
+    g = channel(65, 33, 1e-12);
+    assert_int_equal(eg2d_set_max_iterations(g, 3), EG2D_OK);
+    const int status = eg2d_solve(g);
+    assert_true(status == EG2D_OK || status == EG2D_ERR_NOT_CONVERGED);
+    eg2d_destroy(g);
+}
+
 static void test_short_layer_says_so(void **state) {
     (void)state;
     eg2d_grid *g = channel(33, 17, 1e-6);
@@ -340,6 +370,7 @@ int main(void) {
         cmocka_unit_test(test_body_in_pipe),
         cmocka_unit_test(test_cavity_corners), cmocka_unit_test(test_corner_walls_clustered_sides),
         cmocka_unit_test(test_short_layer_says_so), cmocka_unit_test(test_wall_spacing_alone_is_a_wall),
+        cmocka_unit_test(test_unresolvable_first_cell_refused),
         cmocka_unit_test(test_short_layer_monitor), cmocka_unit_test(test_unclustered_wall_corner_says_so),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
