@@ -101,12 +101,15 @@ std::vector<Output> outputs_of(const std::string &command, const std::string &li
             out.push_back({name, "-3d.xyz", EG2D_FORMAT_PLOT3D | EG2D_PLOT3D_EXTRUDED});
             continue;
         }
+        // the library's formats but its reports (written with every level) and the pictures (views)
         const Feature *f = nullptr;
+        std::string known = "plot3d3d, svg, png";
         for (const Feature &k : formats())
-            if (name == k.name && k.tool == 0 && k.id != EG2D_FORMAT_REPORT && k.id != EG2D_FORMAT_REPORT_JSON) f = &k;
-        if (!f)
-            front_end_usage(command, "--format: unknown format \"" + name + "\" (plot3d, plot3d3d, plot3d-ascii, cgns, su2, "
-                                     "openfoam, vts, svg, png, gmv, matlab)");
+            if (k.tool == 0 && k.id != EG2D_FORMAT_REPORT && k.id != EG2D_FORMAT_REPORT_JSON && k.id != EG2D_FORMAT_SVG) {
+                known += std::string(", ") + k.name;
+                if (name == k.name) f = &k;
+            }
+        if (!f) front_end_usage(command, "--format: unknown format \"" + name + "\" (" + known + ")");
         if (!f->available) throw Failure(EXIT_UNSUPPORTED, command + ": --format " + name + " is not in this build");
         out.push_back({name, f->extension, f->id, false, f->directory});
     }
