@@ -22,7 +22,6 @@
 namespace eg2d {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 struct Range {
     double min = std::numeric_limits<double>::infinity(), max = -std::numeric_limits<double>::infinity(), sum = 0;
