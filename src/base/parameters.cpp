@@ -10,9 +10,9 @@
 namespace eg2d {
 
 namespace {
-constexpr Range closed(double a, double b) { return {a, b, false, false}; }
-constexpr Range open(double a, double b) { return {a, b, true, true}; }
-constexpr Range open_closed(double a, double b) { return {a, b, true, false}; }  // (a, b]
+constexpr ValueRange closed(double a, double b) { return {a, b, false, false}; }
+constexpr ValueRange open(double a, double b) { return {a, b, true, true}; }
+constexpr ValueRange open_closed(double a, double b) { return {a, b, true, false}; }  // (a, b]
 
 constexpr int kReal = EG2D_VALUE_REAL, kInteger = EG2D_VALUE_INTEGER;
 constexpr int kFlag = EG2D_VALUE_FLAG | EG2D_VALUE_INTEGER, kAuto = EG2D_VALUE_AUTOMATIC;
@@ -132,7 +132,7 @@ void check_parameter(const ParameterInfo &p, double v) {
     if (!std::isfinite(v)) fail(Failure::Argument, format("%s = %g: must be finite", p.name, v));
     const bool automatic = p.kind & EG2D_VALUE_AUTOMATIC;
     if (automatic && v == 0.0) return;
-    const Range &r = p.range;
+    const ValueRange &r = p.range;
     const bool below = r.open_lower ? !(v > r.lower) : !(v >= r.lower);
     const bool above = r.open_upper ? !(v < r.upper) : !(v <= r.upper);
     if (below || above)

@@ -8,7 +8,7 @@
 namespace eg2d {
 
 // An interval of allowed values; an open end excludes its bound.
-struct Range {
+struct ValueRange {
     double lower, upper;
     bool open_lower, open_upper;
 };
@@ -16,7 +16,7 @@ struct Range {
 struct ParameterInfo {
     int id;                 // EG2D_PARAM_*
     const char *name;       // "wall_growth"
-    Range range;
+    ValueRange range;
     int kind;               // EG2D_VALUE_* bits
     const char *unit;       // "1", "length", "chords", "nodes", "iterations", "sweeps"
     const char *summary;    // one line
