@@ -24,11 +24,14 @@ foreach(path IN LISTS EG2D_CLI_EXAMPLES)
     set(size 257x161)
   endif()
   add_test(NAME cli_example_${name} COMMAND ${EG2D_CLI_PYTHON} ${EG2D_CLI_TEST} ${EG2D_CLI_ARGS} --example ${name} ${size})
+  # the command traps invalid, divide-by-zero and overflow, as a host may (main.cpp)
+  set_tests_properties(cli_example_${name} PROPERTIES ENVIRONMENT EG2D_FP_TRAPS=1)
 endforeach()
 
 foreach(group ErrorMessages CaseParameters Sides Controls CommandLine Demo Progress Patches RunFiles Airfoil AirfoilOutputSet Channel SharpTrailingEdge
               InteriorLines)
   add_test(NAME cli_${group} COMMAND ${EG2D_CLI_PYTHON} ${EG2D_CLI_TEST} ${EG2D_CLI_ARGS} ${group})
+  set_tests_properties(cli_${group} PROPERTIES ENVIRONMENT EG2D_FP_TRAPS=1)
 endforeach()
 
 # docs/tables.md is what the library's tables say now (eg2d --tables).

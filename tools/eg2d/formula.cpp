@@ -1,5 +1,7 @@
 #include "formula.hpp"
 
+#include <cfenv>
+
 #include <muParser.h>
 
 #include <cmath>
@@ -8,6 +10,17 @@
 #include "failure.hpp"
 
 namespace eg2dtool {
+
+namespace {
+// A user's formula may divide by zero or overflow, which is then refused by
+// name (not finite): its evaluation runs with the floating-point traps a
+// host (or EG2D_FP_TRAPS) set paused, and the flags it raised discarded.
+struct Untrapped {
+    std::fenv_t env;
+    Untrapped() { std::feholdexcept(&env); }
+    ~Untrapped() { std::fesetenv(&env); }
+};
+}  // namespace
 
 std::string fmt(double v) {
     std::ostringstream s;
@@ -26,6 +39,7 @@ Formula::Formula(const std::string &text, const std::vector<std::string> &variab
         for (const auto &c : constants) parser_->DefineConst(c.first, c.second);
         for (std::size_t k = 0; k < variables.size(); ++k) parser_->DefineVar(variables[k], &slots_[k]);
         parser_->SetExpr(text);
+        const Untrapped untrapped;
         parser_->Eval();  // compiles: reports syntax errors and unknown names now
     } catch (const mu::Parser::exception_type &e) {
         throw Failure(EXIT_CASE, where.str() + ": bad formula \"" + text + "\": " + e.GetMsg());
@@ -40,6 +54,7 @@ double Formula::operator()(const std::vector<double> &values) const {
     for (std::size_t k = 0; k < names_.size() && k < values.size(); ++k) slots_[k] = values[k];
     double v;
     try {
+        const Untrapped untrapped;
         v = parser_->Eval();
     } catch (const mu::Parser::exception_type &e) {
         throw Failure(EXIT_CASE, where_.str() + ": bad formula \"" + text_ + "\": " + e.GetMsg());
