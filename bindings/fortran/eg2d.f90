@@ -20,6 +20,25 @@
 ! Arrays are real(c_double) (= real(kind(1d0)) with gfortran); node (i, j) of
 ! the C manual is x(i+1, j+1) here.
 !
+! Threads (eg2d.h, "Threads", holds for the module):
+!  - different eg2d_grid_t / eg2d_curve_t objects may be used from different
+!    threads at the same time (OpenMP, pthreads via bind(C)): the library has
+!    no global mutable state, and the module none that a call writes (the
+!    count of eg2d_live_grids is a C atomic, live_grids.c);
+!  - one object, one call at a time: no call is locked inside, the queries
+!    included (get_residual caches; every failure writes the handle's error
+!    text and the object's message). Serialise a shared object yourself
+!    (!$omp critical, a lock);
+!  - an object may move between threads (no thread affinity) when the hand
+!    over is synchronised (a barrier, a join, a lock);
+!  - g%last_error() is the object's: read it before the next call on it;
+!    eg2d_last_error(c_null_ptr) is per thread;
+!  - the monitor runs on the thread of iterate/solve, inside the call: it
+!    may query its own grid (eg2d_get_* on its handle), never change or
+!    destroy it;
+!  - eg2d_version_string, eg2d_status_message, eg2d_solver_short_name and
+!    eg2d_get_parameter_bounds need no handle and are safe from any thread.
+!
 ! Generated and hand-written: tools/gen_bindings.py writes the wrappers of the
 ! mechanical shapes from eg2d.h into eg2d_wrappers.inc (with their type-bound
 ! lines, eg2d_grid_procedures.inc and eg2d_curve_procedures.inc, and their
@@ -87,8 +106,20 @@ module eg2d
   public :: eg2d_c_string, eg2d_version_string, eg2d_live_grids
   public :: eg2d_read_plot3d_grid, eg2d_read_point_file, eg2d_get_tensor_parameter_grid
 
-  ! Grids created through eg2d_grid_t and not yet freed (to check finalisation).
-  integer, save :: live_grids = 0
+  ! The number of grids created through eg2d_grid_t and not yet freed (to
+  ! check finalisation): an atomic counter in C (live_grids.c), since grids
+  ! are created and destroyed on several threads at once; the module has no
+  ! SAVE variable that a call writes.
+  interface
+    subroutine live_grids_add(delta) bind(C, name='eg2d_fortran_live_grids_add')
+      import :: c_int
+      integer(c_int), value :: delta
+    end subroutine live_grids_add
+    function live_grids() bind(C, name='eg2d_fortran_live_grids') result(n)
+      import :: c_int
+      integer(c_int) :: n
+    end function live_grids
+  end interface
 
 contains
 
@@ -121,8 +152,9 @@ contains
     s = trim(buf)
   end function eg2d_version_string
 
+  ! Hand-written: no C function; the module's own count (live_grids.c).
   integer function eg2d_live_grids()
-    eg2d_live_grids = live_grids
+    eg2d_live_grids = int(live_grids())
   end function eg2d_live_grids
 
   ! ---------------------------------------------------------------- errors
@@ -198,7 +230,7 @@ contains
     integer(c_int) :: rc
     call grid_destroy(self)
     rc = eg2d_create(int(ni, c_int), int(nj, c_int), self%handle)
-    if (rc == EG2D_OK) live_grids = live_grids + 1
+    if (rc == EG2D_OK) call live_grids_add(1_c_int)
     call finish(self, rc, status)
   end subroutine grid_create
 
@@ -207,7 +239,7 @@ contains
     class(eg2d_grid_t), intent(inout) :: self
     if (c_associated(self%handle)) then
       call eg2d_destroy(self%handle)
-      live_grids = live_grids - 1
+      call live_grids_add(-1_c_int)
     end if
     self%handle = c_null_ptr
   end subroutine grid_destroy
