@@ -36,7 +36,9 @@ declaration (see fortran_wrapper):
     const eg2d_curve * -> class(eg2d_curve_t); int * -> integer, intent(out);
     double * -> real(c_double), intent(out); const char ** -> character(:),
     allocatable, intent(out) (the library's string copied); arrays as WRAPPERS
-    says (a size argument is size() of its arrays; a field is (ni, nj)).
+    says (a size argument is size() of its arrays; a field is (ni, nj)); a
+    `char *` buffer with its size as WRAPPERS says -> character(len=*),
+    intent(out).
   No wrapper for a shape outside these (a buffer, a callback, an array of no
   WRAPPERS row): the generator stops and names the declaration; write the
   wrapper by hand in eg2d.f90 and list the function in HAND_WRITTEN with the
@@ -174,8 +176,6 @@ HAND_WRITTEN = {
     "eg2d_set_interior_line": "the direction decides the number of points (nj or ni)",
     "eg2d_set_monitor": "a callback (c_funloc of an optional procedure) with its user pointer",
     "eg2d_curve_function": "a callback (c_funloc) with its user pointer",
-    "eg2d_get_run_event": "a C buffer copied into the caller's character(len=*)",
-    "eg2d_get_patch": "a C buffer copied into the caller's character(len=*)",
     "eg2d_get_cell_quality": "an array of the cells, (ni-1, nj-1)",
     "eg2d_get_controls": "P and Q checked together, with a message of their own",
     "eg2d_tensor_parameter_grid": "two (size(u), size(v)) arrays sized by two others",
@@ -202,6 +202,9 @@ WRAPPER_NAMES = {
 #   optional   with pass: the Fortran argument is optional (absent = NULL)
 #   inout      a double output that is intent(inout), handed as it is
 #   default=V  an int input that is optional, V when absent
+#   buffer=N   a `char *` the call fills: a C buffer of N characters, copied into
+#              the caller's character(len=*), intent(out) (cut to its length)
+#   length=B   this int is the size of the buffer B (not an argument)
 WRAPPERS = {
     "eg2d_get_topology": {"topology": "init=-1"},
     "eg2d_get_cut": {"wake": "init=-1"},
@@ -223,6 +226,8 @@ WRAPPERS = {
     "eg2d_distribution_parameter": {"p1": "inout"},
     "eg2d_clustering_map": {"n": "size=u_out", "u_out": "name=u"},
     "eg2d_first_cell_height": {"reynolds": "name=re"},
+    "eg2d_get_run_event": {"message": "buffer=512", "size": "length=message"},
+    "eg2d_get_patch": {"name": "buffer=64", "size": "length=name"},
 }
 
 # `#define EG2D_*` names that are not constants of the API.
@@ -582,7 +587,8 @@ def fortran(header):
 
 # ---------------------------------------------------------------- Fortran wrappers
 
-WRAPPER_FLAGS = ("size", "field", "name", "init", "pass", "optional", "inout", "default")
+WRAPPER_FLAGS = ("size", "field", "name", "init", "pass", "optional", "inout", "default", "buffer", "length")
+VALUED_FLAGS = ("size", "name", "init", "default", "buffer", "length")
 GRID_HANDLES = ("eg2d_grid *", "const eg2d_grid *")
 # The inputs a wrapper takes as the caller's Fortran value: its declaration and
 # what the C function is handed.
@@ -607,7 +613,7 @@ def wrapper_flags(fn):
         out[p.name] = {}
         for item in rows.get(p.name, "").split():
             key, _, value = item.partition("=")
-            if key not in WRAPPER_FLAGS or (key in ("size", "name", "init", "default")) != bool(value):
+            if key not in WRAPPER_FLAGS or (key in VALUED_FLAGS) != bool(value):
                 raise GenError(f"WRAPPERS[{fn.name}][{p.name}]: unknown flag '{item}'")
             out[p.name][key] = value or True
     for pname in rows:
@@ -677,8 +683,20 @@ class Wrapper:
                 elif len(arrays) != 1:
                     self.nope(f"'{p.name}' sizes several arrays outside a curve")
                 continue
+            if "length" in f:
+                buf = f["length"]
+                if p.ctype != "int" or "buffer" not in flags.get(buf, {}):
+                    raise GenError(f"WRAPPERS[{fn.name}][{p.name}]: length of '{buf}', no buffer of {fn.name}")
+                actuals.append(f"int(size({names[buf]}_c), c_int)")
+                continue
             dummies.append(d)
-            if p.ctype == "int" and "default" in f:
+            if p.ctype == "char *" and "buffer" in f:
+                decls.append(f"character(len=*), intent(out) :: {d}")
+                locals_.append(f"character(kind=c_char) :: {local}({int(f['buffer'])})")
+                pre.append(f"{local} = c_null_char")
+                post.append(f"call c_buffer_copy({local}, {d})")
+                actuals.append(local)
+            elif p.ctype == "int" and "default" in f:
                 decls.append(f"integer, intent(in), optional :: {d}")
                 locals_.append(f"integer(c_int) :: {local}")
                 pre += [f"{local} = {f['default']}", f"if (present({d})) {local} = int({d}, c_int)"]
@@ -725,6 +743,7 @@ class Wrapper:
                 self.nope(f"'{p.ctype} {p.name}'" + (" (an array)" if array else ""))
         lower = {d.lower() for d in dummies}
         own = {"self", "s", "text", "size", "int", "present", "c_int", "c_path", "c_null_ptr", "eg2d_c_string"}
+        own |= {"c_null_char", "c_buffer_copy"}
         own |= {"status"} if fn.ret == "int" else set()
         own |= {"ni", "nj"} if fields else set()
         own |= {v.split("::")[-1].strip().lower() for v in locals_}
@@ -798,7 +817,8 @@ def fortran_wrappers(header):
                    "! docstring, WRAPPERS, WRAPPER_NAMES), module procedures of module eg2d;",
                    "! eg2d.f90 includes this file after `contains` and writes the helpers it calls",
                    "! (finish, curve_finish, settle, size_of, shape_ok, field_ok, points_ok,",
-                   "! c_path, eg2d_c_string). The functions of HAND_WRITTEN are wrapped there."]
+                   "! c_path, c_buffer_copy, eg2d_c_string). The functions of HAND_WRITTEN are",
+                   "! wrapped there."]
     for title, _, _, fns in by_section(header):
         group = [w for w in wrappers if w.fn in fns]
         if not group:

@@ -80,10 +80,8 @@ module eg2d
     procedure :: set_side => grid_set_side
     procedure :: set_interior_line => grid_set_interior_line
     procedure :: set_monitor => grid_set_monitor
-    procedure :: get_run_event => grid_get_run_event
     procedure :: get_cell_quality => grid_get_cell_quality
     procedure :: get_controls => grid_get_controls
-    procedure :: get_patch => grid_get_patch
     final :: grid_final
   end type eg2d_grid_t
 
@@ -339,27 +337,6 @@ contains
 
   ! ---------------------------------------------------------------- queries
 
-  ! The k-th change of strategy of the last run (k from 0): its iteration and message.
-  subroutine grid_get_run_event(self, index, iteration, message, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: index
-    integer, intent(out) :: iteration
-    character(len=*), intent(out) :: message
-    integer, intent(out), optional :: status
-    character(kind=c_char) :: buf(512)
-    integer(c_int) :: it
-    integer :: k
-    it = 0
-    buf = c_null_char
-    call finish(self, eg2d_get_run_event(self%handle, int(index, c_int), it, buf, int(size(buf), c_int)), status)
-    iteration = int(it)
-    message = ''
-    do k = 1, min(len(message), size(buf))
-      if (buf(k) == c_null_char) exit
-      message(k:k) = buf(k)
-    end do
-  end subroutine grid_get_run_event
-
   ! The per-cell values of a quality metric into values(ni-1, nj-1).
   subroutine grid_get_cell_quality(self, metric, values, status)
     class(eg2d_grid_t), intent(inout) :: self
@@ -449,27 +426,6 @@ contains
     end if
   end function field_ok
 
-  ! The index-th stretch (from 0): side, nodes first..last, type and name.
-  subroutine grid_get_patch(self, index, side, first, last, type, name, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: index
-    integer, intent(out) :: side, first, last, type
-    character(len=*), intent(out) :: name
-    integer, intent(out), optional :: status
-    character(kind=c_char) :: buf(64)
-    integer(c_int) :: s, f, l, t
-    integer :: k
-    s = 0; f = 0; l = 0; t = 0
-    buf = c_null_char
-    call finish(self, eg2d_get_patch(self%handle, int(index, c_int), s, f, l, t, buf, int(size(buf), c_int)), status)
-    side = int(s); first = int(f); last = int(l); type = int(t)
-    name = ''
-    do k = 1, min(len(name), size(buf))
-      if (buf(k) == c_null_char) exit
-      name(k:k) = buf(k)
-    end do
-  end subroutine grid_get_patch
-
   ! s(i,j) = u(i), t(i,j) = v(j): s, t must be (size(u), size(v)).
   subroutine eg2d_get_tensor_parameter_grid(u, v, s, t, status)
     real(c_double), intent(in) :: u(:), v(:)
@@ -551,6 +507,18 @@ contains
       s = ''
     end if
   end function curve_last_error
+
+  ! A C buffer's text (up to its NUL) into s, cut to len(s), blank-padded.
+  subroutine c_buffer_copy(buf, s)
+    character(kind=c_char), intent(in) :: buf(:)
+    character(len=*), intent(out) :: s
+    integer :: k
+    s = ''
+    do k = 1, min(len(s), size(buf))
+      if (buf(k) == c_null_char) exit
+      s(k:k) = buf(k)
+    end do
+  end subroutine c_buffer_copy
 
   ! A Fortran path as the C string the library reads.
   function c_path(path) result(p)
