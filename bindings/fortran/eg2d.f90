@@ -141,6 +141,7 @@ contains
   end function eg2d_c_string
 
   ! The run-time library version as "major.minor.patch".
+  ! Hand-written: eg2d_version's three numbers as one string.
   function eg2d_version_string() result(s)
     character(:), allocatable :: s
     integer(c_int) :: major, minor, patch
@@ -221,6 +222,7 @@ contains
 
   ! ---------------------------------------------------------------- lifetime
   ! Creates an ni x nj grid; an earlier grid held by self is freed first.
+  ! Hand-written: frees the grid held before, counts the live grid.
   subroutine grid_create(self, ni, nj, status)
     class(eg2d_grid_t), intent(inout) :: self
     integer, intent(in) :: ni, nj
@@ -233,6 +235,7 @@ contains
   end subroutine grid_create
 
   ! Frees the grid; a grid never created (or already freed) is a no-op.
+  ! Hand-written: a no-op on a freed grid, counts the live grid; no status.
   subroutine grid_destroy(self)
     class(eg2d_grid_t), intent(inout) :: self
     if (c_associated(self%handle)) then
@@ -255,6 +258,7 @@ contains
   end function grid_c_handle
 
   ! The message of the last failed call through this object ('' if none).
+  ! Hand-written: the object's message, which has the Fortran layer's own checks too.
   function grid_last_error(self) result(s)
     class(eg2d_grid_t), intent(in) :: self
     character(:), allocatable :: s
@@ -268,6 +272,7 @@ contains
   ! ---------------------------------------------------------------- boundary
   ! One side from its points in increasing index: ni points for JMIN/JMAX,
   ! nj for IMIN/IMAX. An unknown side is left for the library to report.
+  ! Hand-written: the side decides the number of points (ni or nj).
   subroutine grid_set_side(self, side, x, y, status)
     class(eg2d_grid_t), intent(inout) :: self
     integer, intent(in) :: side
@@ -303,6 +308,7 @@ contains
   ! An interior line held by TFI and every solver: the column i = index
   ! (direction EG2D_XI, nj points) or the row j = index (EG2D_ETA, ni points).
   ! Indices are eg2d's, 0-based: the Fortran column x(index+1, :).
+  ! Hand-written: the direction decides the number of points (nj or ni).
   subroutine grid_set_interior_line(self, direction, index, x, y, status)
     class(eg2d_grid_t), intent(inout) :: self
     integer, intent(in) :: direction, index
@@ -321,6 +327,7 @@ contains
   ! ---------------------------------------------------------------- running
   ! fn: a bind(C) function with the interface eg2d_monitor_fn; absent removes
   ! the monitor. user is handed to fn unchanged (c_loc of your data).
+  ! Hand-written: a callback (c_funloc of an optional procedure) and its user pointer.
   subroutine grid_set_monitor(self, fn, user, status)
     class(eg2d_grid_t), intent(inout) :: self
     procedure(eg2d_monitor_fn), optional :: fn
@@ -338,6 +345,7 @@ contains
   ! ---------------------------------------------------------------- queries
 
   ! The per-cell values of a quality metric into values(ni-1, nj-1).
+  ! Hand-written: an array of the cells, (ni-1, nj-1).
   subroutine grid_get_cell_quality(self, metric, values, status)
     class(eg2d_grid_t), intent(inout) :: self
     integer, intent(in) :: metric
@@ -356,6 +364,7 @@ contains
   end subroutine grid_get_cell_quality
 
   ! The control terms as Thompson's P, Q per node into P(ni, nj), Q(ni, nj).
+  ! Hand-written: P and Q checked together, with a message of their own.
   subroutine grid_get_controls(self, P, Q, status)
     class(eg2d_grid_t), intent(inout) :: self
     real(c_double), intent(inout) :: P(:, :), Q(:, :)
@@ -377,6 +386,7 @@ contains
   ! Reads grid `block` (default 0) of a Plot3D file into x, y allocated as
   ! (ni, nj); format (EG2D_FORMAT_* with its EG2D_PLOT3D_* flags) and the
   ! number of grids in the file on request.
+  ! Hand-written: two C calls (eg2d_read_plot3d sizes, eg2d_read_plot3d_into reads) around an allocation.
   subroutine eg2d_read_plot3d_grid(path, x, y, block, format, nblocks, status)
     character(*), intent(in) :: path
     real(c_double), allocatable, intent(out) :: x(:, :), y(:, :)
@@ -396,6 +406,7 @@ contains
   end subroutine eg2d_read_plot3d_grid
 
   ! Reads a point file into x, y allocated to its number of points.
+  ! Hand-written: two calls of eg2d_read_points (count, read) around an allocation.
   subroutine eg2d_read_point_file(path, x, y, status)
     character(*), intent(in) :: path
     real(c_double), allocatable, intent(out) :: x(:), y(:)
@@ -427,6 +438,7 @@ contains
   end function field_ok
 
   ! s(i,j) = u(i), t(i,j) = v(j): s, t must be (size(u), size(v)).
+  ! Hand-written: two 2-D arrays sized by two 1-D ones.
   subroutine eg2d_get_tensor_parameter_grid(u, v, s, t, status)
     real(c_double), intent(in) :: u(:), v(:)
     real(c_double), intent(inout) :: s(:, :), t(:, :)
@@ -469,6 +481,7 @@ contains
   end function points_ok
 
   ! A user curve: fn, a bind(C) subroutine with the interface eg2d_curve_fn.
+  ! Hand-written: a callback (c_funloc) and its optional user pointer.
   subroutine curve_from_function(self, fn, user, status)
     class(eg2d_curve_t), intent(inout) :: self
     procedure(eg2d_curve_fn) :: fn
@@ -481,6 +494,7 @@ contains
     call curve_finish(self, eg2d_curve_function(c_funloc(fn), u, self%handle), status)
   end subroutine curve_from_function
 
+  ! Hand-written: a no-op on a freed curve; no status.
   subroutine curve_destroy(self)
     class(eg2d_curve_t), intent(inout) :: self
     if (c_associated(self%handle)) call eg2d_curve_destroy(self%handle)
