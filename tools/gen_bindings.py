@@ -590,6 +590,7 @@ def fortran(header):
 WRAPPER_FLAGS = ("size", "field", "name", "init", "pass", "optional", "inout", "default", "buffer", "length")
 VALUED_FLAGS = ("size", "name", "init", "default", "buffer", "length")
 GRID_HANDLES = ("eg2d_grid *", "const eg2d_grid *")
+CURVE_HANDLES = ("eg2d_curve *", "const eg2d_curve *")
 # The inputs a wrapper takes as the caller's Fortran value: its declaration and
 # what the C function is handed.
 WRAPPER_INPUTS = {
@@ -598,11 +599,6 @@ WRAPPER_INPUTS = {
     "const char *": ("character(*), intent(in)", "c_path({})"),                  # NUL-terminated copy
     "const eg2d_curve *": ("class(eg2d_curve_t), intent(in)", "{}%handle"),
 }
-CURVE_HANDLES = ("eg2d_curve *", "const eg2d_curve *")
-
-
-class NoShape(GenError):
-    pass
 
 
 def wrapper_flags(fn):
@@ -652,7 +648,7 @@ class Wrapper:
         self.lines = self.build()
 
     def nope(self, why):
-        raise NoShape(f"in `{self.fn.decl}`: no wrapper for this shape ({why}); write it in "
+        raise GenError(f"in `{self.fn.decl}`: no wrapper for this shape ({why}); write it in "
                       f"bindings/fortran/eg2d.f90 and list {self.fn.name} in HAND_WRITTEN with the "
                       f"reason (tools/gen_bindings.py), or describe it in WRAPPERS")
 
