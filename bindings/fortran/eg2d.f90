@@ -19,6 +19,32 @@
 !
 ! Arrays are real(c_double) (= real(kind(1d0)) with gfortran); node (i, j) of
 ! the C manual is x(i+1, j+1) here.
+!
+! Threads (eg2d.h, "Threads", holds for the module):
+!  - different eg2d_grid_t / eg2d_curve_t objects may be used from different
+!    threads at the same time (OpenMP, pthreads via bind(C)): the library has
+!    no global mutable state, and the module none that a call writes (the
+!    count of eg2d_live_grids is a C atomic, live_grids.c);
+!  - one object, one call at a time: no call is locked inside, the queries
+!    included (get_residual caches; every failure writes the handle's error
+!    text and the object's message). Serialise a shared object yourself
+!    (!$omp critical, a lock);
+!  - an object may move between threads (no thread affinity) when the hand
+!    over is synchronised (a barrier, a join, a lock);
+!  - g%last_error() is the object's: read it before the next call on it;
+!    eg2d_last_error(c_null_ptr) is per thread;
+!  - the monitor runs on the thread of iterate/solve, inside the call: it
+!    may query its own grid (eg2d_get_* on its handle), never change or
+!    destroy it;
+!  - eg2d_version_string, eg2d_status_message, eg2d_solver_short_name and
+!    eg2d_get_parameter_bounds need no handle and are safe from any thread.
+!
+! Generated and hand-written: tools/gen_bindings.py writes the wrappers of the
+! mechanical shapes from eg2d.h into eg2d_wrappers.inc (with their type-bound
+! lines, eg2d_grid_procedures.inc and eg2d_curve_procedures.inc, and their
+! public statement, eg2d_wrappers_public.inc); never edit those. Written here:
+! the types, the helpers the generated wrappers call, and the wrappers of a
+! shape of their own (the generator's table HAND_WRITTEN gives each reason).
 module eg2d
   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_ptr, c_funptr, c_char, c_size_t, &
        c_null_ptr, c_null_funptr, c_null_char, c_associated, c_f_pointer, c_funloc
@@ -49,54 +75,13 @@ module eg2d
     procedure :: destroy => grid_destroy
     procedure :: c_handle => grid_c_handle
     procedure :: last_error => grid_last_error
-    procedure :: set_topology => grid_set_topology
-    procedure :: get_topology => grid_get_topology
-    procedure :: get_cut => grid_get_cut
+    include 'eg2d_grid_procedures.inc'
+    ! Hand-written (tools/gen_bindings.py, HAND_WRITTEN, says why):
     procedure :: set_side => grid_set_side
-    procedure :: set_boundary => grid_set_boundary
     procedure :: set_interior_line => grid_set_interior_line
-    procedure :: clear_interior_lines => grid_clear_interior_lines
-    procedure :: initialize => grid_initialize
-    procedure :: set_coordinates => grid_set_coordinates
-    procedure :: set_system => grid_set_system
-    procedure :: set_solver => grid_set_solver
-    procedure :: get_solver => grid_get_solver
-    procedure :: set_relaxation => grid_set_relaxation
-    procedure :: set_tolerance => grid_set_tolerance
-    procedure :: set_max_iterations => grid_set_max_iterations
-    procedure :: set_parameter => grid_set_parameter
-    procedure :: get_parameter => grid_get_parameter
-    procedure :: set_af_cycle => grid_set_af_cycle
-    procedure :: set_af_time_rule => grid_set_af_time_rule
     procedure :: set_monitor => grid_set_monitor
-    procedure :: iterate => grid_iterate
-    procedure :: solve => grid_solve
-    procedure :: get_size => grid_get_size
-    procedure :: get_coordinates => grid_get_coordinates
-    procedure :: get_residual => grid_get_residual
-    procedure :: get_iterations => grid_get_iterations
-    procedure :: get_run_info => grid_get_run_info
-    procedure :: get_run_event => grid_get_run_event
-    procedure :: get_quality => grid_get_quality
-    procedure :: get_wall_layer => grid_get_wall_layer
     procedure :: get_cell_quality => grid_get_cell_quality
     procedure :: get_controls => grid_get_controls
-    procedure :: write => grid_write
-    procedure :: set_side_from_file => grid_set_side_from_file
-    procedure :: set_side_curve => grid_set_side_curve
-    procedure :: set_airfoil => grid_set_airfoil
-    procedure :: add_line_source => grid_add_line_source
-    procedure :: add_point_source => grid_add_point_source
-    procedure :: clear_sources => grid_clear_sources
-    procedure :: set_source_arrays => grid_set_source_arrays
-    procedure :: set_orthogonality => grid_set_orthogonality
-    procedure :: set_wall_spacing => grid_set_wall_spacing
-    procedure :: set_parameter_grid => grid_set_parameter_grid
-    procedure :: set_weight => grid_set_weight
-    procedure :: set_patch => grid_set_patch
-    procedure :: clear_patches => grid_clear_patches
-    procedure :: get_patch_count => grid_get_patch_count
-    procedure :: get_patch => grid_get_patch
     final :: grid_final
   end type eg2d_grid_t
 
@@ -107,28 +92,32 @@ module eg2d
     type(c_ptr), private :: handle = c_null_ptr
     character(:), allocatable, private :: message
   contains
-    procedure :: polyline => curve_polyline
-    procedure :: spline => curve_spline
+    include 'eg2d_curve_procedures.inc'
     procedure :: from_function => curve_from_function
-    procedure :: naca4 => curve_naca4
-    procedure :: read_airfoil => curve_read_airfoil
     procedure :: destroy => curve_destroy
     procedure :: c_handle => curve_c_handle
     procedure :: last_error => curve_last_error
-    procedure :: get_length => curve_get_length
-    procedure :: evaluate => curve_evaluate
-    procedure :: points => curve_points
     final :: curve_final
   end type eg2d_curve_t
 
-  public :: eg2d_c_string, eg2d_status_message, eg2d_solver_short_name, eg2d_version_string
-  public :: eg2d_get_parameter_bounds, eg2d_live_grids
-  public :: eg2d_read_plot3d_grid, eg2d_read_point_file
-  public :: eg2d_get_distribution, eg2d_get_distribution_parameter, eg2d_get_first_cell_height
-  public :: eg2d_get_clustering_map, eg2d_get_tensor_parameter_grid
+  include 'eg2d_wrappers_public.inc'
+  public :: eg2d_c_string, eg2d_version_string, eg2d_live_grids
+  public :: eg2d_read_plot3d_grid, eg2d_read_point_file, eg2d_get_tensor_parameter_grid
 
-  ! Grids created through eg2d_grid_t and not yet freed (to check finalisation).
-  integer, save :: live_grids = 0
+  ! The number of grids created through eg2d_grid_t and not yet freed (to
+  ! check finalisation): an atomic counter in C (live_grids.c), since grids
+  ! are created and destroyed on several threads at once; the module has no
+  ! SAVE variable that a call writes.
+  interface
+    subroutine live_grids_add(delta) bind(C, name='eg2d_fortran_live_grids_add')
+      import :: c_int
+      integer(c_int), value :: delta
+    end subroutine live_grids_add
+    function live_grids() bind(C, name='eg2d_fortran_live_grids') result(n)
+      import :: c_int
+      integer(c_int) :: n
+    end function live_grids
+  end interface
 
 contains
 
@@ -151,21 +140,8 @@ contains
     end do
   end function eg2d_c_string
 
-  ! The English name of a status ("EG2D_ERR_BOUNDARY: inconsistent boundary").
-  function eg2d_status_message(status) result(s)
-    integer, intent(in) :: status
-    character(:), allocatable :: s
-    s = eg2d_c_string(eg2d_status_string(int(status, c_int)))
-  end function eg2d_status_message
-
-  ! A solver's short name ("psor"), or '' if this library has no such solver.
-  function eg2d_solver_short_name(solver) result(s)
-    integer, intent(in) :: solver
-    character(:), allocatable :: s
-    s = eg2d_c_string(eg2d_solver_name(int(solver, c_int)))
-  end function eg2d_solver_short_name
-
   ! The run-time library version as "major.minor.patch".
+  ! Hand-written: eg2d_version's three numbers as one string.
   function eg2d_version_string() result(s)
     character(:), allocatable :: s
     integer(c_int) :: major, minor, patch
@@ -175,18 +151,9 @@ contains
     s = trim(buf)
   end function eg2d_version_string
 
-  ! Bounds and default of a generic parameter (EG2D_PARAM_*), without a grid.
-  subroutine eg2d_get_parameter_bounds(param, lower, upper, default_value, status)
-    integer, intent(in) :: param
-    real(c_double), intent(out) :: lower, upper, default_value
-    integer, intent(out), optional :: status
-    integer(c_int) :: rc
-    rc = eg2d_parameter_bounds(int(param, c_int), lower, upper, default_value)
-    call settle(rc, eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
-  end subroutine eg2d_get_parameter_bounds
-
+  ! Hand-written: no C function; the module's own count (live_grids.c).
   integer function eg2d_live_grids()
-    eg2d_live_grids = live_grids
+    eg2d_live_grids = int(live_grids())
   end function eg2d_live_grids
 
   ! ---------------------------------------------------------------- errors
@@ -255,6 +222,7 @@ contains
 
   ! ---------------------------------------------------------------- lifetime
   ! Creates an ni x nj grid; an earlier grid held by self is freed first.
+  ! Hand-written: frees the grid held before, counts the live grid.
   subroutine grid_create(self, ni, nj, status)
     class(eg2d_grid_t), intent(inout) :: self
     integer, intent(in) :: ni, nj
@@ -262,16 +230,17 @@ contains
     integer(c_int) :: rc
     call grid_destroy(self)
     rc = eg2d_create(int(ni, c_int), int(nj, c_int), self%handle)
-    if (rc == EG2D_OK) live_grids = live_grids + 1
+    if (rc == EG2D_OK) call live_grids_add(1_c_int)
     call finish(self, rc, status)
   end subroutine grid_create
 
   ! Frees the grid; a grid never created (or already freed) is a no-op.
+  ! Hand-written: a no-op on a freed grid, counts the live grid; no status.
   subroutine grid_destroy(self)
     class(eg2d_grid_t), intent(inout) :: self
     if (c_associated(self%handle)) then
       call eg2d_destroy(self%handle)
-      live_grids = live_grids - 1
+      call live_grids_add(-1_c_int)
     end if
     self%handle = c_null_ptr
   end subroutine grid_destroy
@@ -289,6 +258,7 @@ contains
   end function grid_c_handle
 
   ! The message of the last failed call through this object ('' if none).
+  ! Hand-written: the object's message, which has the Fortran layer's own checks too.
   function grid_last_error(self) result(s)
     class(eg2d_grid_t), intent(in) :: self
     character(:), allocatable :: s
@@ -299,39 +269,10 @@ contains
     end if
   end function grid_last_error
 
-  ! ---------------------------------------------------------------- topology
-  subroutine grid_set_topology(self, topology, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: topology
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_set_topology(self%handle, int(topology, c_int)), status)
-  end subroutine grid_set_topology
-
-  subroutine grid_get_topology(self, topology, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(out) :: topology
-    integer, intent(out), optional :: status
-    integer(c_int) :: t
-    t = -1
-    call finish(self, eg2d_get_topology(self%handle, t), status)
-    topology = int(t)
-  end subroutine grid_get_topology
-
-  ! C-grid: the trailing edge's index w on JMIN (nodes i and ni-1-i of JMIN
-  ! are one point for i <= w); 0 on the other topologies.
-  subroutine grid_get_cut(self, wake, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(out) :: wake
-    integer, intent(out), optional :: status
-    integer(c_int) :: w
-    w = -1
-    call finish(self, eg2d_get_cut(self%handle, w), status)
-    wake = int(w)
-  end subroutine grid_get_cut
-
   ! ---------------------------------------------------------------- boundary
   ! One side from its points in increasing index: ni points for JMIN/JMAX,
   ! nj for IMIN/IMAX. An unknown side is left for the library to report.
+  ! Hand-written: the side decides the number of points (ni or nj).
   subroutine grid_set_side(self, side, x, y, status)
     class(eg2d_grid_t), intent(inout) :: self
     integer, intent(in) :: side
@@ -367,6 +308,7 @@ contains
   ! An interior line held by TFI and every solver: the column i = index
   ! (direction EG2D_XI, nj points) or the row j = index (EG2D_ETA, ni points).
   ! Indices are eg2d's, 0-based: the Fortran column x(index+1, :).
+  ! Hand-written: the direction decides the number of points (nj or ni).
   subroutine grid_set_interior_line(self, direction, index, x, y, status)
     class(eg2d_grid_t), intent(inout) :: self
     integer, intent(in) :: direction, index
@@ -382,123 +324,10 @@ contains
     call finish(self, eg2d_set_interior_line(self%handle, int(direction, c_int), int(index, c_int), x, y), status)
   end subroutine grid_set_interior_line
 
-  subroutine grid_clear_interior_lines(self, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_clear_interior_lines(self%handle), status)
-  end subroutine grid_clear_interior_lines
-
-  ! The boundary ring from whole x(ni,nj), y(ni,nj) arrays (only the boundary is read).
-  subroutine grid_set_boundary(self, x, y, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    real(c_double), intent(in) :: x(:, :), y(:, :)
-    integer, intent(out), optional :: status
-    integer(c_int) :: ni, nj
-    if (.not. size_of(self, ni, nj, status)) return
-    if (.not. shape_ok(self, 'set_boundary', x, y, ni, nj, status)) return
-    call finish(self, eg2d_set_boundary(self%handle, x, y), status)
-  end subroutine grid_set_boundary
-
-  subroutine grid_initialize(self, method, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: method
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_initialize(self%handle, int(method, c_int)), status)
-  end subroutine grid_initialize
-
-  ! A whole start grid x(ni,nj), y(ni,nj), boundary included.
-  subroutine grid_set_coordinates(self, x, y, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    real(c_double), intent(in) :: x(:, :), y(:, :)
-    integer, intent(out), optional :: status
-    integer(c_int) :: ni, nj
-    if (.not. size_of(self, ni, nj, status)) return
-    if (.not. shape_ok(self, 'set_coordinates', x, y, ni, nj, status)) return
-    call finish(self, eg2d_set_coordinates(self%handle, x, y), status)
-  end subroutine grid_set_coordinates
-
-  ! ---------------------------------------------------------------- settings
-  subroutine grid_set_system(self, system, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: system
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_set_system(self%handle, int(system, c_int)), status)
-  end subroutine grid_set_system
-
-  subroutine grid_set_solver(self, solver, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: solver
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_set_solver(self%handle, int(solver, c_int)), status)
-  end subroutine grid_set_solver
-
-  subroutine grid_get_solver(self, solver, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(out) :: solver
-    integer, intent(out), optional :: status
-    integer(c_int) :: s
-    s = -1
-    call finish(self, eg2d_get_solver(self%handle, s), status)
-    solver = int(s)
-  end subroutine grid_get_solver
-
-  subroutine grid_set_relaxation(self, omega, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    real(c_double), intent(in) :: omega
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_set_relaxation(self%handle, omega), status)
-  end subroutine grid_set_relaxation
-
-  subroutine grid_set_tolerance(self, tolerance, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    real(c_double), intent(in) :: tolerance
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_set_tolerance(self%handle, tolerance), status)
-  end subroutine grid_set_tolerance
-
-  subroutine grid_set_max_iterations(self, max_iterations, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: max_iterations
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_set_max_iterations(self%handle, int(max_iterations, c_int)), status)
-  end subroutine grid_set_max_iterations
-
-  subroutine grid_set_parameter(self, param, value, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: param
-    real(c_double), intent(in) :: value
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_set_parameter(self%handle, int(param, c_int), value), status)
-  end subroutine grid_set_parameter
-
-  subroutine grid_get_parameter(self, param, value, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: param
-    real(c_double), intent(out) :: value
-    integer, intent(out), optional :: status
-    value = 0
-    call finish(self, eg2d_get_parameter(self%handle, int(param, c_int), value), status)
-  end subroutine grid_get_parameter
-
-  ! AF (seed 004): the pseudo-time-step cycle and the Warming-Beam time rule.
-  subroutine grid_set_af_cycle(self, dtau_min, dtau_max, steps, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    real(c_double), intent(in) :: dtau_min, dtau_max
-    integer, intent(in) :: steps
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_set_af_cycle(self%handle, dtau_min, dtau_max, int(steps, c_int)), status)
-  end subroutine grid_set_af_cycle
-
-  subroutine grid_set_af_time_rule(self, a, b, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    real(c_double), intent(in) :: a, b
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_set_af_time_rule(self%handle, a, b), status)
-  end subroutine grid_set_af_time_rule
-
   ! ---------------------------------------------------------------- running
   ! fn: a bind(C) function with the interface eg2d_monitor_fn; absent removes
   ! the monitor. user is handed to fn unchanged (c_loc of your data).
+  ! Hand-written: a callback (c_funloc of an optional procedure) and its user pointer.
   subroutine grid_set_monitor(self, fn, user, status)
     class(eg2d_grid_t), intent(inout) :: self
     procedure(eg2d_monitor_fn), optional :: fn
@@ -513,115 +342,10 @@ contains
     call finish(self, eg2d_set_monitor(self%handle, f, u), status)
   end subroutine grid_set_monitor
 
-  subroutine grid_iterate(self, iterations, residual, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: iterations
-    real(c_double), intent(out), optional :: residual
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_iterate(self%handle, int(iterations, c_int), residual), status)
-  end subroutine grid_iterate
-
-  subroutine grid_solve(self, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_solve(self%handle), status)
-  end subroutine grid_solve
-
   ! ---------------------------------------------------------------- queries
-  subroutine grid_get_size(self, ni, nj, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(out) :: ni, nj
-    integer, intent(out), optional :: status
-    integer(c_int) :: m, n
-    m = 0
-    n = 0
-    call finish(self, eg2d_get_size(self%handle, m, n), status)
-    ni = int(m)
-    nj = int(n)
-  end subroutine grid_get_size
-
-  ! The node coordinates into x(ni,nj), y(ni,nj).
-  subroutine grid_get_coordinates(self, x, y, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    real(c_double), intent(inout) :: x(:, :), y(:, :)
-    integer, intent(out), optional :: status
-    integer(c_int) :: ni, nj
-    if (.not. size_of(self, ni, nj, status)) return
-    if (.not. shape_ok(self, 'get_coordinates', x, y, ni, nj, status)) return
-    call finish(self, eg2d_get_coordinates(self%handle, x, y), status)
-  end subroutine grid_get_coordinates
-
-  subroutine grid_get_residual(self, residual, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    real(c_double), intent(out) :: residual
-    integer, intent(out), optional :: status
-    residual = 0
-    call finish(self, eg2d_get_residual(self%handle, residual), status)
-  end subroutine grid_get_residual
-
-  subroutine grid_get_iterations(self, iterations, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(out) :: iterations
-    integer, intent(out), optional :: status
-    integer(c_int) :: n
-    n = 0
-    call finish(self, eg2d_get_iterations(self%handle, n), status)
-    iterations = int(n)
-  end subroutine grid_get_iterations
-
-  ! What the last iterate/solve ran: what = EG2D_RUN_SOLVER, _LEVELS, _LEVELS_BUILT, _EVENTS.
-  subroutine grid_get_run_info(self, what, value, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: what
-    integer, intent(out) :: value
-    integer, intent(out), optional :: status
-    integer(c_int) :: v
-    v = 0
-    call finish(self, eg2d_get_run_info(self%handle, int(what, c_int), v), status)
-    value = int(v)
-  end subroutine grid_get_run_info
-
-  ! The k-th change of strategy of the last run (k from 0): its iteration and message.
-  subroutine grid_get_run_event(self, index, iteration, message, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: index
-    integer, intent(out) :: iteration
-    character(len=*), intent(out) :: message
-    integer, intent(out), optional :: status
-    character(kind=c_char) :: buf(512)
-    integer(c_int) :: it
-    integer :: k
-    it = 0
-    buf = c_null_char
-    call finish(self, eg2d_get_run_event(self%handle, int(index, c_int), it, buf, int(size(buf), c_int)), status)
-    iteration = int(it)
-    message = ''
-    do k = 1, min(len(message), size(buf))
-      if (buf(k) == c_null_char) exit
-      message(k:k) = buf(k)
-    end do
-  end subroutine grid_get_run_event
-
-  subroutine grid_get_quality(self, metric, value, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: metric
-    real(c_double), intent(out) :: value
-    integer, intent(out), optional :: status
-    value = 0
-    call finish(self, eg2d_get_quality(self%handle, int(metric, c_int), value), status)
-  end subroutine grid_get_quality
-
-  ! A figure of the wall layer at a side (EG2D_WALL_*): first cells, growth, angle.
-  subroutine grid_get_wall_layer(self, side, what, value, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: side, what
-    real(c_double), intent(out) :: value
-    integer, intent(out), optional :: status
-    value = 0
-    call finish(self, eg2d_get_wall_layer(self%handle, int(side, c_int), int(what, c_int), value), status)
-  end subroutine grid_get_wall_layer
 
   ! The per-cell values of a quality metric into values(ni-1, nj-1).
+  ! Hand-written: an array of the cells, (ni-1, nj-1).
   subroutine grid_get_cell_quality(self, metric, values, status)
     class(eg2d_grid_t), intent(inout) :: self
     integer, intent(in) :: metric
@@ -640,6 +364,7 @@ contains
   end subroutine grid_get_cell_quality
 
   ! The control terms as Thompson's P, Q per node into P(ni, nj), Q(ni, nj).
+  ! Hand-written: P and Q checked together, with a message of their own.
   subroutine grid_get_controls(self, P, Q, status)
     class(eg2d_grid_t), intent(inout) :: self
     real(c_double), intent(inout) :: P(:, :), Q(:, :)
@@ -657,27 +382,11 @@ contains
   end subroutine grid_get_controls
 
   ! ---------------------------------------------------------------- files
-  ! Writes the grid to path in an EG2D_FORMAT_* (ior() with EG2D_PLOT3D_* flags).
-  subroutine grid_write(self, path, format, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    character(*), intent(in) :: path
-    integer, intent(in) :: format
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_write(self%handle, c_path(path), int(format, c_int)), status)
-  end subroutine grid_write
-
-  ! Sets a side from a point file ("x y" per line) of exactly ni or nj points.
-  subroutine grid_set_side_from_file(self, side, path, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: side
-    character(*), intent(in) :: path
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_set_side_from_file(self%handle, int(side, c_int), c_path(path)), status)
-  end subroutine grid_set_side_from_file
 
   ! Reads grid `block` (default 0) of a Plot3D file into x, y allocated as
   ! (ni, nj); format (EG2D_FORMAT_* with its EG2D_PLOT3D_* flags) and the
   ! number of grids in the file on request.
+  ! Hand-written: two C calls (eg2d_read_plot3d sizes, eg2d_read_plot3d_into reads) around an allocation.
   subroutine eg2d_read_plot3d_grid(path, x, y, block, format, nblocks, status)
     character(*), intent(in) :: path
     real(c_double), allocatable, intent(out) :: x(:, :), y(:, :)
@@ -697,6 +406,7 @@ contains
   end subroutine eg2d_read_plot3d_grid
 
   ! Reads a point file into x, y allocated to its number of points.
+  ! Hand-written: two calls of eg2d_read_points (count, read) around an allocation.
   subroutine eg2d_read_point_file(path, x, y, status)
     character(*), intent(in) :: path
     real(c_double), allocatable, intent(out) :: x(:), y(:)
@@ -710,53 +420,7 @@ contains
     call settle(rc, eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
   end subroutine eg2d_read_point_file
 
-  ! The side's points on a curve with a distribution (EG2D_DIST_*, parameters
-  ! p1, p2) and flags (EG2D_CURVE_*, default 0).
-  subroutine grid_set_side_curve(self, side, curve, distribution, p1, p2, flags, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: side, distribution
-    class(eg2d_curve_t), intent(in) :: curve
-    real(c_double), intent(in) :: p1, p2
-    integer, intent(in), optional :: flags
-    integer, intent(out), optional :: status
-    integer(c_int) :: f
-    f = 0
-    if (present(flags)) f = int(flags, c_int)
-    call finish(self, eg2d_set_side_curve(self%handle, int(side, c_int), curve%handle, &
-         int(distribution, c_int), p1, p2, f), status)
-  end subroutine grid_set_side_curve
-
-  ! Topology (EG2D_TOPO_O or EG2D_TOPO_C) and boundary of an airfoil grid round `section`.
-  subroutine grid_set_airfoil(self, section, topology, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    class(eg2d_curve_t), intent(in) :: section
-    integer, intent(in) :: topology
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_set_airfoil(self%handle, section%handle, int(topology, c_int)), status)
-  end subroutine grid_set_airfoil
-
   ! ---------------------------------------------------------------- control
-  ! Thompson's attraction of the lines direction = EG2D_XI / EG2D_ETA to `line`.
-  subroutine grid_add_line_source(self, direction, line, amplitude, decay, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: direction
-    real(c_double), intent(in) :: line, amplitude, decay
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_add_line_source(self%handle, int(direction, c_int), line, amplitude, decay), status)
-  end subroutine grid_add_line_source
-
-  subroutine grid_add_point_source(self, xi, eta, amplitude, decay, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    real(c_double), intent(in) :: xi, eta, amplitude, decay
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_add_point_source(self%handle, xi, eta, amplitude, decay), status)
-  end subroutine grid_add_point_source
-
-  subroutine grid_clear_sources(self, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_clear_sources(self%handle), status)
-  end subroutine grid_clear_sources
 
   ! One array of shape (ni, nj), or a recorded failure (`name` names it).
   logical function field_ok(self, where, name, a, ni, nj, status)
@@ -773,128 +437,8 @@ contains
     end if
   end function field_ok
 
-  ! The user's P(ni,nj), Q(ni,nj) (seed 000's p1, p2); an absent one is zero,
-  ! both absent remove them.
-  subroutine grid_set_source_arrays(self, P, Q, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    real(c_double), intent(in), optional :: P(:, :), Q(:, :)
-    integer, intent(out), optional :: status
-    integer(c_int) :: ni, nj
-    if (.not. size_of(self, ni, nj, status)) return
-    if (present(P)) then
-      if (.not. field_ok(self, 'set_source_arrays', 'P', P, ni, nj, status)) return
-    end if
-    if (present(Q)) then
-      if (.not. field_ok(self, 'set_source_arrays', 'Q', Q, ni, nj, status)) return
-    end if
-    call finish(self, eg2d_set_source_arrays(self%handle, P, Q), status)
-  end subroutine grid_set_source_arrays
-
-  subroutine grid_set_orthogonality(self, method, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: method
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_set_orthogonality(self%handle, int(method, c_int)), status)
-  end subroutine grid_set_orthogonality
-
-  subroutine grid_set_wall_spacing(self, side, height, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: side
-    real(c_double), intent(in) :: height
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_set_wall_spacing(self%handle, int(side, c_int), height), status)
-  end subroutine grid_set_wall_spacing
-
-  ! Seed 002's parameter-space grid s(ni,nj), t(ni,nj); both absent remove it.
-  subroutine grid_set_parameter_grid(self, s, t, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    real(c_double), intent(in), optional :: s(:, :), t(:, :)
-    integer, intent(out), optional :: status
-    integer(c_int) :: ni, nj
-    if (.not. size_of(self, ni, nj, status)) return
-    if (present(s)) then
-      if (.not. field_ok(self, 'set_parameter_grid', 's', s, ni, nj, status)) return
-    end if
-    if (present(t)) then
-      if (.not. field_ok(self, 'set_parameter_grid', 't', t, ni, nj, status)) return
-    end if
-    call finish(self, eg2d_set_parameter_grid(self%handle, s, t), status)
-  end subroutine grid_set_parameter_grid
-
-  ! Weight-function adaptivity, w(ni,nj) > 0; absent removes it.
-  subroutine grid_set_weight(self, w, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    real(c_double), intent(in), optional :: w(:, :)
-    integer, intent(out), optional :: status
-    integer(c_int) :: ni, nj
-    if (.not. size_of(self, ni, nj, status)) return
-    if (present(w)) then
-      if (.not. field_ok(self, 'set_weight', 'w', w, ni, nj, status)) return
-    end if
-    call finish(self, eg2d_set_weight(self%handle, w), status)
-  end subroutine grid_set_weight
-
-  ! Names and types a stretch of a side for the solver-ready formats:
-  ! nodes first..last (0-based) of side, type EG2D_PATCH_*.
-  subroutine grid_set_patch(self, side, first, last, type, name, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: side, first, last, type
-    character(*), intent(in) :: name
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_set_patch(self%handle, int(side, c_int), int(first, c_int), int(last, c_int), &
-         int(type, c_int), c_path(name)), status)
-  end subroutine grid_set_patch
-
-  ! Back to the topology's default patches.
-  subroutine grid_clear_patches(self, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(out), optional :: status
-    call finish(self, eg2d_clear_patches(self%handle), status)
-  end subroutine grid_clear_patches
-
-  ! The number of stretches of the whole boundary as the writers see it.
-  subroutine grid_get_patch_count(self, count, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(out) :: count
-    integer, intent(out), optional :: status
-    integer(c_int) :: n
-    n = 0
-    call finish(self, eg2d_get_patch_count(self%handle, n), status)
-    count = int(n)
-  end subroutine grid_get_patch_count
-
-  ! The index-th stretch (from 0): side, nodes first..last, type and name.
-  subroutine grid_get_patch(self, index, side, first, last, type, name, status)
-    class(eg2d_grid_t), intent(inout) :: self
-    integer, intent(in) :: index
-    integer, intent(out) :: side, first, last, type
-    character(len=*), intent(out) :: name
-    integer, intent(out), optional :: status
-    character(kind=c_char) :: buf(64)
-    integer(c_int) :: s, f, l, t
-    integer :: k
-    s = 0; f = 0; l = 0; t = 0
-    buf = c_null_char
-    call finish(self, eg2d_get_patch(self%handle, int(index, c_int), s, f, l, t, buf, int(size(buf), c_int)), status)
-    side = int(s); first = int(f); last = int(l); type = int(t)
-    name = ''
-    do k = 1, min(len(name), size(buf))
-      if (buf(k) == c_null_char) exit
-      name(k:k) = buf(k)
-    end do
-  end subroutine grid_get_patch
-
-  ! Seed 002's clustering map (EG2D_CLUSTER_*) sampled at size(u) points.
-  subroutine eg2d_get_clustering_map(kind, a, b, strength, u, status)
-    integer, intent(in) :: kind
-    real(c_double), intent(in) :: a, b, strength
-    real(c_double), intent(inout) :: u(:)
-    integer, intent(out), optional :: status
-    call settle(eg2d_clustering_map(int(kind, c_int), a, b, strength, int(size(u), c_int), u), &
-         eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
-  end subroutine eg2d_get_clustering_map
-
   ! s(i,j) = u(i), t(i,j) = v(j): s, t must be (size(u), size(v)).
+  ! Hand-written: two 2-D arrays sized by two 1-D ones.
   subroutine eg2d_get_tensor_parameter_grid(u, v, s, t, status)
     real(c_double), intent(in) :: u(:), v(:)
     real(c_double), intent(inout) :: s(:, :), t(:, :)
@@ -936,27 +480,8 @@ contains
     end if
   end function points_ok
 
-  ! Straight segments through the points (x(k), y(k)).
-  subroutine curve_polyline(self, x, y, status)
-    class(eg2d_curve_t), intent(inout) :: self
-    real(c_double), intent(in) :: x(:), y(:)
-    integer, intent(out), optional :: status
-    call curve_destroy(self)
-    if (.not. points_ok(self, 'polyline', x, y, status)) return
-    call curve_finish(self, eg2d_curve_polyline(int(size(x), c_int), x, y, self%handle), status)
-  end subroutine curve_polyline
-
-  ! The cubic spline through the points (periodic when the last repeats the first).
-  subroutine curve_spline(self, x, y, status)
-    class(eg2d_curve_t), intent(inout) :: self
-    real(c_double), intent(in) :: x(:), y(:)
-    integer, intent(out), optional :: status
-    call curve_destroy(self)
-    if (.not. points_ok(self, 'spline', x, y, status)) return
-    call curve_finish(self, eg2d_curve_spline(int(size(x), c_int), x, y, self%handle), status)
-  end subroutine curve_spline
-
   ! A user curve: fn, a bind(C) subroutine with the interface eg2d_curve_fn.
+  ! Hand-written: a callback (c_funloc) and its optional user pointer.
   subroutine curve_from_function(self, fn, user, status)
     class(eg2d_curve_t), intent(inout) :: self
     procedure(eg2d_curve_fn) :: fn
@@ -969,28 +494,7 @@ contains
     call curve_finish(self, eg2d_curve_function(c_funloc(fn), u, self%handle), status)
   end subroutine curve_from_function
 
-  ! A NACA 4-digit section ('0012'); flags EG2D_NACA_CLOSED_TE or 0 (default).
-  subroutine curve_naca4(self, digits, flags, status)
-    class(eg2d_curve_t), intent(inout) :: self
-    character(*), intent(in) :: digits
-    integer, intent(in), optional :: flags
-    integer, intent(out), optional :: status
-    integer(c_int) :: f
-    call curve_destroy(self)
-    f = 0
-    if (present(flags)) f = int(flags, c_int)
-    call curve_finish(self, eg2d_curve_naca4(c_path(digits), f, self%handle), status)
-  end subroutine curve_naca4
-
-  ! An airfoil from a Selig or Lednicer coordinate file.
-  subroutine curve_read_airfoil(self, path, status)
-    class(eg2d_curve_t), intent(inout) :: self
-    character(*), intent(in) :: path
-    integer, intent(out), optional :: status
-    call curve_destroy(self)
-    call curve_finish(self, eg2d_curve_read_airfoil(c_path(path), self%handle), status)
-  end subroutine curve_read_airfoil
-
+  ! Hand-written: a no-op on a freed curve; no status.
   subroutine curve_destroy(self)
     class(eg2d_curve_t), intent(inout) :: self
     if (c_associated(self%handle)) call eg2d_curve_destroy(self%handle)
@@ -1018,67 +522,17 @@ contains
     end if
   end function curve_last_error
 
-  subroutine curve_get_length(self, length, status)
-    class(eg2d_curve_t), intent(inout) :: self
-    real(c_double), intent(out) :: length
-    integer, intent(out), optional :: status
-    length = 0
-    call curve_finish(self, eg2d_curve_length(self%handle, length), status)
-  end subroutine curve_get_length
-
-  ! The point at normalized arc length s in [0, 1].
-  subroutine curve_evaluate(self, s, x, y, status)
-    class(eg2d_curve_t), intent(inout) :: self
-    real(c_double), intent(in) :: s
-    real(c_double), intent(out) :: x, y
-    integer, intent(out), optional :: status
-    x = 0
-    y = 0
-    call curve_finish(self, eg2d_curve_evaluate(self%handle, s, x, y), status)
-  end subroutine curve_evaluate
-
-  ! size(x) points of the curve at the normalized arc lengths of a distribution.
-  subroutine curve_points(self, distribution, p1, p2, x, y, status)
-    class(eg2d_curve_t), intent(inout) :: self
-    integer, intent(in) :: distribution
-    real(c_double), intent(in) :: p1, p2
-    real(c_double), intent(inout) :: x(:), y(:)
-    integer, intent(out), optional :: status
-    if (.not. points_ok(self, 'points', x, y, status)) return
-    call curve_finish(self, eg2d_curve_points(self%handle, int(size(x), c_int), int(distribution, c_int), &
-         p1, p2, x, y), status)
-  end subroutine curve_points
-
-  ! size(s) values of a distribution of points on [0, 1].
-  subroutine eg2d_get_distribution(distribution, p1, p2, s, status)
-    integer, intent(in) :: distribution
-    real(c_double), intent(in) :: p1, p2
-    real(c_double), intent(inout) :: s(:)
-    integer, intent(out), optional :: status
-    call settle(eg2d_distribution(int(distribution, c_int), int(size(s), c_int), p1, p2, s), &
-         eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
-  end subroutine eg2d_get_distribution
-
-  ! The parameter p1 of a distribution whose first spacing (a fraction of 1) with n points is
-  ! first_spacing (p2: TANH_TWO's c, VINOKUR's last spacing).
-  subroutine eg2d_get_distribution_parameter(distribution, n, first_spacing, p2, p1, status)
-    integer, intent(in) :: distribution, n
-    real(c_double), intent(in) :: first_spacing, p2
-    real(c_double), intent(inout) :: p1
-    integer, intent(out), optional :: status
-    call settle(eg2d_distribution_parameter(int(distribution, c_int), int(n, c_int), first_spacing, p2, p1), &
-         eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
-  end subroutine eg2d_get_distribution_parameter
-
-  ! The wall spacing for a target y+ at Reynolds number re on a body of this chord.
-  subroutine eg2d_get_first_cell_height(yplus, re, chord, height, status)
-    real(c_double), intent(in) :: yplus, re, chord
-    real(c_double), intent(out) :: height
-    integer, intent(out), optional :: status
-    height = 0
-    call settle(eg2d_first_cell_height(yplus, re, chord, height), &
-         eg2d_c_string(eg2d_last_error(c_null_ptr)), status)
-  end subroutine eg2d_get_first_cell_height
+  ! A C buffer's text (up to its NUL) into s, cut to len(s), blank-padded.
+  subroutine c_buffer_copy(buf, s)
+    character(kind=c_char), intent(in) :: buf(:)
+    character(len=*), intent(out) :: s
+    integer :: k
+    s = ''
+    do k = 1, min(len(s), size(buf))
+      if (buf(k) == c_null_char) exit
+      s(k:k) = buf(k)
+    end do
+  end subroutine c_buffer_copy
 
   ! A Fortran path as the C string the library reads.
   function c_path(path) result(p)
@@ -1090,5 +544,10 @@ contains
     end do
     p(len_trim(path) + 1) = c_null_char
   end function c_path
+
+  ! ---------------------------------------------------------------- generated
+  ! The wrappers of the mechanical shapes, generated from eg2d.h by
+  ! tools/gen_bindings.py; each is documented at its C function in eg2d.h.
+  include 'eg2d_wrappers.inc'
 
 end module eg2d

@@ -34,10 +34,26 @@ program test_wrappers
   integer :: st, m, n, k, it, u, fmt, nb
   integer(c_int), target :: calls
   character(len=200) :: g_msg
+  character(:), allocatable :: unit_s, summary_s, name_s
 
   ! ---- free functions
   call check(eg2d_version_string() == '1.0.0', 'version string')
   call check(index(eg2d_status_message(EG2D_ERR_BOUNDARY), 'EG2D_ERR_BOUNDARY:') == 1, 'status message')
+  ! the library's lists (eg2d.h section 2)
+  call eg2d_list_lookup(EG2D_LIST_SOLVERS, 'multigrid', k)
+  call check(k == EG2D_SOLVER_MULTIGRID, 'list lookup')
+  call eg2d_list_lookup(EG2D_LIST_SOLVERS, 'Multigrid', k, st)
+  call check(st == EG2D_ERR_ARGUMENT, 'list lookup of a name not listed')
+  call check(eg2d_list_id_name(EG2D_LIST_SYSTEMS, EG2D_SYSTEM_WINSLOW) == 'winslow', 'list id name')
+  call eg2d_list_size(EG2D_LIST_PARAMETERS, n)
+  call eg2d_list_item(EG2D_LIST_PARAMETERS, n - 1, k, name_s)
+  call check(n >= 48 .and. k == EG2D_PARAM_AIRFOIL_O_TE_BASE .and. name_s == 'airfoil_o_te_base', 'list item')
+  call eg2d_parameter_description(EG2D_PARAM_MG_FMG, k, unit_s, summary_s)
+  call check(k == EG2D_VALUE_FLAG + EG2D_VALUE_INTEGER .and. unit_s == '1' .and. len(summary_s) > 8, &
+       'parameter description')
+  call eg2d_format_description(EG2D_FORMAT_OPENFOAM, k, name_s)
+  call check(k == EG2D_WRITES_DIRECTORY .and. name_s == '_foam', 'format description')
+  call check(eg2d_quality_field_name(EG2D_QUALITY_MAX_AREA) == 'area', 'quality field name')
   call check(eg2d_status_message(999) == 'unknown eg2d status', 'status message of an unknown code')
   call check(eg2d_solver_short_name(EG2D_SOLVER_PSOR) == 'psor', 'solver name')
   call check(eg2d_solver_short_name(99) == '', 'solver name of an unknown id')

@@ -6,6 +6,24 @@ solver_name, parameter_bounds, read_plot3d, read_points), the constants under th
 EG2D_ prefix, and exceptions carrying the status and the library's message.
 The library is found via $EG2D_LIBRARY, the install location, or the system
 loader (see _library.py).
+
+Threads (the rules of eg2d.h's "Threads", which hold for the package):
+ - different Grid/Curve objects may be used from different threads at the
+   same time: the library has no global mutable state, nor has the package;
+ - one object, one call at a time: no call is locked inside, the queries
+   included (get_residual caches, every failure writes the handle's error
+   text); share a Grid between threads only behind your own threading.Lock;
+ - an object may move between threads (no thread affinity) when the hand-over
+   is synchronised (a lock, a join, a queue.Queue);
+ - the grid-less calls (version, status_string, solver_name,
+   parameter_bounds) are safe from any thread; last_error() is the calling
+   thread's, Grid.last_error the grid's (read right after the failure);
+ - the monitor runs on the thread of iterate/solve, inside that call: it may
+   query its own grid (get_*), never change or close it.
+The library is loaded with ctypes.CDLL, so every call releases the GIL for
+its duration (and a monitor callback takes it back while it runs): solves of
+different grids on different threads really run in parallel, and the GIL
+gives no protection to a Grid shared between threads: lock it yourself.
 """
 from .constants import *  # noqa: F401,F403
 from .errors import (ArgumentError, BoundaryError, DivergedError, Error, FileError, FoldedError,  # noqa: F401

@@ -43,6 +43,16 @@ def _ptr(v):
 
 
 class Grid(Handle):
+    """An ni x nj grid (one eg2d_grid handle).
+
+    Threads: one call at a time on a Grid, from whatever thread (a hand-over
+    between threads must be synchronised); different Grids run in parallel,
+    since each ctypes call releases the GIL. The GIL does not serialise two
+    threads' calls on one Grid: guard a shared Grid with a threading.Lock.
+    The monitor runs on the calling thread inside iterate/solve and may only
+    query this grid. See the package docstring and eg2d.h's "Threads".
+    """
+
     def __init__(self, ni, nj):
         super().__init__()
         self._monitor = None  # keeps the ctypes callback alive while installed
