@@ -6,7 +6,9 @@
 //     (operator/variational_cell.hpp), nine-point matrices of 2x2 blocks;
 //   - the Newton system solved inexactly (Eisenstat-Walker forcing) by
 //     conjugate gradients on the exact Hessian, preconditioned with one
-//     Galerkin multigrid V-cycle on the convex one (block_multigrid.hpp),
+//     Galerkin multigrid V-cycle (block_multigrid.hpp) on the exact one
+//     where that hierarchy is positive definite at its coarsest level and
+//     the direction descends, else on the convex one,
 //     and stopped at a direction of negative curvature (truncated Newton:
 //     the iterate so far still descends);
 //   - a line search on V (Armijo) whose first trial is, under the fold guard
