@@ -94,6 +94,7 @@ void VariationalNewton::restart() {
     last_gradient_ = -1.0;
     forcing_ = kForcingMax;
     last_limited_ = false;
+    last_full_ = false;
     progress_.restart();
 }
 
@@ -425,18 +426,23 @@ void VariationalNewton::step(const Connectivity &conn, double *x, double *y, con
             C_.at(u, 0, 0).d += shift_ * diag_[u];
         }
     bool negative = false;
-    // The V-cycle is on the exact Hessian where its Galerkin hierarchy has a
-    // positive definite coarsest matrix, else, or when the direction it gives
-    // does not descend (the V-cycle of an indefinite matrix need not be
-    // positive definite), on the convex one (variational_cell.hpp; positive
-    // definite). The convex Hessian alone is a preconditioner whose CG
-    // iterations per step double with each doubling of the grid (swan, c
-    // large: 3.4, 7.4, 9.7, 18.9, 24.9 per step from 17^2 to 257^2, where
-    // CG on the convex Hessian itself takes 2 per step at every size: the
-    // V-cycle is fine, the convex Hessian is far from the exact one); on the
-    // exact one 2.5, 5.0, 5.4, 9.5, 12 (bench/RESULTS.md).
+    // The V-cycle is on the exact Hessian after a full step along a
+    // direction of positive curvature (near the minimum) where its Galerkin
+    // hierarchy has a positive definite coarsest matrix, else, or when the
+    // direction it gives does not descend (the V-cycle of an indefinite
+    // matrix need not be positive definite), on the convex one
+    // (variational_cell.hpp; positive definite). The convex Hessian alone is
+    // a preconditioner whose CG iterations per step double with each
+    // doubling of the grid (swan, c large: 3.4, 7.4, 9.7, 18.9, 24.9 per
+    // step from 17^2 to 257^2, where CG on the convex Hessian itself takes 2
+    // per step at every size: the V-cycle is fine, the convex Hessian is far
+    // from the exact one); on the exact one about half that. On the exact
+    // one from the start, the steps far from the minimum were worse: the
+    // antenna (c large, 129^2) took 55 Newton steps instead of 11, and with
+    // a large it ended at another minimum (largest angle deviation 83.3
+    // instead of 81.5 degrees; bench/RESULTS.md).
     int cg_convex = -1, cg = 0;
-    bool on_exact = !convex_only() && mg_.setup(H_);
+    bool on_exact = !convex_only() && last_full_ && mg_.setup(H_);
     const auto t1 = std::chrono::steady_clock::now();
     if (on_exact) {
         cg = solve(H_, forcing_, negative);
@@ -492,6 +498,7 @@ void VariationalNewton::step(const Connectivity &conn, double *x, double *y, con
                      ms(t1, t2), ms(t2, t3));
     }
     // A full step: the shift may shrink; no step: it must grow.
+    last_full_ = alpha == 1.0 && !negative;
     if (alpha == 1.0) {
         shift_ = shift_ * kShiftDecay < kShiftFloor ? 0.0 : shift_ * kShiftDecay;
     } else if (alpha == 0.0) {
