@@ -441,7 +441,7 @@ void VariationalNewton::step(const Connectivity &conn, double *x, double *y, con
     // antenna (c large, 129^2) took 55 Newton steps instead of 11, and with
     // a large it ended at another minimum (largest angle deviation 83.3
     // instead of 81.5 degrees; bench/RESULTS.md).
-    int cg_convex = -1, cg = 0;
+    int cg = 0;
     bool on_exact = !convex_only() && last_full_ && mg_.setup(H_);
     const auto t1 = std::chrono::steady_clock::now();
     if (on_exact) {
@@ -453,7 +453,6 @@ void VariationalNewton::step(const Connectivity &conn, double *x, double *y, con
         if (!mg_.setup(C_))
             fail(Failure::NotConverged, "variational: the convex Hessian's coarsest factor failed (a spacing weight of 0 "
                                         "on a grid where A and O alone leave a node free?)");
-        if (debug_newton() >= 2) cg_convex = 1;
         cg += solve(H_, forcing_, negative);
     }
     const auto t2 = std::chrono::steady_clock::now();
@@ -493,8 +492,8 @@ void VariationalNewton::step(const Connectivity &conn, double *x, double *y, con
     if (debug_newton()) {
         const auto t3 = std::chrono::steady_clock::now();
         auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
-        std::fprintf(stderr, "newton %dx%d |g| %.3e eta %.2e cg %d (convex %d)%s alpha %.3g shift %.1e ms assemble+setup %.2f cg %.2f line %.2f\n",
-                     conn.ni(), conn.nj(), gnorm, forcing_, cg, cg_convex, negative ? " neg" : "", alpha, shift_, ms(t0, t1),
+        std::fprintf(stderr, "newton %dx%d |g| %.3e eta %.2e cg %d (%s)%s alpha %.3g shift %.1e ms assemble+setup %.2f cg %.2f line %.2f\n",
+                     conn.ni(), conn.nj(), gnorm, forcing_, cg, on_exact ? "exact" : "convex", negative ? " neg" : "", alpha, shift_, ms(t0, t1),
                      ms(t1, t2), ms(t2, t3));
     }
     // A full step: the shift may shrink; no step: it must grow.
