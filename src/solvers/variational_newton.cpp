@@ -1,7 +1,10 @@
 #include "solvers/variational_newton.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 #include "base/error.hpp"
@@ -27,6 +30,20 @@ constexpr double kArmijo = 1e-4;
 constexpr int kCoarsestNodes = 17;
 constexpr double kCoarseTolerance = 1e-6;
 constexpr int kCoarseSteps = 60;
+
+// Developers' switches (environment, not the API): EG2D_DEBUG_NEWTON set:
+// one line per Newton step on stderr (grid, gradient, forcing, CG
+// iterations, step length, milliseconds); EG2D_DEBUG_NEWTON_CONVEX set: the
+// preconditioner on the convex Hessian only (as before 2026-11-28), for
+// comparisons in one build.
+int debug_newton() {
+    static const int level = std::getenv("EG2D_DEBUG_NEWTON") ? std::atoi(std::getenv("EG2D_DEBUG_NEWTON")) : 0;
+    return level;
+}
+bool convex_only() {
+    static const bool on = std::getenv("EG2D_DEBUG_NEWTON_CONVEX") != nullptr;
+    return on;
+}
 
 double dot(const std::vector<Vec2> &a, const std::vector<Vec2> &b) {
     double s = 0.0;
@@ -77,6 +94,7 @@ void VariationalNewton::restart() {
     last_gradient_ = -1.0;
     forcing_ = kForcingMax;
     last_limited_ = false;
+    last_full_ = false;
     progress_.restart();
 }
 
@@ -233,6 +251,7 @@ int VariationalNewton::solve(const BlockStencil &K, double forcing, bool &negati
         if (std::sqrt(dot(r_, r_)) <= target) return it;
         mg_.apply(r_.data(), z_.data());
         const double rz1 = dot(r_, z_);
+        if (!(rz1 > 0.0)) return it;  // a preconditioner not positive definite here: the iterate so far
         const double b = rz1 / rz;
         rz = rz1;
         for (std::size_t k = 0; k < p_.size(); ++k) p_[k] = Vec2{z_[k].x + b * p_[k].x, z_[k].y + b * p_[k].y};
@@ -376,6 +395,7 @@ void VariationalNewton::iterate(Problem &p) {
 }
 
 void VariationalNewton::step(const Connectivity &conn, double *x, double *y, const Functional &F, Problem *p) {
+    const auto t0 = std::chrono::steady_clock::now();
     layout(conn);
     mean_ = mean_area(conn, x, y);
     const double v0 = assemble(x, y, F);
@@ -393,9 +413,9 @@ void VariationalNewton::step(const Connectivity &conn, double *x, double *y, con
     }
     last_gradient_ = gnorm;
     // The Newton direction: CG on the exact Hessian, preconditioned by a
-    // V-cycle on the convex one (variational_cell.hpp; positive definite),
-    // stopped at a direction of negative curvature (truncated Newton: the
-    // iterate so far, or the preconditioned gradient, still descends).
+    // V-cycle, stopped at a direction of negative curvature (truncated
+    // Newton: the iterate so far, or the preconditioned gradient, still
+    // descends).
     // A Levenberg shift (shift_ times the diagonal) on both while a step
     // finds no descent.
     for (std::size_t u = 0; shift_ > 0.0 && u < H_.nodes(); ++u)
@@ -406,10 +426,36 @@ void VariationalNewton::step(const Connectivity &conn, double *x, double *y, con
             C_.at(u, 0, 0).d += shift_ * diag_[u];
         }
     bool negative = false;
-    if (!mg_.setup(C_))
-        fail(Failure::NotConverged, "variational: the convex Hessian's coarsest factor failed (a spacing weight of 0 "
-                                    "on a grid where A and O alone leave a node free?)");
-    solve(H_, forcing_, negative);
+    // The V-cycle is on the exact Hessian after a full step along a
+    // direction of positive curvature (near the minimum) where its Galerkin
+    // hierarchy has a positive definite coarsest matrix, else, or when the
+    // direction it gives does not descend (the V-cycle of an indefinite
+    // matrix need not be positive definite), on the convex one
+    // (variational_cell.hpp; positive definite). The convex Hessian alone is
+    // a preconditioner whose CG iterations per step double with each
+    // doubling of the grid (swan, c large: 3.4, 7.4, 9.7, 18.9, 24.9 per
+    // step from 17^2 to 257^2, where CG on the convex Hessian itself takes 2
+    // per step at every size: the V-cycle is fine, the convex Hessian is far
+    // from the exact one); on the exact one about half that. On the exact
+    // one from the start, the steps far from the minimum were worse: the
+    // antenna (c large, 129^2) took 55 Newton steps instead of 11, and with
+    // a large it ended at another minimum (largest angle deviation 83.3
+    // instead of 81.5 degrees; bench/RESULTS.md).
+    int cg = 0;
+    bool on_exact = !convex_only() && last_full_ && mg_.setup(H_);
+    const auto t1 = std::chrono::steady_clock::now();
+    if (on_exact) {
+        cg = solve(H_, forcing_, negative);
+        const double slope = dot(g_, d_);
+        if (!(slope < 0.0)) on_exact = false;
+    }
+    if (!on_exact) {
+        if (!mg_.setup(C_))
+            fail(Failure::NotConverged, "variational: the convex Hessian's coarsest factor failed (a spacing weight of 0 "
+                                        "on a grid where A and O alone leave a node free?)");
+        cg += solve(H_, forcing_, negative);
+    }
+    const auto t2 = std::chrono::steady_clock::now();
     // The step: at most kToFold of the way to the first corner turning flat,
     // then halved until V falls enough (Armijo). A decrease below V's
     // round-off is taken as it is (near the minimum).
@@ -443,7 +489,15 @@ void VariationalNewton::step(const Connectivity &conn, double *x, double *y, con
         conn.sync(x);
         conn.sync(y);
     }
+    if (debug_newton()) {
+        const auto t3 = std::chrono::steady_clock::now();
+        auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+        std::fprintf(stderr, "newton %dx%d |g| %.3e eta %.2e cg %d (%s)%s alpha %.3g shift %.1e ms assemble+setup %.2f cg %.2f line %.2f\n",
+                     conn.ni(), conn.nj(), gnorm, forcing_, cg, on_exact ? "exact" : "convex", negative ? " neg" : "", alpha, shift_, ms(t0, t1),
+                     ms(t1, t2), ms(t2, t3));
+    }
     // A full step: the shift may shrink; no step: it must grow.
+    last_full_ = alpha == 1.0 && !negative;
     if (alpha == 1.0) {
         shift_ = shift_ * kShiftDecay < kShiftFloor ? 0.0 : shift_ * kShiftDecay;
     } else if (alpha == 0.0) {

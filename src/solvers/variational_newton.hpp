@@ -6,7 +6,9 @@
 //     (operator/variational_cell.hpp), nine-point matrices of 2x2 blocks;
 //   - the Newton system solved inexactly (Eisenstat-Walker forcing) by
 //     conjugate gradients on the exact Hessian, preconditioned with one
-//     Galerkin multigrid V-cycle on the convex one (block_multigrid.hpp),
+//     Galerkin multigrid V-cycle (block_multigrid.hpp) on the convex one,
+//     or after a full step on the exact one where that hierarchy is
+//     positive definite at its coarsest level and the direction descends,
 //     and stopped at a direction of negative curvature (truncated Newton:
 //     the iterate so far still descends);
 //   - a line search on V (Armijo) whose first trial is, under the fold guard
@@ -78,6 +80,7 @@ private:
     bool started_ = false, noted_shift_ = false;
     NewtonProgress progress_;  // the stop tests
     bool last_limited_ = false;
+    bool last_full_ = false;   // the last step a full one along a direction of positive curvature
     double v_last_ = 0.0;      // V where the last step began
     bool barrier_ = false;  // V has W or O's cotangents: infinite on a flat corner, its minimum unfolded
 };
