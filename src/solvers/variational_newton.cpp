@@ -1,10 +1,7 @@
 #include "solvers/variational_newton.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 
 #include "base/error.hpp"
@@ -30,20 +27,6 @@ constexpr double kArmijo = 1e-4;
 constexpr int kCoarsestNodes = 17;
 constexpr double kCoarseTolerance = 1e-6;
 constexpr int kCoarseSteps = 60;
-
-// Developers' switches (environment, not the API): EG2D_DEBUG_NEWTON set:
-// one line per Newton step on stderr (grid, gradient, forcing, CG
-// iterations, step length, milliseconds); EG2D_DEBUG_NEWTON_CONVEX set: the
-// preconditioner on the convex Hessian only (as before 2026-11-28), for
-// comparisons in one build.
-int debug_newton() {
-    static const int level = std::getenv("EG2D_DEBUG_NEWTON") ? std::atoi(std::getenv("EG2D_DEBUG_NEWTON")) : 0;
-    return level;
-}
-bool convex_only() {
-    static const bool on = std::getenv("EG2D_DEBUG_NEWTON_CONVEX") != nullptr;
-    return on;
-}
 
 double dot(const std::vector<Vec2> &a, const std::vector<Vec2> &b) {
     double s = 0.0;
@@ -395,7 +378,6 @@ void VariationalNewton::iterate(Problem &p) {
 }
 
 void VariationalNewton::step(const Connectivity &conn, double *x, double *y, const Functional &F, Problem *p) {
-    const auto t0 = std::chrono::steady_clock::now();
     layout(conn);
     mean_ = mean_area(conn, x, y);
     const double v0 = assemble(x, y, F);
@@ -441,11 +423,9 @@ void VariationalNewton::step(const Connectivity &conn, double *x, double *y, con
     // antenna (c large, 129^2) took 55 Newton steps instead of 11, and with
     // a large it ended at another minimum (largest angle deviation 83.3
     // instead of 81.5 degrees; bench/RESULTS.md).
-    int cg = 0;
-    bool on_exact = !convex_only() && last_full_ && mg_.setup(H_);
-    const auto t1 = std::chrono::steady_clock::now();
+    bool on_exact = last_full_ && mg_.setup(H_);
     if (on_exact) {
-        cg = solve(H_, forcing_, negative);
+        solve(H_, forcing_, negative);
         const double slope = dot(g_, d_);
         if (!(slope < 0.0)) on_exact = false;
     }
@@ -453,9 +433,8 @@ void VariationalNewton::step(const Connectivity &conn, double *x, double *y, con
         if (!mg_.setup(C_))
             fail(Failure::NotConverged, "variational: the convex Hessian's coarsest factor failed (a spacing weight of 0 "
                                         "on a grid where A and O alone leave a node free?)");
-        cg += solve(H_, forcing_, negative);
+        solve(H_, forcing_, negative);
     }
-    const auto t2 = std::chrono::steady_clock::now();
     // The step: at most kToFold of the way to the first corner turning flat,
     // then halved until V falls enough (Armijo). A decrease below V's
     // round-off is taken as it is (near the minimum).
@@ -488,13 +467,6 @@ void VariationalNewton::step(const Connectivity &conn, double *x, double *y, con
             }
         conn.sync(x);
         conn.sync(y);
-    }
-    if (debug_newton()) {
-        const auto t3 = std::chrono::steady_clock::now();
-        auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
-        std::fprintf(stderr, "newton %dx%d |g| %.3e eta %.2e cg %d (%s)%s alpha %.3g shift %.1e ms assemble+setup %.2f cg %.2f line %.2f\n",
-                     conn.ni(), conn.nj(), gnorm, forcing_, cg, on_exact ? "exact" : "convex", negative ? " neg" : "", alpha, shift_, ms(t0, t1),
-                     ms(t1, t2), ms(t2, t3));
     }
     // A full step: the shift may shrink; no step: it must grow.
     last_full_ = alpha == 1.0 && !negative;
