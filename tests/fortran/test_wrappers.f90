@@ -54,6 +54,7 @@ program test_wrappers
   call eg2d_format_description(EG2D_FORMAT_OPENFOAM, k, name_s)
   call check(k == EG2D_WRITES_DIRECTORY .and. name_s == '_foam', 'format description')
   call check(eg2d_quality_field_name(EG2D_QUALITY_MAX_AREA) == 'area', 'quality field name')
+  deallocate (unit_s, summary_s, name_s)  ! the main program's locals are not freed at its end (memcheck)
   call check(eg2d_status_message(999) == 'unknown eg2d status', 'status message of an unknown code')
   call check(eg2d_solver_short_name(EG2D_SOLVER_PSOR) == 'psor', 'solver name')
   call check(eg2d_solver_short_name(99) == '', 'solver name of an unknown id')
