@@ -8,19 +8,34 @@ using namespace eg2d;
 using namespace eg2d::api;
 
 namespace {
-int set_param(eg2d_grid *grid, const char *function, int param, double value) {
+struct ParamValue {
+    int id;
+    double value;
+};
+
+// Every parameter setter goes through here, so the handle records each
+// parameter the caller set (eg2d_set_airfoil's run defaults leave those alone).
+template <std::size_t N>
+int set_params(eg2d_grid *grid, const char *function, const ParamValue (&values)[N]) {
     return guard(grid, function, [&] {
-        const ParameterInfo *p = find_parameter(param);
-        require(p != nullptr, format("parameter %d: no such parameter", param));
-        check_parameter(*p, value);
         Settings next = grid->gen.settings;
-        next.*(p->field) = value;
-        check_settings(next);
         std::set<int> by_caller = grid->set_by_caller;  // allocates before the change: strong guarantee
-        by_caller.insert(param);
+        for (const ParamValue &v : values) {
+            const ParameterInfo *p = find_parameter(v.id);
+            require(p != nullptr, format("parameter %d: no such parameter", v.id));
+            check_parameter(*p, v.value);
+            next.*(p->field) = v.value;
+            by_caller.insert(v.id);
+        }
+        check_settings(next);
         set_settings_remaking_airfoil(grid, next);
         grid->set_by_caller.swap(by_caller);
     });
+}
+
+int set_param(eg2d_grid *grid, const char *function, int param, double value) {
+    const ParamValue one[] = {{param, value}};
+    return set_params(grid, function, one);
 }
 }  // namespace
 
@@ -62,28 +77,14 @@ EG2D_API int eg2d_set_max_iterations(eg2d_grid *grid, int max_iterations) {
 }
 
 EG2D_API int eg2d_set_af_cycle(eg2d_grid *grid, double dtau_min, double dtau_max, int steps) {
-    return guard(grid, "eg2d_set_af_cycle", [&] {
-        const struct { int id; double value; } in[] = {
-            {EG2D_PARAM_AF_DTAU_MIN, dtau_min}, {EG2D_PARAM_AF_DTAU_MAX, dtau_max}, {EG2D_PARAM_AF_STEPS, static_cast<double>(steps)}};
-        Settings next = grid->gen.settings;
-        for (const auto &v : in) {
-            const ParameterInfo *p = find_parameter(v.id);
-            check_parameter(*p, v.value);
-            next.*(p->field) = v.value;
-        }
-        check_settings(next);
-        grid->gen.settings = next;
-    });
+    const ParamValue in[] = {
+        {EG2D_PARAM_AF_DTAU_MIN, dtau_min}, {EG2D_PARAM_AF_DTAU_MAX, dtau_max}, {EG2D_PARAM_AF_STEPS, static_cast<double>(steps)}};
+    return set_params(grid, "eg2d_set_af_cycle", in);
 }
 
 EG2D_API int eg2d_set_af_time_rule(eg2d_grid *grid, double a, double b) {
-    return guard(grid, "eg2d_set_af_time_rule", [&] {
-        const ParameterInfo *pa = find_parameter(EG2D_PARAM_AF_A), *pb = find_parameter(EG2D_PARAM_AF_B);
-        check_parameter(*pa, a);
-        check_parameter(*pb, b);
-        grid->gen.settings.af_a = a;
-        grid->gen.settings.af_b = b;
-    });
+    const ParamValue in[] = {{EG2D_PARAM_AF_A, a}, {EG2D_PARAM_AF_B, b}};
+    return set_params(grid, "eg2d_set_af_time_rule", in);
 }
 
 EG2D_API int eg2d_set_parameter(eg2d_grid *grid, int param, double value) {

@@ -14,10 +14,7 @@ const NamedId kTopologies[] = {
 
 Table<NamedId> topology_table() { return table_of(kTopologies); }
 
-const char *topology_name(Topology t) {
-    const NamedId *row = topology_table().find(static_cast<int>(t));
-    return row ? row->title : "unknown";
-}
+const char *topology_name(Topology t) { return title_of(topology_table(), static_cast<int>(t)); }
 
 Connectivity::Connectivity(int ni, int nj, Topology topology, int wake)
     : ni_(ni), nj_(nj), topology_(topology), wake_(topology == Topology::C ? wake : 0) {

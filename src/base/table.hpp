@@ -39,4 +39,10 @@ struct NamedId {
     const char *title;
 };
 
+// The title of a named table's row for messages, or "unknown".
+inline const char *title_of(Table<NamedId> table, int id) {
+    const NamedId *row = table.find(id);
+    return row ? row->title : "unknown";
+}
+
 }  // namespace eg2d

@@ -137,8 +137,9 @@ void Generator::changed_boundary() {
     shape_pending_ = boundary_changed_ = true;
 }
 
-void Generator::shape_start(bool fill_above) {
-    if (const Control *c = controls_.find(ControlKind::Orthogonality)) c->check(grid_);  // before any change
+void Generator::shape_start(bool fill_above, bool checked) {
+    if (!checked)
+        if (const Control *c = controls_.find(ControlKind::Orthogonality)) c->check(grid_);  // before any change
     shape_pending_ = boundary_changed_ = false;
     shaped_with_layer_ = settings.wall_layer;
     shaped_with_growth_ = settings.wall_growth;
@@ -212,7 +213,7 @@ void Generator::initialize(int method) {
     else fill_blocks(next, settings, m->fill);
     check_coordinates("initial x", next.x.data(), next.size());
     check_coordinates("initial y", next.y.data(), next.size());
-    if (const Control *c = controls_.find(ControlKind::Orthogonality)) c->check(next);
+    if (const Control *c = controls_.find(ControlKind::Orthogonality)) c->check(next);  // before the commit
     if (m->marches) {
         // The march made the outer boundary: it is the boundary now, as
         // after eg2d_set_coordinates (no sliding sides survive it).
@@ -225,7 +226,7 @@ void Generator::initialize(int method) {
     for (const auto &mo : motions_) mo->restart();
     changed_start();
     fresh_start_ = true;
-    shape_start(true);
+    shape_start(true, true);
     controls_.invalidate();
 }
 

@@ -122,7 +122,8 @@ private:
         shape_pending_ = true;
     }
     // Lets the controls build what they fix before the solve (a wall layer).
-    void shape_start(bool fill_above);
+    // checked: the orthogonality control's check already passed on this grid.
+    void shape_start(bool fill_above, bool checked = false);
     void drop_motion(Side s);
     // The variational system's functional for the grid as it is (its mean
     // cell area, the fold guard as settings ask); the default for the others.

@@ -17,10 +17,7 @@ const NamedId kSystems[] = {
 
 Table<NamedId> system_table() { return table_of(kSystems); }
 
-const char *system_name(System s) {
-    const NamedId *row = system_table().find(static_cast<int>(s));
-    return row ? row->title : "unknown";
-}
+const char *system_name(System s) { return title_of(system_table(), static_cast<int>(s)); }
 
 ResidualInfo residual(System system, const Level &L, double extent) {
     const Connectivity &conn = *L.conn;

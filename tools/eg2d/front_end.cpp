@@ -87,6 +87,13 @@ void check_levels(const std::string &command, int ni, int nj, int levels) {
 
 std::vector<Output> outputs_of(const std::string &command, const std::string &list) {
     std::vector<Output> out;
+    // the library's formats but its reports (written with every level) and the pictures (views)
+    auto listed = [](const Feature &k) {
+        return k.tool == 0 && k.id != EG2D_FORMAT_REPORT && k.id != EG2D_FORMAT_REPORT_JSON && k.id != EG2D_FORMAT_SVG;
+    };
+    std::string known = "plot3d3d, svg, png";
+    for (const Feature &k : formats())
+        if (listed(k)) known += std::string(", ") + k.name;
     std::stringstream in(list);
     std::string name;
     while (std::getline(in, name, ',')) {
@@ -101,14 +108,9 @@ std::vector<Output> outputs_of(const std::string &command, const std::string &li
             out.push_back({name, "-3d.xyz", EG2D_FORMAT_PLOT3D | EG2D_PLOT3D_EXTRUDED});
             continue;
         }
-        // the library's formats but its reports (written with every level) and the pictures (views)
         const Feature *f = nullptr;
-        std::string known = "plot3d3d, svg, png";
         for (const Feature &k : formats())
-            if (k.tool == 0 && k.id != EG2D_FORMAT_REPORT && k.id != EG2D_FORMAT_REPORT_JSON && k.id != EG2D_FORMAT_SVG) {
-                known += std::string(", ") + k.name;
-                if (name == k.name) f = &k;
-            }
+            if (listed(k) && name == k.name) f = &k;
         if (!f) front_end_usage(command, "--format: unknown format \"" + name + "\" (" + known + ")");
         if (!f->available) throw Failure(EXIT_UNSUPPORTED, command + ": --format " + name + " is not in this build");
         out.push_back({name, f->extension, f->id, false, f->directory});
