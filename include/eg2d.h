@@ -57,7 +57,10 @@
  *     eg2d_curve_length, eg2d_curve_evaluate, eg2d_distribution,
  *     eg2d_distribution_parameter, eg2d_curve_points, eg2d_set_side_curve,
  *     eg2d_first_cell_height, eg2d_set_airfoil.
- * 11) Multi-block (to come).
+ * 11) Sets of blocks (multi-block): eg2d_blocks_create,
+ *     eg2d_blocks_destroy, eg2d_blocks_last_error, eg2d_blocks_add,
+ *     eg2d_blocks_join, eg2d_blocks_check, eg2d_blocks_solve,
+ *     eg2d_blocks_get_run, eg2d_blocks_get_kinks.
  *
  * Introduction
  * ------------
@@ -1138,8 +1141,81 @@ EG2D_API int eg2d_first_cell_height(double yplus, double reynolds, double chord,
 EG2D_API int eg2d_set_airfoil(eg2d_grid *grid, const eg2d_curve *section, int topology);
 
 /*=====================================================================
- * 11) Multi-block (to come)
+ * 11) Sets of blocks (multi-block)
+ *
+ * A set joins single-block grids node to node along whole sides or parts
+ * of sides, in either direction, and solves them as one grid: a joined
+ * side's nodes are solved like interior nodes, their stencil spanning both
+ * blocks, so grid lines cross the joins without kinks. The vertices (the
+ * end nodes of each join: where blocks meet each other or the domain's
+ * boundary) stay where the blocks' boundaries put them. Each block is a
+ * grid made as usual (eg2d_create, its sides); the set refers to the grids
+ * (it does not own them) and writes its solution into them, so each
+ * block's results and files are the usual calls on its grid. A grid
+ * destroyed while in a set leaves the set refusing to run (EG2D_ERR_STATE).
+ * In this version: single-block grids, the Laplace or Winslow system
+ * without controls, point SOR over the set (block 0's tolerance,
+ * iteration limit, stall window and relaxation); a block with controls,
+ * interior lines or the variational system is refused
+ * (EG2D_ERR_UNSUPPORTED). A set and its grids belong to one thread at a
+ * time.
  *===================================================================*/
+
+typedef struct eg2d_blocks eg2d_blocks;
+
+/* A new, empty set in *set (NULL on failure). */
+EG2D_API int eg2d_blocks_create(eg2d_blocks **set);
+/* Frees the set (NULL: nothing); its grids are not freed. */
+EG2D_API void eg2d_blocks_destroy(eg2d_blocks *set);
+/* The message of the set's last failed call ("" after none); set NULL:
+ * the thread's (eg2d_last_error(NULL)). */
+EG2D_API const char *eg2d_blocks_last_error(const eg2d_blocks *set);
+
+/* Adds `grid` as the set's next block; *block receives its index (0, 1, ...).
+ * EG2D_ERR_ARGUMENT for a NULL or a grid that is in the set already. */
+EG2D_API int eg2d_blocks_add(eg2d_blocks *set, eg2d_grid *grid, int *block);
+
+/* Joins nodes first_a..last_a of side side_a (EG2D_SIDE_*) of block_a to
+ * nodes first_b..last_b of side side_b of block_b, node to node: node
+ * first_a is node first_b, and so on. Node indices count along the side in
+ * increasing i or j from 0; first > last runs the other way. Both ranges
+ * span the same number of nodes, at least two; no node of a side may be in
+ * two joins (two joins may share an end node). EG2D_ERR_ARGUMENT naming
+ * the join otherwise, EG2D_ERR_UNSUPPORTED for an O- or C-grid block or a
+ * block joined to itself (that is an O- or C-grid), EG2D_ERR_STATE for a
+ * destroyed block. The coordinates are compared by eg2d_blocks_check. */
+EG2D_API int eg2d_blocks_join(eg2d_blocks *set, int block_a, int side_a, int first_a, int last_a, int block_b,
+                              int side_b, int first_b, int last_b);
+
+/* Checks the set as eg2d_blocks_solve will: every block's boundary set
+ * (EG2D_ERR_STATE), the joined nodes coincide within 1e-8 of the set's
+ * extent (EG2D_ERR_BOUNDARY naming both nodes and their distance), the set
+ * connected (EG2D_ERR_STATE naming a block no join reaches), one system and
+ * what this version supports (above). Changes nothing. */
+EG2D_API int eg2d_blocks_check(eg2d_blocks *set);
+
+/* Checks the set, starts each block not yet initialised from its TFI grid
+ * and iterates the set to block 0's tolerance (NUMERICS.md's residual over
+ * the set, on the extent of the whole set). EG2D_OK: every block holds its
+ * part of the solution. EG2D_ERR_NOT_CONVERGED (the iteration limit or the
+ * stall window) and EG2D_ERR_INTERRUPTED leave the last iterate in the
+ * blocks; EG2D_ERR_DIVERGED leaves them as they were. */
+EG2D_API int eg2d_blocks_solve(eg2d_blocks *set);
+
+/* The last eg2d_blocks_solve's iterations (sweeps over the set) and
+ * residual, and the number of nodes it solved for. EG2D_ERR_STATE before a
+ * run. Either output may be NULL. */
+EG2D_API int eg2d_blocks_get_run(const eg2d_blocks *set, int *iterations, double *residual, int *unknowns);
+
+/* How the grid lines cross the joins, in degrees, from the blocks' current
+ * coordinates: *at_joins the largest turn of a grid line at a joined
+ * node (between its segments on either side of the join), *nearby the
+ * largest turn of the same lines at the nodes one line into each block.
+ * Lines that cross without kinks have *at_joins no larger than *nearby;
+ * blocks interpolated on their own (TFI) show larger turns at the joins.
+ * Vertices are left out. EG2D_ERR_STATE unless every block is initialised
+ * and the set checks; 0 and 0 for a set without joined nodes. */
+EG2D_API int eg2d_blocks_get_kinks(const eg2d_blocks *set, double *at_joins, double *nearby);
 
 #ifdef __cplusplus
 }

@@ -1,4 +1,5 @@
 // Creating and destroying grids, topology.
+#include "api/blocks_handle.hpp"
 #include "api/handle.hpp"
 
 using namespace eg2d;
@@ -14,7 +15,10 @@ EG2D_API int eg2d_create(int ni, int nj, eg2d_grid **grid) {
     });
 }
 
-EG2D_API void eg2d_destroy(eg2d_grid *grid) { delete grid; }
+EG2D_API void eg2d_destroy(eg2d_grid *grid) {
+    if (grid) forget_in_sets(grid);
+    delete grid;
+}
 
 EG2D_API int eg2d_set_topology(eg2d_grid *grid, int topology) {
     return guard(grid, "eg2d_set_topology", [&] {

@@ -36,6 +36,8 @@ struct eg2d_grid {
     // The EG2D_PARAM_* ids the caller has set: eg2d_set_airfoil's run
     // defaults (airfoil_apply.hpp) leave them as they are.
     std::set<int> set_by_caller;
+    // The sets of blocks this grid is in (blocks_api.cpp): told when it is destroyed.
+    std::vector<struct eg2d_blocks *> sets;
 };
 
 namespace eg2d {

@@ -191,6 +191,17 @@ void Generator::set_coordinates(const double *x, const double *y) {
     controls_.invalidate();
 }
 
+void Generator::take_solution(const std::vector<double> &x, const std::vector<double> &y, int iterations) {
+    check_coordinates("x", x.data(), grid_.size());
+    check_coordinates("y", y.data(), grid_.size());
+    grid_.x = x;
+    grid_.y = y;
+    grid_.mark_initialized();
+    changed_start();
+    iterations_ = iterations;
+    fresh_start_ = false;
+}
+
 void Generator::initialize(int method) {
     const InitMethod *m = find_init_method(method);
     if (!m) fail(Failure::Argument, format("initialisation method %d: no such method", method));

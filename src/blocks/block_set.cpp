@@ -1,0 +1,150 @@
+#include "blocks/block_set.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "base/error.hpp"
+#include "base/plane.hpp"
+#include "generator/generator.hpp"
+#include "operator/system.hpp"
+
+namespace eg2d {
+
+std::string describe(const SideRange &r) {
+    return format("block %d side %s nodes %d..%d", r.block, side_name(r.side), r.first, r.last);
+}
+
+int BlockSet::add(Generator *block) {
+    if (std::find(blocks_.begin(), blocks_.end(), block) != blocks_.end())
+        fail(Failure::Argument, format("the grid is block %d of this set already",
+                                       static_cast<int>(std::find(blocks_.begin(), blocks_.end(), block) - blocks_.begin())));
+    blocks_.push_back(block);
+    return size() - 1;
+}
+
+void BlockSet::forget(const Generator *block) {
+    for (Generator *&b : blocks_)
+        if (b == block) b = nullptr;
+}
+
+namespace {
+
+void check_range(const BlockSet &set, const SideRange &r, const char *which) {
+    if (r.block < 0 || r.block >= set.size())
+        fail(Failure::Argument, format("join: block_%s = %d: the set has blocks 0..%d", which, r.block, set.size() - 1));
+    if (static_cast<int>(r.side) < 0 || static_cast<int>(r.side) > 3)
+        fail(Failure::Argument, format("join: side_%s = %d: not EG2D_SIDE_JMIN, IMAX, JMAX or IMIN", which,
+                                       static_cast<int>(r.side)));
+    const Generator *g = set.block(r.block);
+    if (!g) fail(Failure::State, format("join: block %d was destroyed", r.block));
+    if (g->grid().topology() != Topology::Single)
+        fail(Failure::Unsupported, format("join: block %d is an %s: a set joins single blocks (a block's own cut is "
+                                          "its O- or C-grid topology)", r.block, topology_name(g->grid().topology())));
+    const int n = g->grid().side_length(r.side);
+    if (std::min(r.first, r.last) < 0 || std::max(r.first, r.last) > n - 1)
+        fail(Failure::Argument, format("join: %s: side %s of block %d has nodes 0..%d", describe(r).c_str(),
+                                       side_name(r.side), r.block, n - 1));
+    if (r.first == r.last)
+        fail(Failure::Argument, format("join: %s: a join spans at least two nodes", describe(r).c_str()));
+}
+
+// Do the ranges share a node of the same side, other than an end node they
+// may share (two joins meeting at a vertex)?
+bool overlap(const SideRange &p, const SideRange &q) {
+    if (p.block != q.block || p.side != q.side) return false;
+    const int p0 = std::min(p.first, p.last), p1 = std::max(p.first, p.last);
+    const int q0 = std::min(q.first, q.last), q1 = std::max(q.first, q.last);
+    return std::max(p0, q0) < std::min(p1, q1);
+}
+
+}  // namespace
+
+void BlockSet::join(const Join &j) {
+    check_range(*this, j.a, "a");
+    check_range(*this, j.b, "b");
+    if (j.a.count() != j.b.count())
+        fail(Failure::Argument, format("join: %s has %d nodes, %s has %d: joins match node to node", describe(j.a).c_str(),
+                                       j.a.count(), describe(j.b).c_str(), j.b.count()));
+    if (overlap(j.a, j.b))
+        fail(Failure::Argument, format("join: %s and %s share nodes of the same side", describe(j.a).c_str(),
+                                       describe(j.b).c_str()));
+    if (j.a.block == j.b.block)
+        fail(Failure::Unsupported, format("join: %s to its own block: a block joined to itself is an O- or C-grid "
+                                          "(eg2d_set_topology)", describe(j.a).c_str()));
+    for (const Join &o : joins_)
+        for (const SideRange &mine : {j.a, j.b})
+            for (int k = 0; k < 2; ++k)
+                if (overlap(mine, k == 0 ? o.a : o.b))
+                    fail(Failure::Argument, format("join: %s is joined already (to %s)", describe(mine).c_str(),
+                                                   describe(k == 0 ? o.b : o.a).c_str()));
+    joins_.push_back(j);
+}
+
+double BlockSet::extent() const {
+    double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x, hi_x = -lo_x, hi_y = -lo_x;
+    for (const Generator *g : blocks_) {
+        if (!g) continue;
+        const Grid &grid = g->grid();
+        for (int s = 0; s < 4; ++s)
+            for (int p = 0; p < grid.side_length(Side(s)); ++p) {
+                const std::size_t k = side_node(grid, Side(s), p);
+                lo_x = std::min(lo_x, grid.x[k]);
+                hi_x = std::max(hi_x, grid.x[k]);
+                lo_y = std::min(lo_y, grid.y[k]);
+                hi_y = std::max(hi_y, grid.y[k]);
+            }
+    }
+    return std::hypot(hi_x - lo_x, hi_y - lo_y);
+}
+
+void BlockSet::check() const {
+    if (blocks_.empty()) fail(Failure::State, "the set has no blocks (eg2d_blocks_add)");
+    for (int b = 0; b < size(); ++b) {
+        const Generator *g = blocks_[static_cast<std::size_t>(b)];
+        if (!g) fail(Failure::State, format("block %d was destroyed", b));
+        if (g->grid().topology() != Topology::Single)
+            fail(Failure::Unsupported, format("block %d is an %s: a set joins single blocks", b,
+                                              topology_name(g->grid().topology())));
+        if (!g->grid().boundary_complete()) fail(Failure::State, format("block %d: its boundary is not complete", b));
+        if (g->system() != blocks_[0]->system())
+            fail(Failure::State, format("block %d solves the %s system, block 0 the %s: a set solves one system", b,
+                                        system_name(g->system()), system_name(blocks_[0]->system())));
+        if (g->system() == System::Variational)
+            fail(Failure::Unsupported, format("block %d: the variational system on a set of blocks is not available "
+                                              "yet (EG2D_SYSTEM_LAPLACE or EG2D_SYSTEM_WINSLOW)", b));
+        if (!const_cast<Generator *>(g)->controls().empty())
+            fail(Failure::Unsupported, format("block %d has controls: controls on a set of blocks are not available "
+                                              "yet (eg2d_clear_controls)", b));
+        if (!g->grid().interior_lines().empty())
+            fail(Failure::Unsupported, format("block %d has interior lines: not available on a set of blocks yet", b));
+    }
+    const double tol = kCornerTolerance * extent();
+    for (const Join &j : joins_) {
+        const Grid &ga = blocks_[static_cast<std::size_t>(j.a.block)]->grid();
+        const Grid &gb = blocks_[static_cast<std::size_t>(j.b.block)]->grid();
+        for (int t = 0; t < j.a.count(); ++t) {
+            const std::size_t ka = side_node(ga, j.a.side, j.a.at(t)), kb = side_node(gb, j.b.side, j.b.at(t));
+            const double d = std::hypot(ga.x[ka] - gb.x[kb], ga.y[ka] - gb.y[kb]);
+            if (!(d <= tol))
+                fail(Failure::Boundary,
+                     format("join %s to %s: node %d of block %d's side %s = (%.17g, %.17g) and node %d of block %d's "
+                            "side %s = (%.17g, %.17g) are %.3g apart (tolerance %.3g)", describe(j.a).c_str(),
+                            describe(j.b).c_str(), j.a.at(t), j.a.block, side_name(j.a.side), ga.x[ka], ga.y[ka],
+                            j.b.at(t), j.b.block, side_name(j.b.side), gb.x[kb], gb.y[kb], d, tol));
+        }
+    }
+    // Connected: a union-find over the joins.
+    std::vector<int> root(blocks_.size());
+    for (std::size_t b = 0; b < root.size(); ++b) root[b] = static_cast<int>(b);
+    auto find = [&](int b) {
+        while (root[static_cast<std::size_t>(b)] != b) b = root[static_cast<std::size_t>(b)];
+        return b;
+    };
+    for (const Join &j : joins_) root[static_cast<std::size_t>(find(j.a.block))] = find(j.b.block);
+    for (int b = 1; b < size(); ++b)
+        if (find(b) != find(0))
+            fail(Failure::State, format("the set is not connected: no chain of joins from block 0 to block %d", b));
+}
+
+}  // namespace eg2d

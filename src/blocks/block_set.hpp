@@ -1,0 +1,66 @@
+// A set of blocks solved as one grid (Thompson, Soni & Weatherill 1999,
+// ch. 6): single-block grids joined node to node along whole sides or parts
+// of sides. The set refers to the blocks' generators (it owns none): each
+// block keeps its boundary, size and settings, and receives the set's
+// solution.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "base/grid.hpp"
+
+namespace eg2d {
+
+class Generator;
+
+// Nodes first..last (inclusive, along the side in increasing index; first >
+// last runs the other way) of a block's side.
+struct SideRange {
+    int block;
+    Side side;
+    int first, last;
+    int count() const { return (first <= last ? last - first : first - last) + 1; }
+    int step() const { return first <= last ? 1 : -1; }
+    // The t-th node of the range (t in [0, count)).
+    int at(int t) const { return first + t * step(); }
+};
+
+// Node t of `a` is node t of `b`.
+struct Join {
+    SideRange a, b;
+};
+
+class BlockSet {
+public:
+    // The block's index. Throws Argument for a block already in the set.
+    int add(Generator *block);
+    // The block is gone (its handle was destroyed): the set refuses to run.
+    void forget(const Generator *block);
+    int size() const { return static_cast<int>(blocks_.size()); }
+    Generator *block(int b) const { return blocks_[static_cast<std::size_t>(b)]; }
+    const std::vector<Join> &joins() const { return joins_; }
+
+    // Checks what can be checked without coordinates (blocks exist, are
+    // single blocks, the sides and ranges fit, counts agree, no node of a
+    // side is joined twice); Argument naming the join otherwise. Strong
+    // guarantee.
+    void join(const Join &j);
+
+    // Before a solve: every block present, its boundary complete, the same
+    // system, no controls; each join's nodes coincide (kCornerTolerance of
+    // the set's extent); the set connected. Failure::Argument, Boundary or
+    // State naming the block, side and node.
+    void check() const;
+    // The diagonal of the bounding box of every block's boundary.
+    double extent() const;
+
+private:
+    std::vector<Generator *> blocks_;  // nullptr: forgotten
+    std::vector<Join> joins_;
+};
+
+// "block 2 side IMIN nodes 0..16" for messages.
+std::string describe(const SideRange &r);
+
+}  // namespace eg2d

@@ -1,0 +1,28 @@
+// Solving a set of blocks as one grid (composite.hpp): the blocks' own
+// settings (block 0's tolerance, iteration limit, stall window and
+// relaxation), point SOR over the set, each block's grid receiving its part.
+#pragma once
+#include <functional>
+#include <string>
+
+#include "blocks/block_set.hpp"
+
+namespace eg2d {
+
+struct SetRun {
+    long iterations = 0;
+    double residual = 0.0;
+    long unknowns = 0;
+    double omega = 0.0;
+    std::string note;  // how the run ended, for the API's events
+};
+
+// Checks the set (BlockSet::check), starts each block not yet initialised
+// from its TFI grid, and iterates to block 0's tolerance. Throws
+// NotConverged (limit or stall; the blocks keep the last iterate),
+// Diverged (the blocks unchanged) or Interrupted (the monitor, called with
+// the iteration count and residual, returned true; iterations kept).
+// `run` follows the run as it goes, so it says how far a failed one got.
+void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, SetRun &run);
+
+}  // namespace eg2d

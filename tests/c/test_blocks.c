@@ -1,0 +1,253 @@
+/* Sets of blocks (eg2d_blocks_*): a set that covers a single block's domain
+ * solves to that block's grid, whichever way its blocks are turned; the
+ * set's errors name the thing; a backward-facing step in three blocks
+ * solves without folds and without kinks at its joins. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "eg2d.h"
+
+/* The reference domain: 0 <= x <= 2 over a bump b(x) up to y = 1, NI x NJ
+ * nodes, rows clustered towards the bump. Column I = 16 is where the sets
+ * below join their two blocks (its start: the same formula). */
+enum { NI = 33, NJ = 17, MID = 16 };
+
+static void global_point(int I, int J, double *x, double *y) {
+    const double s = (double)J / (NJ - 1);
+    *x = 2.0 * I / (NI - 1);
+    const double b = 0.25 * exp(-12.0 * (*x - 0.7) * (*x - 0.7));
+    *y = b + (1.0 - b) * s * s;
+}
+
+/* A block of the set: node (i, j) is node (I, J) of the reference grid. */
+typedef void (*block_map)(int i, int j, int *I, int *J);
+static void map_left(int i, int j, int *I, int *J) { *I = i, *J = j; }
+static void map_right(int i, int j, int *I, int *J) { *I = MID + i, *J = j; }
+static void map_right_turned(int i, int j, int *I, int *J) { *I = NI - 1 - i, *J = NJ - 1 - j; }  /* 180 degrees */
+static void map_right_quarter(int i, int j, int *I, int *J) { *I = MID + j, *J = NJ - 1 - i; }     /* 90 degrees */
+
+static eg2d_grid *make_block(int ni, int nj, block_map map) {
+    eg2d_grid *g;
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    for (int side = 0; side < 4; ++side) {
+        const int n = (side == EG2D_SIDE_JMIN || side == EG2D_SIDE_JMAX) ? ni : nj;
+        double *x = malloc(sizeof(double) * (size_t)n), *y = malloc(sizeof(double) * (size_t)n);
+        for (int p = 0; p < n; ++p) {
+            int i = p, j = 0, I, J;
+            if (side == EG2D_SIDE_JMAX) j = nj - 1;
+            if (side == EG2D_SIDE_IMIN) i = 0, j = p;
+            if (side == EG2D_SIDE_IMAX) i = ni - 1, j = p;
+            map(i, j, &I, &J);
+            global_point(I, J, &x[p], &y[p]);
+        }
+        assert_int_equal(eg2d_set_side(g, side, x, y), EG2D_OK);
+        free(x);
+        free(y);
+    }
+    return g;
+}
+
+static eg2d_grid *reference(int system) {
+    eg2d_grid *g = make_block(NI, NJ, map_left);
+    assert_int_equal(eg2d_set_system(g, system), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(g, 1e-13), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    return g;
+}
+
+/* The largest distance between a block's nodes and the reference's. */
+static double distance_to(const eg2d_grid *ref, const eg2d_grid *g, int ni, int nj, block_map map) {
+    double *rx = malloc(sizeof(double) * NI * NJ), *ry = malloc(sizeof(double) * NI * NJ);
+    double *x = malloc(sizeof(double) * (size_t)(ni * nj)), *y = malloc(sizeof(double) * (size_t)(ni * nj));
+    assert_int_equal(eg2d_get_coordinates(ref, rx, ry), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    double worst = 0.0;
+    for (int j = 0; j < nj; ++j)
+        for (int i = 0; i < ni; ++i) {
+            int I, J;
+            map(i, j, &I, &J);
+            const double d = hypot(x[i + ni * j] - rx[I + NI * J], y[i + ni * j] - ry[I + NI * J]);
+            if (d > worst) worst = d;
+        }
+    free(rx), free(ry), free(x), free(y);
+    return worst;
+}
+
+struct turned {
+    block_map map;
+    int ni, nj;                  /* the right block's size */
+    int side, first, last;       /* its side joined to the left block's IMAX 0..NJ-1 */
+};
+
+static const struct turned kTurns[] = {
+    {map_right, NI - MID, NJ, EG2D_SIDE_IMIN, 0, NJ - 1},
+    {map_right_turned, NI - MID, NJ, EG2D_SIDE_IMAX, NJ - 1, 0},
+    {map_right_quarter, NJ, NI - MID, EG2D_SIDE_JMIN, NJ - 1, 0},
+};
+
+/* Two blocks covering the reference domain, the right one as given, turned
+ * by 180 and by 90 degrees, give the single block's grid: the joined
+ * column is solved as an interior one. */
+static void test_set_is_the_single_block(void **state) {
+    (void)state;
+    const int systems[] = {EG2D_SYSTEM_LAPLACE, EG2D_SYSTEM_WINSLOW};
+    for (size_t s = 0; s < 2; ++s) {
+        eg2d_grid *ref = reference(systems[s]);
+        for (size_t t = 0; t < sizeof kTurns / sizeof kTurns[0]; ++t) {
+            const struct turned *T = &kTurns[t];
+            eg2d_grid *left = make_block(MID + 1, NJ, map_left), *right = make_block(T->ni, T->nj, T->map);
+            eg2d_blocks *set;
+            int b0, b1, iterations, unknowns;
+            double residual;
+            assert_int_equal(eg2d_blocks_create(&set), EG2D_OK);
+            assert_int_equal(eg2d_blocks_add(set, left, &b0), EG2D_OK);
+            assert_int_equal(eg2d_blocks_add(set, right, &b1), EG2D_OK);
+            assert_int_equal(b0, 0);
+            assert_int_equal(b1, 1);
+            assert_int_equal(eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, NJ - 1, 1, T->side, T->first, T->last), EG2D_OK);
+            assert_int_equal(eg2d_set_system(left, systems[s]), EG2D_OK);
+            assert_int_equal(eg2d_set_system(right, systems[s]), EG2D_OK);
+            assert_int_equal(eg2d_set_tolerance(left, 1e-13), EG2D_OK);
+            assert_int_equal(eg2d_blocks_solve(set), EG2D_OK);
+            assert_int_equal(eg2d_blocks_get_run(set, &iterations, &residual, &unknowns), EG2D_OK);
+            assert_true(residual <= 1e-13);
+            assert_int_equal(unknowns, (NI - 2) * (NJ - 2));  /* every interior node of the reference, once */
+            const double dl = distance_to(ref, left, MID + 1, NJ, map_left);
+            const double dr = distance_to(ref, right, T->ni, T->nj, T->map);
+            printf("system %d, turn %zu: %d sweeps, residual %.2g, largest distance to the single block %.2g, %.2g\n",
+                   systems[s], t, iterations, residual, dl, dr);
+            assert_true(dl < 1e-9 && dr < 1e-9);
+            eg2d_blocks_destroy(set);
+            eg2d_destroy(left);
+            eg2d_destroy(right);
+        }
+        eg2d_destroy(ref);
+    }
+}
+
+static void expect(int status, int code, const eg2d_blocks *set, const char *words) {
+    if (status != code || !strstr(eg2d_blocks_last_error(set), words))
+        fail_msg("status %d (wanted %d): \"%s\" (wanted \"%s\")", status, code, eg2d_blocks_last_error(set), words);
+}
+
+static void test_errors(void **state) {
+    (void)state;
+    eg2d_grid *left = make_block(MID + 1, NJ, map_left), *right = make_block(NI - MID, NJ, map_right);
+    eg2d_blocks *set;
+    int b;
+    assert_int_equal(eg2d_blocks_create(&set), EG2D_OK);
+    expect(eg2d_blocks_solve(set), EG2D_ERR_STATE, set, "no blocks");
+    assert_int_equal(eg2d_blocks_add(set, left, &b), EG2D_OK);
+    expect(eg2d_blocks_add(set, left, &b), EG2D_ERR_ARGUMENT, set, "block 0 of this set already");
+    expect(eg2d_blocks_add(set, NULL, &b), EG2D_ERR_ARGUMENT, set, "grid is NULL");
+    assert_int_equal(eg2d_blocks_add(set, right, &b), EG2D_OK);
+    expect(eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, NJ - 1, 2, EG2D_SIDE_IMIN, 0, NJ - 1), EG2D_ERR_ARGUMENT, set,
+           "block_b = 2: the set has blocks 0..1");
+    expect(eg2d_blocks_join(set, 0, 7, 0, NJ - 1, 1, EG2D_SIDE_IMIN, 0, NJ - 1), EG2D_ERR_ARGUMENT, set, "side_a = 7");
+    expect(eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, NJ, 1, EG2D_SIDE_IMIN, 0, NJ), EG2D_ERR_ARGUMENT, set,
+           "side IMAX of block 0 has nodes 0..16");
+    expect(eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, NJ - 1, 1, EG2D_SIDE_IMIN, 0, NJ - 2), EG2D_ERR_ARGUMENT, set,
+           "has 17 nodes, block 1 side IMIN nodes 0..15 has 16");
+    expect(eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, 8, 0, EG2D_SIDE_IMIN, 0, 8), EG2D_ERR_UNSUPPORTED, set,
+           "to its own block");
+    /* Not connected, then a join at the wrong place: the coordinates disagree. */
+    expect(eg2d_blocks_check(set), EG2D_ERR_STATE, set, "not connected: no chain of joins from block 0 to block 1");
+    assert_int_equal(eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, NJ - 1, 1, EG2D_SIDE_IMIN, NJ - 1, 0), EG2D_OK);
+    expect(eg2d_blocks_check(set), EG2D_ERR_BOUNDARY, set, "apart (tolerance");
+    expect(eg2d_blocks_join(set, 1, EG2D_SIDE_IMIN, 3, 5, 0, EG2D_SIDE_JMAX, 3, 5), EG2D_ERR_ARGUMENT, set,
+           "block 1 side IMIN nodes 3..5 is joined already (to block 0 side IMAX nodes 0..16)");
+    eg2d_blocks_destroy(set);
+
+    /* A grid destroyed while in a set; controls and the variational system refused. */
+    assert_int_equal(eg2d_blocks_create(&set), EG2D_OK);
+    assert_int_equal(eg2d_blocks_add(set, left, &b), EG2D_OK);
+    assert_int_equal(eg2d_blocks_add(set, right, &b), EG2D_OK);
+    assert_int_equal(eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, NJ - 1, 1, EG2D_SIDE_IMIN, 0, NJ - 1), EG2D_OK);
+    assert_int_equal(eg2d_blocks_check(set), EG2D_OK);
+    assert_int_equal(eg2d_set_system(right, EG2D_SYSTEM_LAPLACE), EG2D_OK);
+    expect(eg2d_blocks_check(set), EG2D_ERR_STATE, set, "block 1 solves the Laplace system, block 0 the Winslow");
+    assert_int_equal(eg2d_set_system(right, EG2D_SYSTEM_WINSLOW), EG2D_OK);
+    assert_int_equal(eg2d_set_wall_spacing(right, EG2D_SIDE_JMIN, 1e-3), EG2D_OK);
+    expect(eg2d_blocks_solve(set), EG2D_ERR_UNSUPPORTED, set, "block 1 has controls");
+    expect(eg2d_blocks_get_run(set, NULL, NULL, NULL), EG2D_ERR_STATE, set, "has not run");
+    eg2d_destroy(right);
+    expect(eg2d_blocks_solve(set), EG2D_ERR_STATE, set, "block 1 was destroyed");
+    eg2d_blocks_destroy(set);
+    eg2d_destroy(left);  /* after the set: the set let go of it */
+    expect(eg2d_blocks_check(NULL), EG2D_ERR_ARGUMENT, NULL, "set is NULL");
+}
+
+/* A backward-facing step with Driver & Seegmiller's expansion (step height
+ * 1, upstream channel 8, downstream 9; the lengths shortened to 4 and 20
+ * step heights): the upstream channel, the channel above the step's height
+ * downstream and the step's own channel below it, walls clustered. */
+static double tanh_cluster(double s, double beta) { return 1.0 + tanh(beta * (s - 1.0)) / tanh(beta); }
+static double both_ends(double s, double beta) { return 0.5 * tanh_cluster(2.0 * s, beta) * (s <= 0.5) + (s > 0.5) * (1.0 - 0.5 * tanh_cluster(2.0 * (1.0 - s), beta)); }
+
+static eg2d_grid *rectangle(int ni, int nj, double x0, double x1, double y0, double y1, int cluster_x, int cluster_y) {
+    eg2d_grid *g;
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    double *x = calloc((size_t)(ni * nj), sizeof(double)), *y = calloc((size_t)(ni * nj), sizeof(double));
+    for (int j = 0; j < nj; ++j)
+        for (int i = 0; i < ni; ++i) {
+            const double s = (double)i / (ni - 1), t = (double)j / (nj - 1);
+            /* cluster_x: 1 towards x1 (the step), -1 towards x0 (the step); cluster_y: both walls */
+            const double sx = cluster_x > 0 ? tanh_cluster(s, 2.0) : cluster_x < 0 ? 1.0 - tanh_cluster(1.0 - s, 2.0) : s;
+            const double ty = cluster_y ? both_ends(t, 2.5) : t;
+            x[i + ni * j] = x0 + (x1 - x0) * sx;
+            y[i + ni * j] = y0 + (y1 - y0) * ty;
+        }
+    assert_int_equal(eg2d_set_boundary(g, x, y), EG2D_OK);
+    free(x), free(y);
+    return g;
+}
+
+static void test_backward_facing_step(void **state) {
+    (void)state;
+    eg2d_grid *up = rectangle(25, 41, -4.0, 0.0, 1.0, 9.0, 1, 1);
+    eg2d_grid *above = rectangle(81, 41, 0.0, 20.0, 1.0, 9.0, -1, 1);
+    eg2d_grid *below = rectangle(81, 17, 0.0, 20.0, 0.0, 1.0, -1, 1);
+    eg2d_blocks *set;
+    int b, iterations;
+    double residual, before_at, before_near, at, near;
+    assert_int_equal(eg2d_blocks_create(&set), EG2D_OK);
+    assert_int_equal(eg2d_blocks_add(set, up, &b), EG2D_OK);
+    assert_int_equal(eg2d_blocks_add(set, above, &b), EG2D_OK);
+    assert_int_equal(eg2d_blocks_add(set, below, &b), EG2D_OK);
+    assert_int_equal(eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, 40, 1, EG2D_SIDE_IMIN, 0, 40), EG2D_OK);
+    assert_int_equal(eg2d_blocks_join(set, 1, EG2D_SIDE_JMIN, 0, 80, 2, EG2D_SIDE_JMAX, 0, 80), EG2D_OK);
+    for (int k = 0; k < 3; ++k) {
+        eg2d_grid *g = k == 0 ? up : k == 1 ? above : below;
+        assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
+    }
+    assert_int_equal(eg2d_blocks_get_kinks(set, &before_at, &before_near), EG2D_OK);
+    assert_int_equal(eg2d_blocks_solve(set), EG2D_OK);
+    assert_int_equal(eg2d_blocks_get_run(set, &iterations, &residual, NULL), EG2D_OK);
+    assert_int_equal(eg2d_blocks_get_kinks(set, &at, &near), EG2D_OK);
+    printf("step: %d sweeps, residual %.2g; turns at the joins %.3g (nearby %.3g) degrees, TFI start %.3g (%.3g)\n",
+           iterations, residual, at, near, before_at, before_near);
+    for (int k = 0; k < 3; ++k) {
+        double folded;
+        assert_int_equal(eg2d_get_quality(k == 0 ? up : k == 1 ? above : below, EG2D_QUALITY_FOLDED_CELLS, &folded), EG2D_OK);
+        assert_true(folded == 0.0);
+    }
+    assert_true(at <= near);
+    eg2d_blocks_destroy(set);
+    eg2d_destroy(up), eg2d_destroy(above), eg2d_destroy(below);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_set_is_the_single_block),
+        cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_backward_facing_step),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
