@@ -114,8 +114,8 @@ void BlockSet::check() const {
             fail(Failure::Unsupported, format("block %d: the variational system on a set of blocks is not available "
                                               "yet (EG2D_SYSTEM_LAPLACE or EG2D_SYSTEM_WINSLOW)", b));
         if (!const_cast<Generator *>(g)->controls().empty())
-            fail(Failure::Unsupported, format("block %d has controls: controls on a set of blocks are not available "
-                                              "yet (eg2d_clear_controls)", b));
+            fail(Failure::Unsupported, format("block %d has controls (a wall spacing, sources, weights or an "
+                                              "orthogonality method): not available on a set of blocks yet", b));
         if (!g->grid().interior_lines().empty())
             fail(Failure::Unsupported, format("block %d has interior lines: not available on a set of blocks yet", b));
     }

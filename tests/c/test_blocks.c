@@ -115,7 +115,15 @@ static void test_set_is_the_single_block(void **state) {
             assert_int_equal(eg2d_set_system(left, systems[s]), EG2D_OK);
             assert_int_equal(eg2d_set_system(right, systems[s]), EG2D_OK);
             assert_int_equal(eg2d_set_tolerance(left, 1e-13), EG2D_OK);
+            /* Before the solve: each block interpolated on its own (TFI). */
+            double tfi_at, tfi_near, at, near;
+            assert_int_equal(eg2d_initialize(left, EG2D_INIT_TFI), EG2D_OK);
+            assert_int_equal(eg2d_initialize(right, EG2D_INIT_TFI), EG2D_OK);
+            assert_int_equal(eg2d_blocks_get_kinks(set, &tfi_at, &tfi_near), EG2D_OK);
             assert_int_equal(eg2d_blocks_solve(set), EG2D_OK);
+            assert_int_equal(eg2d_blocks_get_kinks(set, &at, &near), EG2D_OK);
+            printf("turns at the join %.3g degrees (nearby %.3g); TFI blocks %.3g (%.3g)\n", at, near, tfi_at, tfi_near);
+            assert_true(at <= near);
             assert_int_equal(eg2d_blocks_get_run(set, &iterations, &residual, &unknowns), EG2D_OK);
             assert_true(residual <= 1e-13);
             assert_int_equal(unknowns, (NI - 2) * (NJ - 2));  /* every interior node of the reference, once */

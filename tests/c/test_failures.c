@@ -444,6 +444,65 @@ static int r_patch_ogrid_imin(eg2d_grid *g) { return eg2d_set_patch(g, EG2D_SIDE
 static int r_patch_cut_type(eg2d_grid *g) { return eg2d_set_patch(g, EG2D_SIDE_IMAX, 0, 8, EG2D_PATCH_CUT, "x"); }
 static int r_patch_range(eg2d_grid *g) { return eg2d_set_patch(g, EG2D_SIDE_JMAX, 3, 9, EG2D_PATCH_WALL, "x"); }
 
+/* Sets of blocks: the row's grid is block 0 of a set; block 1 is the unit
+ * square moved right by `shift`. The set's message is the row's message. */
+static char set_message[1024];
+static eg2d_grid *second;
+static eg2d_blocks *square_pair(eg2d_grid *g, double shift) {
+    eg2d_blocks *set = NULL;
+    double x[N], y[N];
+    int side, p, b;
+    if (eg2d_create(N, N, &second) != EG2D_OK) return NULL;
+    for (side = 0; side < 4; ++side) {
+        unit_side(side, x, y);
+        for (p = 0; p < N; ++p) x[p] += shift;
+        if (eg2d_set_side(second, side, x, y) != EG2D_OK) return NULL;
+    }
+    if (eg2d_blocks_create(&set) || eg2d_blocks_add(set, g, &b) || eg2d_blocks_add(set, second, &b)) return NULL;
+    return set;
+}
+static int set_done(eg2d_blocks *set, int rc) {
+    snprintf(set_message, sizeof set_message, "%s", eg2d_blocks_last_error(set));
+    eg2d_blocks_destroy(set);
+    eg2d_destroy(second);
+    return rc;
+}
+static int r_blocks_create_null(eg2d_grid *g) {
+    (void)g;
+    return eg2d_blocks_create(NULL);
+}
+static int r_blocks_counts(eg2d_grid *g) {
+    eg2d_blocks *set = square_pair(g, 1.0);
+    return set_done(set, eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, 8, 1, EG2D_SIDE_IMIN, 0, 7));
+}
+static int r_blocks_twice(eg2d_grid *g) {
+    eg2d_blocks *set = square_pair(g, 1.0);
+    eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, 8, 1, EG2D_SIDE_IMIN, 0, 8);
+    return set_done(set, eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 4, 6, 1, EG2D_SIDE_JMIN, 4, 6));
+}
+static int r_blocks_apart(eg2d_grid *g) {
+    eg2d_blocks *set = square_pair(g, 1.5);
+    eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, 8, 1, EG2D_SIDE_IMIN, 0, 8);
+    return set_done(set, eg2d_blocks_check(set));
+}
+static int r_blocks_unconnected(eg2d_grid *g) {
+    eg2d_blocks *set = square_pair(g, 1.0);
+    return set_done(set, eg2d_blocks_solve(set));
+}
+static int r_blocks_controls(eg2d_grid *g) {
+    eg2d_blocks *set = square_pair(g, 1.0);
+    eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, 8, 1, EG2D_SIDE_IMIN, 0, 8);
+    eg2d_set_wall_spacing(second, EG2D_SIDE_JMIN, 1e-3);
+    return set_done(set, eg2d_blocks_solve(set));
+}
+static int r_blocks_destroyed(eg2d_grid *g) {
+    eg2d_blocks *set = square_pair(g, 1.0);
+    eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, 8, 1, EG2D_SIDE_IMIN, 0, 8);
+    eg2d_destroy(second);
+    if (eg2d_create(N, N, &second) != EG2D_OK) return -1;  /* for set_done to free */
+    return set_done(set, eg2d_blocks_solve(set));
+}
+
 /*---------------------------------------------------------------------
  * The table
  *-------------------------------------------------------------------*/
@@ -758,6 +817,28 @@ static const bad_input rows[] = {
     {"a patch beyond the side's last node", "eg2d_set_patch(g, EG2D_SIDE_JMAX, 3, 9, EG2D_PATCH_WALL, \"x\")",
      S_SQUARE, r_patch_range, EG2D_ERR_ARGUMENT,
      "eg2d_set_patch: first = 3, last = 9: need 0 <= first < last <= 8 (side JMAX has 9 nodes)", 0},
+    {"NULL result pointer for a set", "eg2d_blocks_create(NULL)", S_NONE, r_blocks_create_null, EG2D_ERR_ARGUMENT,
+     "eg2d_blocks_create: set is NULL", 0},
+    {"a join whose sides' node counts differ", "eg2d_blocks_join(set, 0, IMAX, 0, 8, 1, IMIN, 0, 7)", S_SQUARE,
+     r_blocks_counts, EG2D_ERR_ARGUMENT,
+     "eg2d_blocks_join: join: block 0 side IMAX nodes 0..8 has 9 nodes, block 1 side IMIN nodes 0..7 has 8: joins "
+     "match node to node",
+     0},
+    {"a side's nodes joined twice", "eg2d_blocks_join(set, 0, IMAX, 4, 6, 1, JMIN, 4, 6)", S_SQUARE, r_blocks_twice,
+     EG2D_ERR_ARGUMENT,
+     "eg2d_blocks_join: join: block 0 side IMAX nodes 4..6 is joined already (to block 1 side IMIN nodes 0..8)", 0},
+    {"joined nodes that do not coincide", "eg2d_blocks_check(set)", S_SQUARE, r_blocks_apart, EG2D_ERR_BOUNDARY,
+     "eg2d_blocks_check: join block 0 side IMAX nodes 0..8 to block 1 side IMIN nodes 0..8: node 0 of block 0's side "
+     "IMAX = (1, 0) and node 0 of block 1's side IMIN = (1.5, 0) are 0.5 apart (tolerance *)",
+     0},
+    {"a set whose blocks are not joined", "eg2d_blocks_solve(set)", S_SQUARE, r_blocks_unconnected, EG2D_ERR_STATE,
+     "eg2d_blocks_solve: the set is not connected: no chain of joins from block 0 to block 1", 0},
+    {"a block of a set with controls", "eg2d_blocks_solve(set)", S_SQUARE, r_blocks_controls, EG2D_ERR_UNSUPPORTED,
+     "eg2d_blocks_solve: block 1 has controls (a wall spacing, sources, weights or an orthogonality method): not "
+     "available on a set of blocks yet",
+     0},
+    {"a block destroyed while in a set", "eg2d_blocks_solve(set)", S_SQUARE, r_blocks_destroyed, EG2D_ERR_STATE,
+     "eg2d_blocks_solve: block 1 was destroyed", 0},
     {"an allocation during a call fails (1000 x 1000, 4 MB margin)", "eg2d_initialize(g, EG2D_INIT_TFI)", S_BIG,
      r_init_oom, EG2D_ERR_MEMORY, "eg2d_initialize: out of memory", MEMORY_LIMIT},
 };
@@ -924,9 +1005,10 @@ static int check_row(const bad_input *r) {
         observe(g, &before);
     }
     if ((r->flags & MEMORY_LIMIT) && address_space_limit(r->setup == S_NONE ? 64u << 20 : 4u << 20)) return 1;
+    set_message[0] = 0;
     rc = r->run(g);
     if (r->flags & MEMORY_LIMIT) address_space_unlimited();
-    message = rc == EG2D_OK ? "" : eg2d_last_error(g);
+    message = rc == EG2D_OK ? "" : set_message[0] ? set_message : eg2d_last_error(g);
     if (rc != r->code)
         bad = failed("returned %d (%s), expected %s: \"%s\"", rc, code_name(rc), code_name(r->code), message);
     else if (!matches(r->message, message))
