@@ -57,6 +57,9 @@ void bench_walls(void);
  * the default graded layer side by side (--internal, internal.c). */
 void bench_internal(void);
 
+/* A set of blocks against one block of as many nodes (--blocks, blocks.c). */
+void bench_blocks(void);
+
 /* The variational system against Winslow on the course notes' domains
  * (--variational, variational.c): the domains, sizes and grids (rows) in
  * comma-separated lists (NULL: all), runs capped at `cap` CPU seconds. */

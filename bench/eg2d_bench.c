@@ -15,6 +15,7 @@
  *   eg2d_bench --march       the hyperbolic march: NACA 0012 O-grid 257x129 to 100 chords
  *   eg2d_bench --wall        wall-resolved NACA 0012 O-grids: wall control, hybrid layer, march
  *   eg2d_bench --internal    wall-resolved internal flows (TMR flat plate, bump, bend, diffuser, pipe, cavity)
+ *   eg2d_bench --blocks      a set of blocks (a backward-facing step) against one block of as many nodes (blocks.c)
  *   eg2d_bench --variational [--cases LIST] [--sizes LIST] [--grids LIST] [--cap S]
  *                            EG2D_SYSTEM_VARIATIONAL (V = aA + bS + cO + dW) against Winslow on
  *                            the course notes' domains at 65, 129, 257 (variational.c)
@@ -283,7 +284,7 @@ static void usage(void) {
     fprintf(stderr, "usage: eg2d_bench [--cases LIST] [--sizes LIST] [--solvers LIST (name or name:omega)]\n"
                     "                  [--system winslow|laplace] [--tolerance T] [--cap CPU-SECONDS]\n"
                     "                  [--repeats N] [--json FILE]\n"
-                    "                  [--compare | --ogrid | --march | --wall | --internal | --variational]\n"
+                    "                  [--compare | --ogrid | --march | --wall | --internal | --blocks | --variational]\n"
                     "       eg2d_bench --sweep [--repeats N (3)] [--svg FILE]\n"
                     "       eg2d_bench --quick [--repeats N] [--json FILE]   (a subset in about 20 s)\n");
 }
@@ -322,6 +323,10 @@ int main(int argc, char **argv) {
         }
         if (!strcmp(opt, "--internal")) {
             bench_internal();
+            return 0;
+        }
+        if (!strcmp(opt, "--blocks")) {
+            bench_blocks();
             return 0;
         }
         if (!strcmp(opt, "--wall")) {

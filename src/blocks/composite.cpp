@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "generator/generator.hpp"
 #include "operator/operator.hpp"
@@ -94,6 +95,33 @@ double Composite::residual(System system, double extent) const {
             }
     }
     return extent > 0.0 ? worst / extent : worst;
+}
+
+void Composite::save() {
+    saved_x_.resize(blocks_.size());
+    saved_y_.resize(blocks_.size());
+    for (std::size_t b = 0; b < blocks_.size(); ++b) {
+        saved_x_[b] = blocks_[b].x;  // capacity kept: no allocation after the first sweep
+        saved_y_[b] = blocks_[b].y;
+    }
+}
+
+void Composite::restore() {
+    for (std::size_t b = 0; b < blocks_.size(); ++b) {
+        blocks_[b].x = saved_x_[b];
+        blocks_[b].y = saved_y_[b];
+    }
+}
+
+double Composite::move() const {
+    double m = 0.0;
+    for (std::size_t b = 0; b < blocks_.size(); ++b)
+        for (std::size_t k = 0; k < blocks_[b].x.size(); ++k) {
+            const double d = std::max(std::fabs(blocks_[b].x[k] - saved_x_[b][k]), std::fabs(blocks_[b].y[k] - saved_y_[b][k]));
+            if (!std::isfinite(d)) return std::numeric_limits<double>::infinity();
+            m = std::max(m, d);
+        }
+    return m;
 }
 
 bool Composite::finite() const {

@@ -37,6 +37,11 @@ public:
     // Block b's coordinates (ni*nj, Fortran order) into x, y.
     void extract(int b, std::vector<double> &x, std::vector<double> &y) const;
     long unknowns() const { return unknowns_; }
+    // For a guarded sweep: keep the coordinates, put them back, and the
+    // largest coordinate change since save() (inf if any is not finite).
+    void save();
+    void restore();
+    double move() const;
 
 private:
     enum Role : char { kHeld = 0, kUnknown = 1, kCopy = 2, kHalo = 3 };
@@ -61,6 +66,7 @@ private:
         blocks_[static_cast<std::size_t>(l.to)].y[l.dst] = blocks_[static_cast<std::size_t>(l.from)].y[l.src];
     }
     std::vector<Block> blocks_;
+    std::vector<std::vector<double>> saved_x_, saved_y_;
     std::vector<Link> copies_, halos_;  // copies first: a halo may read a copy
     long unknowns_ = 0;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "base/error.hpp"
@@ -9,6 +10,7 @@
 #include "blocks/composite.hpp"
 #include "generator/generator.hpp"
 #include "generator/stall_watch.hpp"
+#include "solvers/auto_relaxation.hpp"
 
 namespace eg2d {
 
@@ -58,20 +60,45 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
         window = std::max(500L, 2L * static_cast<long>(std::sqrt(static_cast<double>(run.unknowns)) + longest));
     }
     StallWatch watch(window);
+    // Automatic: the point solvers' guarded ramp (solvers/auto_relaxation.hpp)
+    // from Gauss-Seidel to the target over its ramp, a sweep that moves the
+    // grid more than kJump times the last one undone and redone with half
+    // the over-relaxation: a fixed factor near 2 blows up on a TFI start.
+    const bool automatic = !(s.relaxation > 0.0);
+    const long ramp = automatic ? AutoRelaxation::ramp_for(run.omega) : 0;
+    double share = 1.0, last_move = std::numeric_limits<double>::infinity();
+    constexpr double kJump = 3.0;
     run.residual = c.residual(system, extent);
+    double best = run.residual;
     while (run.residual > s.tolerance) {
         if (run.iterations >= limit) {
             write_back(set, c, run.iterations);
             fail(Failure::NotConverged, format("the set reached the iteration limit (%ld) at residual %.3g (tolerance %.3g)",
                                                limit, run.residual, s.tolerance));
         }
-        c.sweep(system, run.omega);
+        auto factor = [&] {
+            if (!automatic) return run.omega;
+            const double r = ramp > 0 ? std::min(1.0, static_cast<double>(run.iterations + 1) / static_cast<double>(ramp)) : 1.0;
+            return 1.0 + share * r * (run.omega - 1.0);
+        };
+        c.save();
+        c.sweep(system, factor());
+        double m = c.move();
+        if (automatic && !(m <= kJump * last_move) && run.iterations > 0) {
+            c.restore();
+            share *= 0.5;
+            c.sweep(system, factor());
+            m = c.move();
+        }
+        last_move = m;
         ++run.iterations;
         run.residual = c.residual(system, extent);
-        if (!std::isfinite(run.residual) || !c.finite())
-            fail(Failure::Diverged, format("the set diverged at iteration %ld (SOR factor %.4g): the blocks are "
-                                           "unchanged; a smaller EG2D_PARAM_RELAXATION on block 0 may converge",
-                                           run.iterations, run.omega));
+        if (!std::isfinite(run.residual) || !c.finite() ||
+            (run.residual > s.divergence_factor * best && run.residual > 1e-2))  // the generator's floor
+            fail(Failure::Diverged, format("the set diverged at iteration %ld (residual %.3g, best %.3g; SOR factor "
+                                           "%.4g): the blocks are unchanged; a smaller EG2D_PARAM_RELAXATION on "
+                                           "block 0 may converge", run.iterations, run.residual, best, factor()));
+        best = std::min(best, run.residual);
         if (watch.stalled(run.iterations, run.residual, 0.0)) {
             write_back(set, c, run.iterations);
             fail(Failure::NotConverged, format("the set made no progress in %ld iterations (residual %.3g, best %.3g, "

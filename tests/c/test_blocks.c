@@ -1,7 +1,7 @@
 /* Sets of blocks (eg2d_blocks_*): a set that covers a single block's domain
  * solves to that block's grid, whichever way its blocks are turned; the
  * set's errors name the thing; a backward-facing step in three blocks
- * solves without folds and without kinks at its joins. */
+ * (block_domains.h) solves without folds and without kinks at its joins. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -12,6 +12,7 @@
 
 #include <cmocka.h>
 
+#include "block_domains.h"
 #include "eg2d.h"
 
 /* The reference domain: 0 <= x <= 2 over a bump b(x) up to y = 1, NI x NJ
@@ -192,45 +193,14 @@ static void test_errors(void **state) {
     expect(eg2d_blocks_check(NULL), EG2D_ERR_ARGUMENT, NULL, "set is NULL");
 }
 
-/* A backward-facing step with Driver & Seegmiller's expansion (step height
- * 1, upstream channel 8, downstream 9; the lengths shortened to 4 and 20
- * step heights): the upstream channel, the channel above the step's height
- * downstream and the step's own channel below it, walls clustered. */
-static double tanh_cluster(double s, double beta) { return 1.0 + tanh(beta * (s - 1.0)) / tanh(beta); }
-static double both_ends(double s, double beta) { return 0.5 * tanh_cluster(2.0 * s, beta) * (s <= 0.5) + (s > 0.5) * (1.0 - 0.5 * tanh_cluster(2.0 * (1.0 - s), beta)); }
-
-static eg2d_grid *rectangle(int ni, int nj, double x0, double x1, double y0, double y1, int cluster_x, int cluster_y) {
-    eg2d_grid *g;
-    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
-    double *x = calloc((size_t)(ni * nj), sizeof(double)), *y = calloc((size_t)(ni * nj), sizeof(double));
-    for (int j = 0; j < nj; ++j)
-        for (int i = 0; i < ni; ++i) {
-            const double s = (double)i / (ni - 1), t = (double)j / (nj - 1);
-            /* cluster_x: 1 towards x1 (the step), -1 towards x0 (the step); cluster_y: both walls */
-            const double sx = cluster_x > 0 ? tanh_cluster(s, 2.0) : cluster_x < 0 ? 1.0 - tanh_cluster(1.0 - s, 2.0) : s;
-            const double ty = cluster_y ? both_ends(t, 2.5) : t;
-            x[i + ni * j] = x0 + (x1 - x0) * sx;
-            y[i + ni * j] = y0 + (y1 - y0) * ty;
-        }
-    assert_int_equal(eg2d_set_boundary(g, x, y), EG2D_OK);
-    free(x), free(y);
-    return g;
-}
-
 static void test_backward_facing_step(void **state) {
     (void)state;
-    eg2d_grid *up = rectangle(25, 41, -4.0, 0.0, 1.0, 9.0, 1, 1);
-    eg2d_grid *above = rectangle(81, 41, 0.0, 20.0, 1.0, 9.0, -1, 1);
-    eg2d_grid *below = rectangle(81, 17, 0.0, 20.0, 0.0, 1.0, -1, 1);
+    eg2d_grid *grids[3];
     eg2d_blocks *set;
-    int b, iterations;
+    int iterations;
     double residual, before_at, before_near, at, near;
-    assert_int_equal(eg2d_blocks_create(&set), EG2D_OK);
-    assert_int_equal(eg2d_blocks_add(set, up, &b), EG2D_OK);
-    assert_int_equal(eg2d_blocks_add(set, above, &b), EG2D_OK);
-    assert_int_equal(eg2d_blocks_add(set, below, &b), EG2D_OK);
-    assert_int_equal(eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, 40, 1, EG2D_SIDE_IMIN, 0, 40), EG2D_OK);
-    assert_int_equal(eg2d_blocks_join(set, 1, EG2D_SIDE_JMIN, 0, 80, 2, EG2D_SIDE_JMAX, 0, 80), EG2D_OK);
+    assert_int_equal(step_blocks(25, 81, 41, 17, grids, &set), EG2D_OK);
+    eg2d_grid *up = grids[0], *above = grids[1], *below = grids[2];
     for (int k = 0; k < 3; ++k) {
         eg2d_grid *g = k == 0 ? up : k == 1 ? above : below;
         assert_int_equal(eg2d_initialize(g, EG2D_INIT_TFI), EG2D_OK);
