@@ -1,11 +1,14 @@
-/* Sets of blocks against one block of the same nodes (eg2d_bench --blocks):
- * the backward-facing step of tests/support/block_domains.h in three
- * blocks, solved as one grid by eg2d_blocks_solve (point SOR over the set),
- * beside a single rectangular block (no step) with as many nodes solved by point SOR
- * (EG2D_SOLVER_PSOR, automatic factor) and by multigrid, Winslow,
- * residual 1e-10. Columns: sweeps or cycles, CPU seconds (median of 3) and
- * CPU per node and iteration over the single block's PSOR, the turns at the
- * joins against nearby. */
+/* Sets of blocks against single blocks (eg2d_bench --blocks), Winslow,
+ * residual 1e-10, CPU seconds the median of 3:
+ *   bump  the bump domain of tests/support/block_domains.h as one block and
+ *         as two blocks joined down its middle: the same problem, so the
+ *         set's multigrid against the single block's (cycles, CPU per node);
+ *   step  the backward-facing step in three blocks (block_domains.h), and
+ *         a rectangle over its extent with as many nodes in one block (no
+ *         step: an easier problem with the same unknowns per cycle).
+ * Point SOR rows at the smallest size only (thousands of sweeps above). The
+ * last column: the largest turn of a grid line at the joins against the
+ * largest one node into either block. */
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -17,67 +20,99 @@ static int by_value(const void *a, const void *b) {
     return x < y ? -1 : x > y;
 }
 
-/* One run: the set (solver < 0) or the single block with that solver. */
-static double run_once(int ni_up, int ni_down, int nj_upper, int nj_lower, int solver, int *iterations, double *at,
-                       double *near) {
-    double t0, t;
-    *at = *near = -1.0;
-    if (solver < 0) {
-        eg2d_grid *grids[3];
-        eg2d_blocks *set;
-        if (step_blocks(ni_up, ni_down, nj_upper, nj_lower, grids, &set)) return -1.0;
-        eg2d_set_tolerance(grids[0], 1e-10);
-        t0 = bench_cpu();
-        const int rc = eg2d_blocks_solve(set);
-        t = bench_cpu() - t0;
-        eg2d_blocks_get_run(set, iterations, NULL, NULL);
-        eg2d_blocks_get_kinks(set, at, near);
-        if (rc) printf("<!-- the set: %s -->\n", eg2d_blocks_last_error(set));
-        eg2d_blocks_destroy(set);
-        for (int k = 0; k < 3; ++k) eg2d_destroy(grids[k]);
-        return rc ? -1.0 : t;
+typedef enum { BUMP_SET, BUMP_ONE, STEP_SET, STEP_RECTANGLE } shape;
+
+typedef struct {
+    int iterations;
+    double cpu, at, near;
+    long nodes;
+} outcome;
+
+static void identity(int i, int j, int *I, int *J, const int *p) { (void)p, *I = i, *J = j; }
+
+/* One run of shape s at size z (bump: ni, nj; step: ni_up, ni_down, nj_upper, nj_lower). */
+static int run_once(shape s, const int *z, int solver, outcome *o) {
+    eg2d_grid *grids[3] = {NULL, NULL, NULL}, *one = NULL;
+    eg2d_blocks *set = NULL;
+    int rc, n = 0;
+    o->at = o->near = -1.0;
+    switch (s) {
+    case BUMP_SET: rc = bump_halves(z[0], z[1], (z[0] - 1) / 2, grids, &set), n = 2; break;
+    case STEP_SET: rc = step_blocks(z[0], z[1], z[2], z[3], grids, &set), n = 3; break;
+    case BUMP_ONE: rc = bump_block(z[0], z[1], z[0], z[1], identity, NULL, &one); break;
+    default: rc = block_rectangle(z[0] + z[1] - 1, z[2] + z[3] - 1, -4.0, 20.0, 0.0, 9.0, 0, 1, &one); break;
     }
-    /* The single block: a rectangle over the step's extent with as many nodes
-     * (no step: an easier problem, the same unknowns per sweep). */
-    eg2d_grid *g;
-    const int ni = ni_up + ni_down - 1, nj = nj_upper + nj_lower - 1;
-    if (block_rectangle(ni, nj, -4.0, 20.0, 0.0, 9.0, 0, 1, &g)) return -1.0;
-    eg2d_set_tolerance(g, 1e-10);
-    eg2d_set_solver(g, solver);
-    t0 = bench_cpu();
-    const int rc = eg2d_solve(g);
-    t = bench_cpu() - t0;
-    eg2d_get_iterations(g, iterations);
-    eg2d_destroy(g);
-    return rc ? -1.0 : t;
+    eg2d_grid *first = set ? grids[0] : one;
+    if (!rc) rc = eg2d_set_tolerance(first, 1e-10);
+    if (!rc) rc = eg2d_set_solver(first, solver);
+    const double t0 = bench_cpu();
+    if (!rc) rc = set ? eg2d_blocks_solve(set) : eg2d_solve(one);
+    o->cpu = bench_cpu() - t0;
+    if (rc) printf("<!-- %s -->\n", set ? eg2d_blocks_last_error(set) : eg2d_last_error(one));
+    o->nodes = 0;
+    for (int k = 0; k < (set ? n : 1); ++k) {
+        int ni = 0, nj = 0;
+        eg2d_get_size(set ? grids[k] : one, &ni, &nj);
+        o->nodes += (long)ni * nj;
+    }
+    if (set) {
+        eg2d_blocks_get_run(set, &o->iterations, NULL, NULL);
+        eg2d_blocks_get_kinks(set, &o->at, &o->near);
+    } else {
+        eg2d_get_iterations(one, &o->iterations);
+    }
+    eg2d_blocks_destroy(set);
+    for (int k = 0; k < 3; ++k) eg2d_destroy(grids[k]);
+    eg2d_destroy(one);
+    return rc;
+}
+
+static outcome median(shape s, const int *z, int solver) {
+    outcome o[3];
+    double t[3];
+    for (int r = 0; r < 3; ++r) {
+        if (run_once(s, z, solver, &o[r])) o[r].cpu = -1.0;
+        t[r] = o[r].cpu;
+    }
+    qsort(t, 3, sizeof t[0], by_value);
+    o[0].cpu = t[1];
+    return o[0];
+}
+
+static void row(const char *name, const outcome *o, const outcome *ref) {
+    char turns[64] = "";
+    if (o->at >= 0) snprintf(turns, sizeof turns, "%.2f / %.2f", o->at, o->near);
+    const double per = o->cpu / ((double)o->nodes * (o->iterations > 0 ? o->iterations : 1));
+    const double per_ref = ref->cpu / ((double)ref->nodes * (ref->iterations > 0 ? ref->iterations : 1));
+    printf("| %ld | %s | %d | %.2f | %.3f | %.2f | %s |\n", o->nodes, name, o->iterations,
+           (double)o->iterations / ref->iterations, o->cpu, per / per_ref, turns);
 }
 
 void bench_blocks(void) {
-    static const int sizes[][4] = {{25, 81, 41, 17}, {49, 161, 81, 33}, {97, 321, 161, 65}};
-    static const struct {
-        const char *name;
-        int solver;
-    } ways[] = {{"set of 3 blocks, point SOR", -1}, {"one block, point SOR", EG2D_SOLVER_PSOR},
-                {"one block, multigrid", EG2D_SOLVER_MULTIGRID}};
-    printf("| nodes | grid | sweeps or cycles | CPU s | CPU per node and iteration / one block's PSOR | turn at joins / nearby (deg) |\n");
-    printf("|---:|---|---:|---:|---:|---|\n");
-    for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; ++s) {
-        const int *z = sizes[s];
-        const long nodes = (long)(z[0] + z[1] - 1) * (z[2] + z[3] - 1);
-        double per[3], cpu[3], at = -1, near = -1;
-        int its[3];
-        for (size_t w = 0; w < 3; ++w) {
-            double t[3];
-            its[w] = 0;
-            for (int r = 0; r < 3; ++r) t[r] = run_once(z[0], z[1], z[2], z[3], ways[w].solver, &its[w], w == 0 ? &at : &(double){0}, w == 0 ? &near : &(double){0});
-            qsort(t, 3, sizeof t[0], by_value);
-            cpu[w] = t[1];
-            per[w] = t[1] / ((double)nodes * (its[w] > 0 ? its[w] : 1));
+    static const int bumps[][2] = {{129, 65}, {257, 129}, {513, 257}};
+    static const int steps[][4] = {{25, 81, 41, 17}, {49, 161, 81, 33}, {97, 321, 161, 65}};
+    printf("| nodes | grid | iterations | / one block's | CPU s | CPU per node and iteration / one block's | turn at joins / nearby (deg) |\n");
+    printf("|---:|---|---:|---:|---:|---:|---|\n");
+    for (int k = 0; k < 3; ++k) {
+        const outcome one = median(BUMP_ONE, bumps[k], EG2D_SOLVER_MULTIGRID);
+        const outcome set = median(BUMP_SET, bumps[k], EG2D_SOLVER_MULTIGRID);
+        row("bump, one block, multigrid", &one, &one);
+        row("bump, two blocks, multigrid", &set, &one);
+        if (k == 0) {
+            const outcome sor1 = median(BUMP_ONE, bumps[k], EG2D_SOLVER_PSOR);
+            const outcome sor2 = median(BUMP_SET, bumps[k], EG2D_SOLVER_PSOR);
+            row("bump, one block, point SOR", &sor1, &sor1);
+            row("bump, two blocks, point SOR", &sor2, &sor1);
         }
-        for (size_t w = 0; w < 3; ++w) {
-            char turns[64] = "";
-            if (w == 0) snprintf(turns, sizeof turns, "%.2f / %.2f", at, near);
-            printf("| %ld | %s | %d | %.3f | %.2f | %s |\n", nodes, ways[w].name, its[w], cpu[w], per[w] / per[1], turns);
+    }
+    for (int k = 0; k < 3; ++k) {
+        const outcome one = median(STEP_RECTANGLE, steps[k], EG2D_SOLVER_MULTIGRID);
+        const outcome set = median(STEP_SET, steps[k], EG2D_SOLVER_MULTIGRID);
+        row("rectangle, one block, multigrid", &one, &one);
+        row("step, three blocks, multigrid", &set, &one);
+        if (k == 0) {
+            const outcome sor = median(STEP_SET, steps[k], EG2D_SOLVER_PSOR);
+            row("step, three blocks, point SOR", &sor, &one);
         }
     }
 }

@@ -25,11 +25,25 @@ Connectivity Connectivity::with_fixed(const std::vector<int> &columns, const std
     Connectivity c(*this);
     c.fixed_i_.clear();
     c.fixed_j_.clear();
+    c.fixed_mask_.clear();
     if (columns.empty() && rows.empty()) return c;
     c.fixed_i_.assign(static_cast<std::size_t>(ni_), 0);
     c.fixed_j_.assign(static_cast<std::size_t>(nj_), 0);
     for (int i : columns) c.fixed_i_[static_cast<std::size_t>(i)] = 1;
     for (int j : rows) c.fixed_j_[static_cast<std::size_t>(j)] = 1;
+    c.fixed_mask_.assign(static_cast<std::size_t>(ni_) * static_cast<std::size_t>(nj_), 0);
+    for (int j = 0; j < nj_; ++j)
+        for (int i = 0; i < ni_; ++i)
+            c.fixed_mask_[static_cast<std::size_t>(i) + static_cast<std::size_t>(ni_) * static_cast<std::size_t>(j)] =
+                static_cast<char>(c.fixed_i_[static_cast<std::size_t>(i)] | c.fixed_j_[static_cast<std::size_t>(j)]);
+    return c;
+}
+
+Connectivity Connectivity::with_fixed_nodes(const std::vector<char> &mask) const {
+    Connectivity c(*this);
+    if (c.fixed_mask_.empty()) c.fixed_mask_.assign(mask.size(), 0);
+    for (std::size_t k = 0; k < mask.size(); ++k)
+        if (mask[k]) c.fixed_mask_[k] = 1;
     return c;
 }
 

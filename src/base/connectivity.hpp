@@ -72,6 +72,7 @@ public:
         c.j_first_ = rows + 1;
         c.fixed_i_ = fixed_i_;
         c.fixed_j_ = fixed_j_;
+        c.fixed_mask_ = fixed_mask_;
         return c;
     }
     // The same grid with interior lines held fixed (eg2d_set_interior_line):
@@ -80,11 +81,13 @@ public:
     // diagonal and no coupling, so every point, line and ILU kernel leaves
     // them where they are while their neighbours see them as boundary.
     Connectivity with_fixed(const std::vector<int> &columns, const std::vector<int> &rows) const;
-    bool has_fixed() const { return !fixed_i_.empty(); }
-    bool fixed(int i, int j) const { return has_fixed() && (fixed_i_[static_cast<std::size_t>(i)] || fixed_j_[static_cast<std::size_t>(j)]); }
-    bool fixed_node(std::ptrdiff_t k) const {
-        return has_fixed() && fixed(static_cast<int>(k % ni_), static_cast<int>(k / ni_));
-    }
+    // The same with single nodes held too (mask: ni*nj, nonzero = held): a
+    // set of blocks' joined nodes that another block solves, its vertices
+    // and the boundary's nodes in the unknowns' rectangle (blocks/composite).
+    Connectivity with_fixed_nodes(const std::vector<char> &mask) const;
+    bool has_fixed() const { return !fixed_mask_.empty(); }
+    bool fixed(int i, int j) const { return has_fixed() && fixed_mask_[static_cast<std::size_t>(i) + static_cast<std::size_t>(ni_) * static_cast<std::size_t>(j)]; }
+    bool fixed_node(std::ptrdiff_t k) const { return has_fixed() && fixed_mask_[static_cast<std::size_t>(k)]; }
     // The fixed columns and rows in increasing order.
     std::vector<int> fixed_columns() const { return marked(fixed_i_); }
     std::vector<int> fixed_rows() const { return marked(fixed_j_); }
@@ -131,6 +134,7 @@ private:
     int j_first_ = 1;
     std::vector<Node> extra_;
     std::vector<char> fixed_i_, fixed_j_;  // per column / row: held fixed (both empty: none)
+    std::vector<char> fixed_mask_;         // per node: the rows', columns' and single nodes' (empty: none)
     static std::vector<int> marked(const std::vector<char> &m);
 };
 

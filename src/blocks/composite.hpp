@@ -1,10 +1,13 @@
-// A set of blocks as one grid for the solver: each block's coordinates with
+// A set of blocks as one grid for the solvers: each block's coordinates with
 // a ring of halo nodes round it, which hold the nodes across its joins, so
 // that a joined side's nodes have the whole nine-point stencil of an
 // interior node (the stencil spans both blocks) and the operator
-// (operator.hpp) is used unchanged. A joined side's node is solved by one
-// block (the first of its join) and copied into the other; the halos are
-// copied from the nodes one line into the neighbouring block.
+// (operator.hpp) and the single-block kernels (the ILU sweep) run unchanged
+// on each block. A joined side's node is solved by one block (the first of
+// its join) and copied into the other; the halos are copied from the nodes
+// one line into the neighbouring block. Every node a block does not solve
+// (its boundary, the copies, the vertices) is a held node of its
+// connectivity (Connectivity::with_fixed_nodes): an identity row.
 //
 // Vertices (the end nodes of a join: where three, four or five blocks meet,
 // or a join meets the domain's boundary) are held where the blocks'
@@ -17,18 +20,50 @@
 
 #include "base/connectivity.hpp"
 #include "blocks/block_set.hpp"
+#include "operator/operator.hpp"
 #include "operator/system.hpp"
+#include "solvers/multigrid_ilu.hpp"
 
 namespace eg2d {
 
+struct BlockShape {
+    int ni, nj;
+};
+
 class Composite {
 public:
+    // The blocks' shapes and joins, coordinates 0.
+    Composite(const std::vector<BlockShape> &shapes, const std::vector<Join> &joins);
     // From the blocks' current coordinates.
-    explicit Composite(const BlockSet &set);
+    static Composite of(const BlockSet &set);
+
+    // Every block has an even number of cells each way (at least 4) and
+    // every join's ends are even nodes: the set coarsens by two.
+    bool coarsenable() const;
+    // Every other node of each block, the joins halved; coordinates sampled.
+    Composite coarsened() const;
+    // Coordinates sampled from `fine` (of which this is coarsened()), halos synced.
+    void sample(const Composite &fine);
 
     // One Gauss-Seidel/SOR sweep over every block's unknowns, the copies
     // and halos brought up to date after each block.
     void sweep(System system, double omega);
+    // The multigrid smoother: on each block the ILU sweep in both orderings
+    // (solvers/multigrid_ilu.hpp), then its copies and halos.
+    void smooth(System system);
+    // R = L(r) - f at every unknown into the residual fields (0 elsewhere),
+    // copies and halos synced so a restriction reads across the joins.
+    void compute_residual(System system);
+    // FAS: this coarse level's right-hand side f = L(r) - s FW(R_fine) at
+    // its unknowns (r: its coordinates as sampled), s the operator's scale
+    // under coarsening by two (Laplace 4, Winslow 16); keeps r as r0.
+    void restrict_from(System system, const Composite &fine);
+    // fine += the bilinear interpolation of (r - r0) at fine's unknowns.
+    void prolong_to(Composite &fine) const;
+    // Full multigrid's start on a coarse level: its own problem (f = 0),
+    // r0 the coordinates as they are (sampled from the start).
+    void start_fmg();
+
     // NUMERICS.md's residual over every unknown, over `extent`.
     double residual(System system, double extent) const;
     // Every copy and halo from its source.
@@ -37,6 +72,7 @@ public:
     // Block b's coordinates (ni*nj, Fortran order) into x, y.
     void extract(int b, std::vector<double> &x, std::vector<double> &y) const;
     long unknowns() const { return unknowns_; }
+    long nodes() const;
     // For a guarded sweep: keep the coordinates, put them back, and the
     // largest coordinate change since save() (inf if any is not finite).
     void save();
@@ -47,12 +83,14 @@ private:
     enum Role : char { kHeld = 0, kUnknown = 1, kCopy = 2, kHalo = 3 };
     struct Block {
         int ni, nj;
-        Connectivity conn;  // (ni+2) x (nj+2), single block
-        std::vector<double> x, y;
+        Connectivity conn;  // (ni+2) x (nj+2), single block, every node not solved here held
+        std::vector<double> x, y, fx, fy, rx, ry, x0, y0;  // fx, fy, x0, y0: coarse levels only
         std::vector<char> role;
+        IluWork ilu;
         std::size_t at(int i, int j) const {  // block node (i, j), -1 <= i <= ni
             return static_cast<std::size_t>(i + 1) + static_cast<std::size_t>(ni + 2) * static_cast<std::size_t>(j + 1);
         }
+        Level level() const;
     };
     // Node `dst` of block `to` holds node `src` of block `from`.
     struct Link {
@@ -61,14 +99,19 @@ private:
         int to;
         std::size_t dst;
     };
-    void copy(const Link &l) {
-        blocks_[static_cast<std::size_t>(l.to)].x[l.dst] = blocks_[static_cast<std::size_t>(l.from)].x[l.src];
-        blocks_[static_cast<std::size_t>(l.to)].y[l.dst] = blocks_[static_cast<std::size_t>(l.from)].y[l.src];
+    using Field = std::vector<double> Block::*;
+    void copy(const Link &l, Field f) {
+        (blocks_[static_cast<std::size_t>(l.to)].*f)[l.dst] = (blocks_[static_cast<std::size_t>(l.from)].*f)[l.src];
     }
+    void sync(Field a, Field b);
+    // After block b moved: its copies, then the halos that read it or a copy.
+    void sync_from(std::size_t b);
+    std::vector<BlockShape> shapes_;
+    std::vector<Join> joins_;
     std::vector<Block> blocks_;
-    std::vector<std::vector<double>> saved_x_, saved_y_;
     std::vector<Link> copies_, halos_;  // copies first: a halo may read a copy
     long unknowns_ = 0;
+    std::vector<std::vector<double>> saved_x_, saved_y_;
 };
 
 }  // namespace eg2d

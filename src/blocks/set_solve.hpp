@@ -1,6 +1,7 @@
-// Solving a set of blocks as one grid (composite.hpp): the blocks' own
-// settings (block 0's tolerance, iteration limit, stall window and
-// relaxation), point SOR over the set, each block's grid receiving its part.
+// Solving a set of blocks as one grid (composite.hpp) with block 0's
+// solver (multigrid over the set, set_multigrid.hpp, or point SOR) and
+// settings (tolerance, iteration limit, stall window, relaxation, the
+// multigrid cycle), each block's grid receiving its part.
 #pragma once
 #include <functional>
 #include <string>
@@ -13,7 +14,8 @@ struct SetRun {
     long iterations = 0;
     double residual = 0.0;
     long unknowns = 0;
-    double omega = 0.0;
+    double omega = 0.0;  // point SOR's factor at the start (multigrid: 1)
+    int levels = 1;      // multigrid's levels over the set
     std::string note;  // how the run ended, for the API's events
 };
 

@@ -42,3 +42,45 @@ int step_blocks(int ni_up, int ni_down, int nj_upper, int nj_lower, eg2d_grid *g
         return rc;
     return eg2d_blocks_join(*set, 1, EG2D_SIDE_JMIN, 0, ni_down - 1, 2, EG2D_SIDE_JMAX, 0, ni_down - 1);
 }
+
+void bump_point(int ni, int nj, int I, int J, double *x, double *y) {
+    const double s = (double)J / (nj - 1);
+    *x = 2.0 * I / (ni - 1);
+    const double b = 0.25 * exp(-12.0 * (*x - 0.7) * (*x - 0.7));
+    *y = b + (1.0 - b) * s * s;
+}
+
+int bump_block(int ni, int nj, int bni, int bnj, block_map map, const int *p, eg2d_grid **grid) {
+    int rc = eg2d_create(bni, bnj, grid);
+    for (int side = 0; !rc && side < 4; ++side) {
+        const int n = (side == EG2D_SIDE_JMIN || side == EG2D_SIDE_JMAX) ? bni : bnj;
+        double *x = malloc(sizeof(double) * (size_t)n), *y = malloc(sizeof(double) * (size_t)n);
+        if (!x || !y) rc = EG2D_ERR_MEMORY;
+        for (int q = 0; !rc && q < n; ++q) {
+            int i = q, j = 0, I, J;
+            if (side == EG2D_SIDE_JMAX) j = bnj - 1;
+            if (side == EG2D_SIDE_IMIN) i = 0, j = q;
+            if (side == EG2D_SIDE_IMAX) i = bni - 1, j = q;
+            map(i, j, &I, &J, p);
+            bump_point(ni, nj, I, J, &x[q], &y[q]);
+        }
+        if (!rc) rc = eg2d_set_side(*grid, side, x, y);
+        free(x);
+        free(y);
+    }
+    return rc;
+}
+
+static void shifted(int i, int j, int *I, int *J, const int *p) { *I = i + p[0], *J = j; }
+
+int bump_halves(int ni, int nj, int mid, eg2d_grid *grids[2], eg2d_blocks **set) {
+    const int zero = 0;
+    int rc, b;
+    grids[0] = grids[1] = NULL;
+    *set = NULL;
+    if ((rc = bump_block(ni, nj, mid + 1, nj, shifted, &zero, &grids[0])) ||
+        (rc = bump_block(ni, nj, ni - mid, nj, shifted, &mid, &grids[1])) || (rc = eg2d_blocks_create(set)) ||
+        (rc = eg2d_blocks_add(*set, grids[0], &b)) || (rc = eg2d_blocks_add(*set, grids[1], &b)))
+        return rc;
+    return eg2d_blocks_join(*set, 0, EG2D_SIDE_IMAX, 0, nj - 1, 1, EG2D_SIDE_IMIN, 0, nj - 1);
+}

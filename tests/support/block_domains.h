@@ -18,4 +18,16 @@ int step_blocks(int ni_up, int ni_down, int nj_upper, int nj_lower, eg2d_grid *g
 int block_rectangle(int ni, int nj, double x0, double x1, double y0, double y1, int cluster_x, int cluster_y,
                     eg2d_grid **grid);
 
+/* The bump domain: 0 <= x <= 2 over a bump (height 0.25 at x = 0.7) up to
+ * y = 1, ni x nj nodes, rows clustered towards the bump. bump_point gives
+ * its node (I, J) on the boundary and on any column (the start of a join
+ * along a column). A block of it: node (i, j) of the block is node
+ * map(i, j) of the domain (the block's sides from bump_point). */
+typedef void (*block_map)(int i, int j, int *I, int *J, const int *p);
+void bump_point(int ni, int nj, int I, int J, double *x, double *y);
+int bump_block(int ni, int nj, int bni, int bnj, block_map map, const int *p, eg2d_grid **grid);
+/* The bump domain ni x nj as two blocks split at column mid (the left
+ * 0..mid, the right mid..ni-1), joined; grids[2] receive them. */
+int bump_halves(int ni, int nj, int mid, eg2d_grid *grids[2], eg2d_blocks **set);
+
 #endif

@@ -1,0 +1,60 @@
+#include "blocks/set_multigrid.hpp"
+
+namespace eg2d {
+
+namespace {
+// The coarsest level: sweeps until its residual falls by this, at most kCoarseSweeps.
+constexpr double kCoarseReduction = 1e-3;
+constexpr int kCoarseSweeps = 50;
+}  // namespace
+
+SetMultigrid::SetMultigrid(const Composite &fine) {
+    const Composite *c = &fine;
+    while (c->coarsenable()) {
+        coarse_.push_back(c->coarsened());
+        c = &coarse_.back();
+    }
+}
+
+void SetMultigrid::cycle(System system, Composite &fine, int index, int pre, int post) {
+    cycle(system, fine, 0, index, pre, post);
+}
+
+void SetMultigrid::solve_coarsest(System system, Composite &c) const {
+    const double r0 = c.residual(system, 0.0);
+    for (int s = 0; s < kCoarseSweeps && c.residual(system, 0.0) > kCoarseReduction * r0; ++s) c.smooth(system);
+}
+
+void SetMultigrid::fmg(System system, Composite &fine, int index, int pre, int post) {
+    if (coarse_.empty()) {
+        cycle(system, fine, 0, index, pre, post);
+        return;
+    }
+    for (std::size_t l = 0; l < coarse_.size(); ++l) {
+        coarse_[l].sample(l == 0 ? fine : coarse_[l - 1]);
+        coarse_[l].start_fmg();
+    }
+    solve_coarsest(system, coarse_.back());
+    for (std::size_t l = coarse_.size(); l-- > 0;) {
+        Composite &finer = l == 0 ? fine : coarse_[l - 1];
+        coarse_[l].prolong_to(finer);
+        cycle(system, finer, l, index, pre, post);
+    }
+}
+
+void SetMultigrid::cycle(System system, Composite &fine, std::size_t level, int index, int pre, int post) {
+    if (level == coarse_.size()) {  // the coarsest level (or a set that does not coarsen)
+        solve_coarsest(system, fine);
+        return;
+    }
+    for (int s = 0; s < pre; ++s) fine.smooth(system);
+    fine.compute_residual(system);
+    Composite &coarse = coarse_[level];
+    coarse.sample(fine);
+    coarse.restrict_from(system, fine);
+    for (int g = 0; g < (level + 1 == coarse_.size() ? 1 : index); ++g) cycle(system, coarse, level + 1, index, pre, post);
+    coarse.prolong_to(fine);
+    for (int s = 0; s < post; ++s) fine.smooth(system);
+}
+
+}  // namespace eg2d

@@ -1,0 +1,34 @@
+// FAS multigrid over a set of blocks (Trottenberg, Oosterlee & Schueller
+// 2001, ch. 5): every level is the whole set coarsened by two (each block
+// and each join halved: Composite::coarsened), so the coarse grids correct
+// the set as one grid and the joins coarsen with it. Smoother: the ILU
+// sweeps of the single-block multigrid on each block in turn, its copies
+// and halos passed on after each block; full weighting across the joins
+// (the residual's halos), bilinear corrections, the coarsest level
+// smoothed to a thousandth of its residual.
+#pragma once
+#include <vector>
+
+#include "blocks/composite.hpp"
+
+namespace eg2d {
+
+class SetMultigrid {
+public:
+    // The levels below `fine` while the set coarsens (Composite::coarsenable).
+    explicit SetMultigrid(const Composite &fine);
+    int levels() const { return static_cast<int>(coarse_.size()) + 1; }
+    // One cycle: index 1 V, 2 W; pre and post smoothing sweeps per level.
+    void cycle(System system, Composite &fine, int index, int pre, int post);
+    // Full multigrid from the start the fine level holds: every level
+    // sampled from it, the coarsest solved, then on each finer level the
+    // coarser one's correction and one cycle (counts as the first cycle).
+    void fmg(System system, Composite &fine, int index, int pre, int post);
+
+private:
+    void solve_coarsest(System system, Composite &c) const;
+    void cycle(System system, Composite &fine, std::size_t level, int index, int pre, int post);
+    std::vector<Composite> coarse_;
+};
+
+}  // namespace eg2d
