@@ -60,7 +60,7 @@
  * 11) Sets of blocks (multi-block): eg2d_blocks_create,
  *     eg2d_blocks_destroy, eg2d_blocks_last_error, eg2d_blocks_add,
  *     eg2d_blocks_join, eg2d_blocks_check, eg2d_blocks_solve,
- *     eg2d_blocks_get_run, eg2d_blocks_get_kinks.
+ *     eg2d_blocks_get_run, eg2d_blocks_get_kinks, eg2d_blocks_write.
  *
  * Introduction
  * ------------
@@ -1216,6 +1216,16 @@ EG2D_API int eg2d_blocks_get_run(const eg2d_blocks *set, int *iterations, double
  * Vertices are left out. EG2D_ERR_STATE unless every block is initialised
  * and the set checks; 0 and 0 for a set without joined nodes. */
 EG2D_API int eg2d_blocks_get_kinks(const eg2d_blocks *set, double *at_joins, double *nearby);
+
+/* Writes the set as one mesh to `path`: the joined nodes one point, the
+ * joins interior faces, the blocks' patches (eg2d_set_patch on each block;
+ * those of the same name one patch, the joined edges in none) the
+ * boundary. Formats: EG2D_FORMAT_SU2 (one zone) and EG2D_FORMAT_OPENFOAM
+ * (a case directory, as eg2d_write makes). Any other format:
+ * EG2D_ERR_UNSUPPORTED naming those (write each block's grid with
+ * eg2d_write). EG2D_ERR_STATE unless the set checks and every block is
+ * initialised; EG2D_ERR_IO as eg2d_write. All or nothing, as eg2d_write. */
+EG2D_API int eg2d_blocks_write(const eg2d_blocks *set, int format, const char *path);
 
 #ifdef __cplusplus
 }

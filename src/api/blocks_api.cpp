@@ -3,6 +3,8 @@
 
 #include "api/blocks_handle.hpp"
 #include "blocks/join_kinks.hpp"
+#include "io/formats.hpp"
+#include "io/unstructured.hpp"
 
 using namespace eg2d;
 using namespace eg2d::api;
@@ -111,6 +113,41 @@ EG2D_API int eg2d_blocks_get_kinks(const eg2d_blocks *set, double *at_joins, dou
         const JoinKinks k = join_kinks(set->set);
         *at_joins = k.at_joins;
         *nearby = k.nearby;
+    });
+}
+
+EG2D_API int eg2d_blocks_write(const eg2d_blocks *set, int file_format, const char *path) {
+    return guard_set(set, "eg2d_blocks_write", [&] {
+        require_ptr(path, "path");
+        set->set.check();
+        const BlockSet &bs = set->set;
+        std::vector<MeshBlock> blocks;
+        long nodes = 0;
+        for (int b = 0; b < bs.size(); ++b) {
+            const Grid &g = bs.block(b)->grid();
+            if (!g.initialized())
+                fail(Failure::State, format("block %d is not initialised (eg2d_initialize or eg2d_blocks_solve)", b));
+            MeshBlock mb{&g, {}};
+            for (int s = 0; s < 4; ++s) mb.joined[static_cast<std::size_t>(s)].assign(static_cast<std::size_t>(g.side_length(Side(s))), 0);
+            blocks.push_back(std::move(mb));
+            nodes += static_cast<long>(g.size());
+        }
+        std::vector<MeshTwin> twins;
+        for (const Join &j : bs.joins()) {
+            const Grid &ga = bs.block(j.a.block)->grid(), &gb = bs.block(j.b.block)->grid();
+            for (int t = 0; t < j.a.count(); ++t) {
+                twins.push_back(MeshTwin{j.a.block, side_node(ga, j.a.side, j.a.at(t)), j.b.block,
+                                         side_node(gb, j.b.side, j.b.at(t))});
+                if (t + 1 < j.a.count()) {  // the edge between nodes t and t+1 of either range
+                    for (const SideRange *r : {&j.a, &j.b}) {
+                        const int q = std::min(r->at(t), r->at(t + 1));
+                        blocks[static_cast<std::size_t>(r->block)].joined[static_cast<std::size_t>(r->side)][static_cast<std::size_t>(q)] = 1;
+                    }
+                }
+            }
+        }
+        const UnstructuredMesh mesh = unstructured_mesh(blocks, twins);
+        write_mesh(mesh, bs.block(0)->settings, format("a set of %d blocks, %ld nodes", bs.size(), nodes), path, file_format);
     });
 }
 

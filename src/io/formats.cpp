@@ -16,7 +16,9 @@ void write_svg(const WriteRequest &r, OutputFile &out);           // svg.cpp
 void write_su2(const WriteRequest &r, OutputFile &out);           // su2.cpp
 void write_report(const WriteRequest &r, OutputFile &out);        // report.cpp
 void write_report_json(const WriteRequest &r, OutputFile &out);
+void write_su2_mesh(const MeshRequest &r, OutputFile &out);
 void write_openfoam(const WriteRequest &r, const std::string &dir);  // openfoam.cpp
+void write_openfoam_mesh(const MeshRequest &r, const std::string &dir);
 
 namespace {
 constexpr int kFormatMask = 0xff;
@@ -24,7 +26,8 @@ constexpr int kPlot3dFlags = EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI | EG2D_PLOT3D_SI
                              EG2D_PLOT3D_NO_MARKERS | EG2D_PLOT3D_EXTRUDED;
 
 // In id order; a format that is a directory of files (an OpenFOAM case) has
-// write_directory instead of write.
+// write_directory instead of write; one written from the unstructured mesh
+// has its mesh writer too (sets of blocks).
 const FileFormat kFormats[] = {
     {EG2D_FORMAT_PLOT3D, "plot3d", ".xyz", kPlot3dFlags, write_plot3d},
     {EG2D_FORMAT_PLOT3D_ASCII, "plot3d-ascii", ".p3d", EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI | EG2D_PLOT3D_EXTRUDED,
@@ -34,8 +37,8 @@ const FileFormat kFormats[] = {
     {EG2D_FORMAT_GMV, "gmv", ".gmv", 0, write_gmv},
     {EG2D_FORMAT_MATLAB, "matlab", ".m", 0, write_matlab},
     {EG2D_FORMAT_SVG, "svg", ".svg", 0, write_svg},
-    {EG2D_FORMAT_SU2, "su2", ".su2", 0, write_su2},
-    {EG2D_FORMAT_OPENFOAM, "openfoam", "_foam", 0, nullptr, write_openfoam},
+    {EG2D_FORMAT_SU2, "su2", ".su2", 0, write_su2, nullptr, write_su2_mesh},
+    {EG2D_FORMAT_OPENFOAM, "openfoam", "_foam", 0, nullptr, write_openfoam, nullptr, write_openfoam_mesh},
     {EG2D_FORMAT_REPORT, "report", ".report.txt", 0, write_report},
     {EG2D_FORMAT_REPORT_JSON, "report-json", ".report.json", 0, write_report_json},
 };
@@ -44,6 +47,28 @@ const FileFormat kFormats[] = {
 Table<FileFormat> format_table() { return table_of(kFormats); }
 
 const FileFormat *find_format(int id) { return format_table().find(id); }
+
+void write_mesh(const UnstructuredMesh &mesh, const Settings &settings, const std::string &title, const char *path,
+                int id) {
+    const FileFormat *f = id >= 0 ? find_format(id) : nullptr;
+    if (!f) fail(Failure::Argument, format("format = %d: no such file format", id));
+    if (!f->write_mesh && !f->write_mesh_directory) {
+        std::string can;
+        for (const FileFormat &k : format_table())
+            if (k.write_mesh || k.write_mesh_directory) can += std::string(can.empty() ? "" : ", ") + k.name;
+        fail(Failure::Unsupported, format("the %s format cannot hold a set of blocks as one mesh (%s can; or write "
+                                          "each block's grid)", f->name, can.c_str()));
+    }
+    if (!*path) fail(Failure::Argument, "path is empty");
+    const MeshRequest r{mesh, settings, title};
+    if (f->write_mesh_directory) {
+        f->write_mesh_directory(r, path);
+        return;
+    }
+    OutputFile out(path);
+    f->write_mesh(r, out);
+    out.commit();
+}
 
 void write_grid(const Grid &grid, const Settings &settings, const char *path, int id, const RunSummary *run) {
     const FileFormat *f = id >= 0 ? find_format(id & kFormatMask) : nullptr;

@@ -25,6 +25,15 @@ struct WriteRequest {
     const RunSummary *run;   // nullptr: not known
 };
 
+struct UnstructuredMesh;
+// A mesh to write: a grid or a set of blocks merged (io/unstructured.hpp),
+// and the line that says what it is ("257 x 129 nodes, C-grid").
+struct MeshRequest {
+    const UnstructuredMesh &mesh;
+    const Settings &settings;
+    const std::string &title;
+};
+
 struct FileFormat {
     int id;                 // EG2D_FORMAT_*
     const char *name;       // list name: "plot3d-ascii"
@@ -34,11 +43,20 @@ struct FileFormat {
     // A format that is a directory of files (an OpenFOAM case): the writer
     // makes the directory and writes each file through an OutputFile.
     void (*write_directory)(const WriteRequest &request, const std::string &directory) = nullptr;
+    // A format written from the grid as an unstructured mesh
+    // (io/unstructured.hpp) writes a set of blocks merged too: these take
+    // the mesh (a file, or a directory of files).
+    void (*write_mesh)(const MeshRequest &request, OutputFile &out) = nullptr;
+    void (*write_mesh_directory)(const MeshRequest &request, const std::string &directory) = nullptr;
 };
 
 Table<FileFormat> format_table();  // in increasing id order
 // nullptr if there is no format with that id.
 const FileFormat *find_format(int id);
+
+// Writes a merged mesh (a set of blocks) to path in the format id, which
+// must have a mesh writer (Failure::Unsupported naming those that do).
+void write_mesh(const UnstructuredMesh &mesh, const Settings &settings, const std::string &title, const char *path, int id);
 
 // Writes the grid to path in the format (id | flags); all-or-nothing.
 void write_grid(const Grid &grid, const Settings &settings, const char *path, int id,

@@ -109,10 +109,9 @@ const char kFvSolution[] =
     "SIMPLE\n{\n    nNonOrthogonalCorrectors 0;\n}\n";
 }  // namespace
 
-void write_openfoam(const WriteRequest &r, const std::string &dir) {
-    const Grid &g = r.grid;
+void write_openfoam_mesh(const MeshRequest &r, const std::string &dir) {
+    const UnstructuredMesh &m = r.mesh;
     const double span = r.settings.span;
-    const UnstructuredMesh m = unstructured_mesh(g);
     const std::vector<InternalEdge> internal = internal_edges(m);
     const int n = static_cast<int>(m.points()), cells = static_cast<int>(m.cells());
     std::size_t boundary_faces = 0;
@@ -135,8 +134,8 @@ void write_openfoam(const WriteRequest &r, const std::string &dir) {
     for (double z : {0.0, span})
         for (std::size_t p = 0; p < m.points(); ++p) {
             points.print("(");
-            points.real(g.x[m.node_of[p]], ' ');
-            points.real(g.y[m.node_of[p]], ' ');
+            points.real(m.x[p], ' ');
+            points.real(m.y[p], ' ');
             points.real(z, ')');
             points.print("\n");
         }
@@ -161,18 +160,16 @@ void write_openfoam(const WriteRequest &r, const std::string &dir) {
     }
     for (const MeshPatch &p : m.patches)
         for (const MeshEdge &e : p.edges) side_face(e.a, e.b, e.cell);
-    for (int j = 0; j + 1 < g.nj(); ++j)  // back (z = 0), normal -z
-        for (int i = 0; i + 1 < g.ni(); ++i) {
-            const auto c = m.cell(i, j);
-            face_file.print("4(%d %d %d %d)\n", c[0], c[3], c[2], c[1]);
-            owner.print("%d\n", i + (g.ni() - 1) * j);
-        }
-    for (int j = 0; j + 1 < g.nj(); ++j)  // front (z = span), normal +z
-        for (int i = 0; i + 1 < g.ni(); ++i) {
-            const auto c = m.cell(i, j);
-            face_file.print("4(%d %d %d %d)\n", c[0] + n, c[1] + n, c[2] + n, c[3] + n);
-            owner.print("%d\n", i + (g.ni() - 1) * j);
-        }
+    for (std::size_t id = 0; id < m.cells(); ++id) {  // back (z = 0), normal -z
+        const auto &c = m.quads[id];
+        face_file.print("4(%d %d %d %d)\n", c[0], c[3], c[2], c[1]);
+        owner.print("%zu\n", id);
+    }
+    for (std::size_t id = 0; id < m.cells(); ++id) {  // front (z = span), normal +z
+        const auto &c = m.quads[id];
+        face_file.print("4(%d %d %d %d)\n", c[0] + n, c[1] + n, c[2] + n, c[3] + n);
+        owner.print("%zu\n", id);
+    }
     face_file.print(")\n");
     owner.print(")\n");
     neighbour.print(")\n");
@@ -210,6 +207,10 @@ void write_openfoam(const WriteRequest &r, const std::string &dir) {
     for (OutputFile *f : {&points, &face_file, &owner, &neighbour, &boundary}) f->commit();
     for (auto &f : system) f->commit();
     made.keep();
+}
+
+void write_openfoam(const WriteRequest &r, const std::string &dir) {
+    write_openfoam_mesh(MeshRequest{unstructured_mesh(r.grid), r.settings, ""}, dir);
 }
 
 }  // namespace eg2d

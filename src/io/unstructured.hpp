@@ -1,10 +1,13 @@
-// The grid as an unstructured mesh, for the solver-ready formats (SU2,
-// OpenFOAM): points with the cut's duplicate nodes merged (an O-grid's
-// column ni-1 is column 0, a C-grid's upper wake node (ni-1-i, 0) is the
-// lower wake node (i, 0)), quadrilateral cells with their corners
-// counter-clockwise, and the boundary edges grouped by patch name
-// (base/patches.hpp), each edge running counter-clockwise round its cell so
-// that its right-hand normal points out of the domain.
+// The grid, or a set of blocks, as an unstructured mesh, for the
+// solver-ready formats (SU2, OpenFOAM): points with duplicates merged (an
+// O-grid's column ni-1 is column 0, a C-grid's upper wake node (ni-1-i, 0)
+// is the lower wake node (i, 0), a set's joined nodes are one point),
+// quadrilateral cells with their corners counter-clockwise (a grid's cells
+// in the order i + (ni-1) j, a set's block after block), and the boundary
+// edges grouped by patch name (base/patches.hpp; a set's blocks' patches of
+// the same name are one patch, its joins are no patch), each edge running
+// counter-clockwise round its cell so that its right-hand normal points out
+// of the domain.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -17,8 +20,8 @@
 namespace eg2d {
 
 struct MeshEdge {
-    int a, b;  // merged point ids, counter-clockwise round `cell`
-    int cell;  // i + (ni-1) j
+    int a, b;  // point ids, counter-clockwise round `cell`
+    int cell;
 };
 
 struct MeshPatch {
@@ -28,26 +31,39 @@ struct MeshPatch {
 };
 
 struct UnstructuredMesh {
-    int ni, nj;
-    std::vector<int> point_of;           // node k = i + ni j -> merged point id
-    std::vector<std::size_t> node_of;    // point id -> its first node k (for x, y)
-    bool counter_clockwise;              // whether (i,j),(i+1,j),(i+1,j+1),(i,j+1) runs so
-    std::vector<MeshPatch> patches;      // every boundary edge in exactly one
-    std::size_t points() const { return node_of.size(); }
-    std::size_t cells() const { return static_cast<std::size_t>(ni - 1) * static_cast<std::size_t>(nj - 1); }
-    // Corners of cell (i, j) as merged point ids, counter-clockwise.
-    std::array<int, 4> cell(int i, int j) const;
+    std::vector<double> x, y;                // per point
+    std::vector<std::array<int, 4>> quads;   // per cell, counter-clockwise
+    std::vector<MeshPatch> patches;          // every boundary edge in exactly one
+    std::size_t points() const { return x.size(); }
+    std::size_t cells() const { return quads.size(); }
 };
 
 // Throws what resolve_patches throws (a C-grid without JMIN, a patch on the
 // cut).
 UnstructuredMesh unstructured_mesh(const Grid &g);
 
-// Internal edges between two cells (the cut's included), each once, from
-// the lower-numbered cell (owner) to the higher (neighbour), counter-
-// clockwise round the owner; sorted by owner, then neighbour (OpenFOAM's
-// upper-triangular order). Throws Failure::Argument naming the edge if the
-// boundary edges found are not exactly those of the patches.
+// A set of blocks: each block's grid and which edges of its sides lie on a
+// join (joined[side][q]: the edge from node q to q+1; those edges are
+// interior); twins: pairs of nodes (block, node index k = i + ni j) that are
+// one point.
+struct MeshBlock {
+    const Grid *grid;
+    std::array<std::vector<char>, 4> joined;
+};
+struct MeshTwin {
+    int block_a;
+    std::size_t node_a;
+    int block_b;
+    std::size_t node_b;
+};
+UnstructuredMesh unstructured_mesh(const std::vector<MeshBlock> &blocks, const std::vector<MeshTwin> &twins);
+
+// Internal edges between two cells (the cut's and the joins' included),
+// each once, from the lower-numbered cell (owner) to the higher
+// (neighbour), counter-clockwise round the owner; sorted by owner, then
+// neighbour (OpenFOAM's upper-triangular order). Throws Failure::Argument
+// naming the edge if the boundary edges found are not exactly those of the
+// patches.
 struct InternalEdge {
     int a, b, owner, neighbour;
 };

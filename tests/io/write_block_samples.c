@@ -1,0 +1,73 @@
+/* Writes a set of blocks as one mesh, for blocks_formats.py to check with
+ * readers eg2d did not write (meshio, OpenFOAM's checkMesh). Usage:
+ * write_block_samples DIR. The backward-facing step of block_domains.h
+ * (blocks 25x41, 81x41 and 81x17), solved, with the patches: "wall" on
+ * every wall (the floors, the top, the step's face), "inlet" (block 0's
+ * IMIN), "outlet" (blocks 1 and 2's IMAX); the joins none. Writes
+ * DIR/step.su2 and the OpenFOAM case DIR/step_foam, and DIR/step.txt:
+ * "cells points wall inlet outlet", the counts worked out here from the
+ * blocks. Then refuses EG2D_FORMAT_VTS for a set (EG2D_ERR_UNSUPPORTED). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "block_domains.h"
+#include "eg2d.h"
+
+static void check(int status, const char *what, const char *message) {
+    if (status != EG2D_OK) {
+        fprintf(stderr, "%s: %s\n", what, message);
+        exit(1);
+    }
+}
+
+int main(int argc, char **argv) {
+    if (argc != 2) {
+        fprintf(stderr, "usage: write_block_samples DIR\n");
+        return 2;
+    }
+    enum { UP = 25, DOWN = 81, UPPER = 41, LOWER = 17 };
+    eg2d_grid *g[3];
+    eg2d_blocks *set;
+    check(step_blocks(UP, DOWN, UPPER, LOWER, g, &set), "step_blocks", eg2d_last_error(NULL));
+    const struct {
+        int block, side, first, last, type;
+        const char *name;
+    } patches[] = {
+        {0, EG2D_SIDE_JMIN, 0, UP - 1, EG2D_PATCH_WALL, "wall"},    {0, EG2D_SIDE_JMAX, 0, UP - 1, EG2D_PATCH_WALL, "wall"},
+        {0, EG2D_SIDE_IMIN, 0, UPPER - 1, EG2D_PATCH_INFLOW, "inlet"},
+        {1, EG2D_SIDE_JMAX, 0, DOWN - 1, EG2D_PATCH_WALL, "wall"},  {1, EG2D_SIDE_IMAX, 0, UPPER - 1, EG2D_PATCH_OUTFLOW, "outlet"},
+        {2, EG2D_SIDE_JMIN, 0, DOWN - 1, EG2D_PATCH_WALL, "wall"},  {2, EG2D_SIDE_IMIN, 0, LOWER - 1, EG2D_PATCH_WALL, "wall"},
+        {2, EG2D_SIDE_IMAX, 0, LOWER - 1, EG2D_PATCH_OUTFLOW, "outlet"},
+    };
+    for (size_t k = 0; k < sizeof patches / sizeof patches[0]; ++k)
+        check(eg2d_set_patch(g[patches[k].block], patches[k].side, patches[k].first, patches[k].last, patches[k].type,
+                             patches[k].name),
+              "eg2d_set_patch", eg2d_last_error(g[patches[k].block]));
+    check(eg2d_blocks_solve(set), "eg2d_blocks_solve", eg2d_blocks_last_error(set));
+    char path[4096];
+    snprintf(path, sizeof path, "%s/step.su2", argv[1]);
+    check(eg2d_blocks_write(set, EG2D_FORMAT_SU2, path), path, eg2d_blocks_last_error(set));
+    snprintf(path, sizeof path, "%s/step_foam", argv[1]);
+    check(eg2d_blocks_write(set, EG2D_FORMAT_OPENFOAM, path), path, eg2d_blocks_last_error(set));
+    snprintf(path, sizeof path, "%s/step.vts", argv[1]);
+    if (eg2d_blocks_write(set, EG2D_FORMAT_VTS, path) != EG2D_ERR_UNSUPPORTED ||
+        !strstr(eg2d_blocks_last_error(set), "the vts format cannot hold a set of blocks as one mesh (su2, openfoam can")) {
+        fprintf(stderr, "VTS for a set: \"%s\"\n", eg2d_blocks_last_error(set));
+        return 1;
+    }
+    /* Cells; points: every block's nodes less one per joined node (the
+     * step's corner is in both joins and three blocks: two fewer, as the
+     * sum of the joins' counts says); edges per patch. */
+    const long cells = (long)(UP - 1) * (UPPER - 1) + (long)(DOWN - 1) * (UPPER - 1) + (long)(DOWN - 1) * (LOWER - 1);
+    const long points = (long)UP * UPPER + (long)DOWN * UPPER + (long)DOWN * LOWER - UPPER - DOWN;
+    const long wall = 2 * (UP - 1) + 2 * (DOWN - 1) + (LOWER - 1), inlet = UPPER - 1, outlet = (UPPER - 1) + (LOWER - 1);
+    snprintf(path, sizeof path, "%s/step.txt", argv[1]);
+    FILE *f = fopen(path, "w");
+    if (!f) return 1;
+    fprintf(f, "%ld %ld %ld %ld %ld\n", cells, points, wall, inlet, outlet);
+    fclose(f);
+    eg2d_blocks_destroy(set);
+    for (int k = 0; k < 3; ++k) eg2d_destroy(g[k]);
+    return 0;
+}
