@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 
 #include "generator/generator.hpp"
 
@@ -52,12 +54,143 @@ Composite::Composite(const std::vector<BlockShape> &shapes, const std::vector<Jo
             copies_.push_back(Link{j.a.block, node(A, j.a, t, 0), j.b.block, node(B, j.b, t, 0)});
         }
     }
+    find_vertices();
     for (Block &blk : blocks_) {
         unknowns_ += std::count(blk.role.begin(), blk.role.end(), kUnknown);
         std::vector<char> held(blk.role.size());
         for (std::size_t k = 0; k < held.size(); ++k) held[k] = blk.role[k] != kUnknown;
         blk.conn = blk.conn.with_fixed_nodes(held);
     }
+}
+
+void Composite::find_vertices() {
+    using Key = std::pair<int, std::size_t>;
+    std::map<Key, int> group_of;
+    std::vector<int> parent;
+    auto id = [&](int b, std::size_t k) {
+        const auto it = group_of.find({b, k});
+        if (it != group_of.end()) return it->second;
+        const int g = static_cast<int>(parent.size());
+        group_of[{b, k}] = g;
+        parent.push_back(g);
+        return g;
+    };
+    auto root = [&](int g) {
+        while (parent[static_cast<std::size_t>(g)] != g) g = parent[static_cast<std::size_t>(g)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(g)])];
+        return g;
+    };
+    // Which side edges are joined (per block, side, edge q: nodes q..q+1), and the join ends grouped.
+    std::vector<std::array<std::vector<char>, 4>> joined(blocks_.size());
+    for (std::size_t b = 0; b < blocks_.size(); ++b)
+        for (int s = 0; s < 4; ++s)
+            joined[b][static_cast<std::size_t>(s)].assign(static_cast<std::size_t>(s % 2 == 0 ? blocks_[b].ni : blocks_[b].nj), 0);
+    for (const Join &j : joins_) {
+        const int count = j.a.count();
+        for (int t : {0, count - 1}) {
+            const Block &A = blocks_[static_cast<std::size_t>(j.a.block)], &B = blocks_[static_cast<std::size_t>(j.b.block)];
+            const NodeIJ na = side_ij(A.ni, A.nj, j.a.side, j.a.at(t)), nb = side_ij(B.ni, B.nj, j.b.side, j.b.at(t));
+            const int ga = root(id(j.a.block, A.at(na.i, na.j))), gb = root(id(j.b.block, B.at(nb.i, nb.j)));
+            parent[static_cast<std::size_t>(std::max(ga, gb))] = std::min(ga, gb);
+        }
+        for (int t = 0; t + 1 < count; ++t)
+            for (const SideRange *r : {&j.a, &j.b})
+                joined[static_cast<std::size_t>(r->block)][static_cast<std::size_t>(r->side)]
+                      [static_cast<std::size_t>(std::min(r->at(t), r->at(t + 1)))] = 1;
+    }
+    std::map<int, Vertex> groups;
+    for (const auto &kv : group_of) groups[root(kv.second)].copies.push_back(Node{kv.first.first, kv.first.second});
+    // The node that stands for (b, k): a copy's source, a vertex's first copy, or itself.
+    std::map<Key, Key> canonical;
+    for (const Link &l : copies_) canonical[{l.to, l.dst}] = {l.from, l.src};
+    for (const auto &kv : groups)
+        for (const Node &n : kv.second.copies) canonical[{n.block, n.k}] = {kv.second.copies[0].block, kv.second.copies[0].k};
+    for (auto &kv : groups) {
+        Vertex &v = kv.second;
+        bool free = true;
+        for (const Node &n : v.copies) {
+            const Block &blk = blocks_[static_cast<std::size_t>(n.block)];
+            const int i = static_cast<int>(n.k % static_cast<std::size_t>(blk.ni + 2)) - 1;
+            const int j = static_cast<int>(n.k / static_cast<std::size_t>(blk.ni + 2)) - 1;
+            const struct { bool on; Side side; int p, length; } sides[] = {
+                {j == 0, Side::JMin, i, blk.ni}, {i == blk.ni - 1, Side::IMax, j, blk.nj},
+                {j == blk.nj - 1, Side::JMax, i, blk.ni}, {i == 0, Side::IMin, j, blk.nj}};
+            for (const auto &sd : sides) {
+                if (!sd.on) continue;
+                const std::vector<char> &e = joined[static_cast<std::size_t>(n.block)][static_cast<std::size_t>(sd.side)];
+                for (int q : {sd.p - 1, sd.p})
+                    if (q >= 0 && q < sd.length - 1 && !e[static_cast<std::size_t>(q)]) free = false;
+            }
+            if (!free) break;
+            for (const NodeIJ d : {NodeIJ{1, 0}, NodeIJ{-1, 0}, NodeIJ{0, 1}, NodeIJ{0, -1}}) {
+                const int ii = i + d.i, jj = j + d.j;
+                if (ii < 0 || jj < 0 || ii >= blk.ni || jj >= blk.nj) continue;
+                Key key{n.block, blk.at(ii, jj)};
+                const auto c = canonical.find(key);
+                if (c != canonical.end()) key = c->second;
+                const Node m{key.first, key.second};
+                if (std::none_of(v.neighbours.begin(), v.neighbours.end(),
+                                 [&](const Node &o) { return o.block == m.block && o.k == m.k; }))
+                    v.neighbours.push_back(m);
+            }
+        }
+        if (free && v.neighbours.size() >= 3) vertices_.push_back(std::move(v));
+    }
+}
+
+void Composite::vertex_equation(const Vertex &v, double &rx, double &ry) const {
+    double mx = 0.0, my = 0.0;
+    for (const Node &n : v.neighbours) {
+        mx += blocks_[static_cast<std::size_t>(n.block)].x[n.k];
+        my += blocks_[static_cast<std::size_t>(n.block)].y[n.k];
+    }
+    const double count = static_cast<double>(v.neighbours.size());
+    const Node &c = v.copies[0];
+    rx = mx / count - blocks_[static_cast<std::size_t>(c.block)].x[c.k] - v.fx;
+    ry = my / count - blocks_[static_cast<std::size_t>(c.block)].y[c.k] - v.fy;
+}
+
+namespace {
+constexpr int kLocalSweeps = 4, kLocalRadius = 3;
+}
+
+void Composite::relax_vertices(System system) {
+    if (vertices_.empty()) return;
+    for (int sweep = 0; sweep < kLocalSweeps; ++sweep) {
+        for (const Vertex &v : vertices_) {
+            for (const Node &n : v.copies) {
+                Block &blk = blocks_[static_cast<std::size_t>(n.block)];
+                const Level L = blk.level();
+                const int ci = static_cast<int>(n.k % static_cast<std::size_t>(blk.ni + 2));
+                const int cj = static_cast<int>(n.k / static_cast<std::size_t>(blk.ni + 2));
+                for (int j = std::max(1, cj - kLocalRadius); j <= std::min(blk.nj, cj + kLocalRadius); ++j)
+                    for (int i = std::max(1, ci - kLocalRadius); i <= std::min(blk.ni, ci + kLocalRadius); ++i) {
+                        const Stencil s = blk.conn.stencil(i, j);
+                        if (blk.role[static_cast<std::size_t>(s.c)] != kUnknown) continue;
+                        const NodeEquation eq = node_equation(system, L, s);
+                        blk.x[static_cast<std::size_t>(s.c)] += eq.rx / eq.diag;
+                        blk.y[static_cast<std::size_t>(s.c)] += eq.ry / eq.diag;
+                    }
+            }
+            sync();
+            double rx, ry;
+            vertex_equation(v, rx, ry);
+            for (const Node &n : v.copies) {
+                blocks_[static_cast<std::size_t>(n.block)].x[n.k] += rx;
+                blocks_[static_cast<std::size_t>(n.block)].y[n.k] += ry;
+            }
+        }
+        for (const Link &l : halos_) copy(l, &Block::x), copy(l, &Block::y);
+    }
+}
+
+double Composite::vertex_residual() const {
+    double worst = 0.0;
+    for (const Vertex &v : vertices_) {
+        double rx, ry;
+        vertex_equation(v, rx, ry);
+        worst = std::max({worst, std::fabs(rx), std::fabs(ry)});
+    }
+    return worst;
 }
 
 Composite Composite::of(const BlockSet &set) {
@@ -142,6 +275,7 @@ void Composite::sweep(System system, double omega) {
             }
         sync_from(b);  // the blocks after this one see its new values at once (Gauss-Seidel across the set)
     }
+    relax_vertices(system);
 }
 
 void Composite::smooth(System system) {
@@ -152,6 +286,7 @@ void Composite::smooth(System system) {
         ilu_sweep(system, L, true, 1.0, blk.ilu);
         sync_from(b);
     }
+    relax_vertices(system);
 }
 
 void Composite::compute_residual(System system) {
@@ -202,6 +337,20 @@ void Composite::restrict_from(System system, const Composite &fine) {
                 blk.fy[k] = eq.ry - scale * sy;
             }
     }
+    // The vertices (the same nodes on every level, in the same order),
+    // injected: the mean of the neighbours less the vertex is h^2/4 times a
+    // Laplacian, so four times the fine one on the coarse level.
+    for (std::size_t v = 0; v < vertices_.size(); ++v) {
+        Vertex &c = vertices_[v];
+        double fine_rx, fine_ry, rx, ry;
+        fine.vertex_equation(fine.vertices_[v], fine_rx, fine_ry);
+        c.fx = c.fy = 0.0;
+        vertex_equation(c, rx, ry);
+        c.fx = rx - 4.0 * fine_rx;
+        c.fy = ry - 4.0 * fine_ry;
+        c.x0 = blocks_[static_cast<std::size_t>(c.copies[0].block)].x[c.copies[0].k];
+        c.y0 = blocks_[static_cast<std::size_t>(c.copies[0].block)].y[c.copies[0].k];
+    }
 }
 
 void Composite::prolong_to(Composite &fine) const {
@@ -219,10 +368,25 @@ void Composite::prolong_to(Composite &fine) const {
                 f.y[k] += 0.25 * (dy(I0, J0) + dy(I1, J0) + dy(I0, J1) + dy(I1, J1));
             }
     }
+    for (std::size_t v = 0; v < vertices_.size(); ++v) {
+        const Vertex &c = vertices_[v];
+        const Node &n = c.copies[0];
+        const double ddx = blocks_[static_cast<std::size_t>(n.block)].x[n.k] - c.x0;
+        const double ddy = blocks_[static_cast<std::size_t>(n.block)].y[n.k] - c.y0;
+        for (const Node &m : fine.vertices_[v].copies) {
+            fine.blocks_[static_cast<std::size_t>(m.block)].x[m.k] += ddx;
+            fine.blocks_[static_cast<std::size_t>(m.block)].y[m.k] += ddy;
+        }
+    }
     fine.sync();
 }
 
 void Composite::start_fmg() {
+    for (Vertex &v : vertices_) {
+        v.fx = v.fy = 0.0;
+        v.x0 = blocks_[static_cast<std::size_t>(v.copies[0].block)].x[v.copies[0].k];
+        v.y0 = blocks_[static_cast<std::size_t>(v.copies[0].block)].y[v.copies[0].k];
+    }
     for (Block &blk : blocks_) {
         blk.fx.clear();
         blk.fy.clear();
@@ -243,6 +407,7 @@ double Composite::residual(System system, double extent) const {
                 worst = std::max(worst, std::max(std::fabs(eq.rx), std::fabs(eq.ry)) / eq.diag);
             }
     }
+    worst = std::max(worst, vertex_residual());
     return extent > 0.0 ? worst / extent : worst;
 }
 

@@ -10,10 +10,14 @@
 // connectivity (Connectivity::with_fixed_nodes): an identity row.
 //
 // Vertices (the end nodes of a join: where three, four or five blocks meet,
-// or a join meets the domain's boundary) are held where the blocks'
-// boundaries put them: the fixed-vertex treatment of Thompson, Soni &
-// Weatherill (1999, ch. 6), which needs no stencil round a vertex of any
-// valence.
+// or a join meets the domain's boundary) have no nine-point stencil in any
+// one block. One on the domain's boundary stays where the blocks'
+// boundaries put it. One inside the set (every side edge round it joined)
+// moves to the mean of its neighbours along the grid lines that leave it,
+// whatever their number (the averaged treatment of Thompson, Soni &
+// Weatherill 1999, ch. 6: the five-point Laplace equation where four
+// blocks meet), after every sweep of every level, its equation restricted
+// and corrected with the rest in multigrid.
 #pragma once
 #include <cstddef>
 #include <vector>
@@ -51,6 +55,14 @@ public:
     // The multigrid smoother: on each block the ILU sweep in both orderings
     // (solvers/multigrid_ilu.hpp), then its copies and halos.
     void smooth(System system);
+    // Each free vertex to the mean of its neighbours, kLocalSweeps times
+    // together with point Gauss-Seidel on the unknowns within kLocalRadius
+    // of it in each block: the block sweeps see a vertex held, and the
+    // error they leave round it is what limits the cycle (the bump in four
+    // blocks, Laplace: 0.20 per cycle with V(2,1) where one block takes
+    // 0.001; six sweeps before and after made it 0.03).
+    void relax_vertices(System system);
+    int free_vertices() const { return static_cast<int>(vertices_.size()); }
     // R = L(r) - f at every unknown into the residual fields (0 elsewhere),
     // copies and halos synced so a restriction reads across the joins.
     void compute_residual(System system);
@@ -64,7 +76,8 @@ public:
     // r0 the coordinates as they are (sampled from the start).
     void start_fmg();
 
-    // NUMERICS.md's residual over every unknown, over `extent`.
+    // NUMERICS.md's residual over every unknown and free vertex (its
+    // distance from its neighbours' mean, less f), over `extent`.
     double residual(System system, double extent) const;
     // Every copy and halo from its source.
     void sync();
@@ -110,6 +123,21 @@ private:
     std::vector<Join> joins_;
     std::vector<Block> blocks_;
     std::vector<Link> copies_, halos_;  // copies first: a halo may read a copy
+    struct Node {
+        int block;
+        std::size_t k;  // extended index
+    };
+    struct Vertex {
+        std::vector<Node> copies;      // the vertex in each block that has it
+        std::vector<Node> neighbours;  // one node per grid line leaving it
+        double fx = 0.0, fy = 0.0;     // FAS right-hand side (coarse levels)
+        double x0 = 0.0, y0 = 0.0;     // coarse levels: as sampled
+    };
+    // The mean of a vertex's neighbours less the vertex, less f.
+    void vertex_equation(const Vertex &v, double &rx, double &ry) const;
+    std::vector<Vertex> vertices_;  // the free ones
+    void find_vertices();
+    double vertex_residual() const;  // the largest |vertex_equation|
     long unknowns_ = 0;
     std::vector<std::vector<double>> saved_x_, saved_y_;
 };

@@ -123,6 +123,53 @@ static void test_set_is_the_single_block(void **state) {
     }
 }
 
+/* Four blocks round an inner vertex (the reference split at column MID and
+ * row 8): the vertex moves to the mean of its four neighbours, which is
+ * Laplace's equation there, so the set gives the single block's Laplace
+ * grid, multigrid in at most twice its cycles. */
+enum { ROW = 8 };
+static void map_q0(int i, int j, int *I, int *J, const int *p) { (void)p, *I = i, *J = j; }
+static void map_q1(int i, int j, int *I, int *J, const int *p) { (void)p, *I = MID + i, *J = j; }
+static void map_q2(int i, int j, int *I, int *J, const int *p) { (void)p, *I = i, *J = ROW + j; }
+static void map_q3(int i, int j, int *I, int *J, const int *p) { (void)p, *I = MID + i, *J = ROW + j; }
+
+static void test_inner_vertex(void **state) {
+    (void)state;
+    const block_map maps[4] = {map_q0, map_q1, map_q2, map_q3};
+    const int solvers[2] = {EG2D_SOLVER_MULTIGRID, EG2D_SOLVER_PSOR};
+    for (int sv = 0; sv < 2; ++sv) {
+        int single, iterations, b;
+        eg2d_grid *ref = reference(EG2D_SYSTEM_LAPLACE, solvers[sv], &single), *q[4];
+        eg2d_blocks *set;
+        assert_int_equal(eg2d_blocks_create(&set), EG2D_OK);
+        for (int k = 0; k < 4; ++k) {
+            q[k] = make_block(k % 2 ? NI - MID : MID + 1, k < 2 ? ROW + 1 : NJ - ROW, maps[k]);
+            assert_int_equal(eg2d_set_system(q[k], EG2D_SYSTEM_LAPLACE), EG2D_OK);
+            assert_int_equal(eg2d_blocks_add(set, q[k], &b), EG2D_OK);
+        }
+        assert_int_equal(eg2d_set_tolerance(q[0], 1e-13), EG2D_OK);
+        assert_int_equal(eg2d_set_solver(q[0], solvers[sv]), EG2D_OK);
+        assert_int_equal(eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, ROW, 1, EG2D_SIDE_IMIN, 0, ROW), EG2D_OK);
+        assert_int_equal(eg2d_blocks_join(set, 2, EG2D_SIDE_IMAX, 0, NJ - 1 - ROW, 3, EG2D_SIDE_IMIN, 0, NJ - 1 - ROW), EG2D_OK);
+        assert_int_equal(eg2d_blocks_join(set, 0, EG2D_SIDE_JMAX, 0, MID, 2, EG2D_SIDE_JMIN, 0, MID), EG2D_OK);
+        assert_int_equal(eg2d_blocks_join(set, 1, EG2D_SIDE_JMAX, 0, NI - 1 - MID, 3, EG2D_SIDE_JMIN, 0, NI - 1 - MID), EG2D_OK);
+        assert_int_equal(eg2d_blocks_solve(set), EG2D_OK);
+        assert_int_equal(eg2d_blocks_get_run(set, &iterations, NULL, NULL), EG2D_OK);
+        double worst = 0.0;
+        for (int k = 0; k < 4; ++k) {
+            const double d = distance_to(ref, q[k], k % 2 ? NI - MID : MID + 1, k < 2 ? ROW + 1 : NJ - ROW, maps[k]);
+            if (d > worst) worst = d;
+        }
+        printf("inner vertex, solver %d: %d iterations (the single block %d), largest distance to the single block %.2g\n",
+               solvers[sv], iterations, single, worst);
+        assert_true(worst < 1e-9);
+        if (solvers[sv] == EG2D_SOLVER_MULTIGRID) assert_true(iterations <= 2 * single);
+        eg2d_blocks_destroy(set);
+        for (int k = 0; k < 4; ++k) eg2d_destroy(q[k]);
+        eg2d_destroy(ref);
+    }
+}
+
 static void expect(int status, int code, const eg2d_blocks *set, const char *words) {
     if (status != code || !strstr(eg2d_blocks_last_error(set), words))
         fail_msg("status %d (wanted %d): \"%s\" (wanted \"%s\")", status, code, eg2d_blocks_last_error(set), words);
@@ -206,6 +253,7 @@ static void test_backward_facing_step(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_set_is_the_single_block),
+        cmocka_unit_test(test_inner_vertex),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_backward_facing_step),
     };
