@@ -134,6 +134,7 @@ void Composite::find_vertices() {
             }
         }
         if (free && v.neighbours.size() >= 3) vertices_.push_back(std::move(v));
+        else held_vertices_.push_back(std::move(v));
     }
 }
 
@@ -154,9 +155,11 @@ constexpr int kLocalSweeps = 4, kLocalRadius = 3;
 }
 
 void Composite::relax_vertices(System system) {
-    if (vertices_.empty()) return;
+    if (vertices_.empty() && held_vertices_.empty()) return;
     for (int sweep = 0; sweep < kLocalSweeps; ++sweep) {
-        for (const Vertex &v : vertices_) {
+        for (std::size_t k = 0; k < vertices_.size() + held_vertices_.size(); ++k) {
+            const bool held = k >= vertices_.size();
+            const Vertex &v = held ? held_vertices_[k - vertices_.size()] : vertices_[k];
             for (const Node &n : v.copies) {
                 Block &blk = blocks_[static_cast<std::size_t>(n.block)];
                 const Level L = blk.level();
@@ -172,6 +175,7 @@ void Composite::relax_vertices(System system) {
                     }
             }
             sync();
+            if (held) continue;
             double rx, ry;
             vertex_equation(v, rx, ry);
             for (const Node &n : v.copies) {

@@ -60,7 +60,8 @@ public:
     // of it in each block: the block sweeps see a vertex held, and the
     // error they leave round it is what limits the cycle (the bump in four
     // blocks, Laplace: 0.20 per cycle with V(2,1) where one block takes
-    // 0.001; six sweeps before and after made it 0.03).
+    // 0.001; six sweeps before and after made it 0.03). The same local
+    // sweeps round the vertices on the domain's boundary (a step's corner).
     void relax_vertices(System system);
     int free_vertices() const { return static_cast<int>(vertices_.size()); }
     // R = L(r) - f at every unknown into the residual fields (0 elsewhere),
@@ -135,7 +136,8 @@ private:
     };
     // The mean of a vertex's neighbours less the vertex, less f.
     void vertex_equation(const Vertex &v, double &rx, double &ry) const;
-    std::vector<Vertex> vertices_;  // the free ones
+    std::vector<Vertex> vertices_;       // the free ones
+    std::vector<Vertex> held_vertices_;  // on the domain's boundary (no neighbours kept): local sweeps only
     void find_vertices();
     double vertex_residual() const;  // the largest |vertex_equation|
     long unknowns_ = 0;
