@@ -1153,10 +1153,15 @@ EG2D_API int eg2d_set_airfoil(eg2d_grid *grid, const eg2d_curve *section, int to
  * (it does not own them) and writes its solution into them, so each
  * block's results and files are the usual calls on its grid. A grid
  * destroyed while in a set leaves the set refusing to run (EG2D_ERR_STATE).
- * In this version: single-block grids, the Laplace or Winslow system
- * without controls, point SOR over the set (block 0's tolerance,
- * iteration limit, stall window and relaxation); a block with controls,
- * interior lines or the variational system is refused
+ * In this version: single-block grids, the Laplace or Winslow system,
+ * each block's control terms but the wall control (sources, source
+ * arrays, parameter grid, weights, EG2D_ORTHO_MIDDLECOFF_THOMAS: each on
+ * its own block; a joined node takes the terms its block gives there, or
+ * where the block gives none (its boundary) those one line in), block 0's
+ * solver (EG2D_SOLVER_MULTIGRID over the whole set, or EG2D_SOLVER_PSOR)
+ * and settings (tolerance, iteration limit, stall window, relaxation,
+ * multigrid cycle). A block with a wall control, interior lines or the
+ * variational system, and any other solver, is refused
  * (EG2D_ERR_UNSUPPORTED). A set and its grids belong to one thread at a
  * time.
  *===================================================================*/

@@ -19,6 +19,7 @@ Level Composite::Block::level() const {
         L.fx = fx.data();
         L.fy = fy.data();
     }
+    if (!controls.empty()) L.controls = &controls;
     return L;
 }
 
@@ -26,7 +27,7 @@ Composite::Composite(const std::vector<BlockShape> &shapes, const std::vector<Jo
     : shapes_(shapes), joins_(joins) {
     blocks_.reserve(shapes.size());
     for (const BlockShape &sh : shapes) {
-        Block blk{sh.ni, sh.nj, Connectivity(sh.ni + 2, sh.nj + 2, Topology::Single), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+        Block blk{sh.ni, sh.nj, Connectivity(sh.ni + 2, sh.nj + 2, Topology::Single), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
         const std::size_t n = static_cast<std::size_t>(sh.ni + 2) * static_cast<std::size_t>(sh.nj + 2);
         for (auto *v : {&blk.x, &blk.y, &blk.rx, &blk.ry}) v->assign(n, 0.0);
         blk.role.assign(n, kHeld);
@@ -209,6 +210,32 @@ Composite Composite::of(const BlockSet &set) {
                 blk.x[blk.at(i, j)] = g.x[node_index(g.ni(), i, j)];
                 blk.y[blk.at(i, j)] = g.y[node_index(g.ni(), i, j)];
             }
+        ControlSet &controls = set.block(b)->controls();
+        if (controls.empty()) continue;
+        const ControlFields &fields = controls.update(g, true);
+        for (int t = 0; t < kTermCount; ++t) {
+            const double *f = fields.data(static_cast<Term>(t));
+            if (!f) continue;
+            std::vector<double> &e = blk.controls.at(static_cast<Term>(t), blk.x.size());
+            for (int j = 0; j < g.nj(); ++j)
+                for (int i = 0; i < g.ni(); ++i) e[blk.at(i, j)] = f[node_index(g.ni(), i, j)];
+        }
+    }
+    // A joined node a block solves but computed no control at (its
+    // boundary, to the control): the block's terms one line in.
+    for (const Join &j : set.joins()) {
+        Block &blk = c.blocks_[static_cast<std::size_t>(j.a.block)];
+        if (blk.controls.empty()) continue;
+        for (int t = 1; t + 1 < j.a.count(); ++t) {
+            const NodeIJ n0 = side_ij(blk.ni, blk.nj, j.a.side, j.a.at(t)), n1 = side_ij(blk.ni, blk.nj, j.a.side, j.a.at(t), 1);
+            const std::size_t k0 = blk.at(n0.i, n0.j), k1 = blk.at(n1.i, n1.j);
+            bool none = true;
+            for (const std::vector<double> &v : blk.controls.term)
+                if (!v.empty() && v[k0] != 0.0) none = false;
+            if (none)
+                for (std::vector<double> &v : blk.controls.term)
+                    if (!v.empty()) v[k0] = v[k1];
+        }
     }
     c.sync();
     return c;
@@ -234,6 +261,19 @@ Composite Composite::coarsened() const {
         }
     Composite c(shapes, joins);
     c.sample(*this);
+    for (std::size_t b = 0; b < blocks_.size(); ++b) {
+        const Block &f = blocks_[b];
+        Block &blk = c.blocks_[b];
+        for (int t = 0; t < kTermCount; ++t) {
+            const double *src = f.controls.data(static_cast<Term>(t));
+            if (!src) continue;
+            const Term term = static_cast<Term>(t);
+            const double scale = (term == Term::DXi || term == Term::DEta) ? 0.5 : 2.0;
+            std::vector<double> &e = blk.controls.at(term, blk.x.size());
+            for (int j = 0; j < blk.nj; ++j)
+                for (int i = 0; i < blk.ni; ++i) e[blk.at(i, j)] = scale * src[f.at(2 * i, 2 * j)];
+        }
+    }
     return c;
 }
 

@@ -38,13 +38,16 @@ class Composite {
 public:
     // The blocks' shapes and joins, coordinates 0.
     Composite(const std::vector<BlockShape> &shapes, const std::vector<Join> &joins);
-    // From the blocks' current coordinates.
+    // From the blocks' current coordinates and their static control terms
+    // (each block's own, on its own grid; at a joined node the block
+    // computes none, those one line into the block).
     static Composite of(const BlockSet &set);
 
     // Every block has an even number of cells each way (at least 4) and
     // every join's ends are even nodes: the set coarsens by two.
     bool coarsenable() const;
-    // Every other node of each block, the joins halved; coordinates sampled.
+    // Every other node of each block, the joins halved; coordinates and
+    // control fields sampled (a, b, c doubled and d halved: control_fields.hpp).
     Composite coarsened() const;
     // Coordinates sampled from `fine` (of which this is coarsened()), halos synced.
     void sample(const Composite &fine);
@@ -100,6 +103,7 @@ private:
         Connectivity conn;  // (ni+2) x (nj+2), single block, every node not solved here held
         std::vector<double> x, y, fx, fy, rx, ry, x0, y0;  // fx, fy, x0, y0: coarse levels only
         std::vector<char> role;
+        ControlFields controls;  // (ni+2) x (nj+2); empty: none
         IluWork ilu;
         std::size_t at(int i, int j) const {  // block node (i, j), -1 <= i <= ni
             return static_cast<std::size_t>(i + 1) + static_cast<std::size_t>(ni + 2) * static_cast<std::size_t>(j + 1);

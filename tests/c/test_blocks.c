@@ -170,6 +170,55 @@ static void test_inner_vertex(void **state) {
     }
 }
 
+static void expect(int status, int code, const eg2d_blocks *set, const char *words);
+
+/* Control terms on the blocks: the user's P and Q arrays of the single
+ * block, cut with it, give the single block's controlled grid. */
+static void set_arrays(eg2d_grid *g, int ni, int nj, block_map map) {
+    double *P = malloc(sizeof(double) * (size_t)(ni * nj)), *Q = malloc(sizeof(double) * (size_t)(ni * nj));
+    for (int j = 0; j < nj; ++j)
+        for (int i = 0; i < ni; ++i) {
+            int I, J;
+            map(i, j, &I, &J, NULL);
+            P[i + ni * j] = 0.4 * sin(3.0 * I / (NI - 1));  /* in the reference's index units */
+            Q[i + ni * j] = -0.6 + 0.02 * J;
+        }
+    assert_int_equal(eg2d_set_source_arrays(g, P, Q), EG2D_OK);
+    free(P), free(Q);
+}
+
+static void test_controls(void **state) {
+    (void)state;
+    eg2d_grid *ref = make_block(NI, NJ, map_left);
+    int single, iterations, b;
+    set_arrays(ref, NI, NJ, map_left);
+    assert_int_equal(eg2d_set_tolerance(ref, 1e-13), EG2D_OK);
+    assert_int_equal(eg2d_solve(ref), EG2D_OK);
+    assert_int_equal(eg2d_get_iterations(ref, &single), EG2D_OK);
+    eg2d_grid *left = make_block(MID + 1, NJ, map_left), *right = make_block(NI - MID, NJ, map_right);
+    set_arrays(left, MID + 1, NJ, map_left);
+    set_arrays(right, NI - MID, NJ, map_right);
+    eg2d_blocks *set;
+    assert_int_equal(eg2d_blocks_create(&set), EG2D_OK);
+    assert_int_equal(eg2d_blocks_add(set, left, &b), EG2D_OK);
+    assert_int_equal(eg2d_blocks_add(set, right, &b), EG2D_OK);
+    assert_int_equal(eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, NJ - 1, 1, EG2D_SIDE_IMIN, 0, NJ - 1), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(left, 1e-13), EG2D_OK);
+    assert_int_equal(eg2d_blocks_solve(set), EG2D_OK);
+    assert_int_equal(eg2d_blocks_get_run(set, &iterations, NULL, NULL), EG2D_OK);
+    const double dl = distance_to(ref, left, MID + 1, NJ, map_left), dr = distance_to(ref, right, NI - MID, NJ, map_right);
+    printf("source arrays: %d cycles (the single block %d), largest distance to the single block %.2g, %.2g\n",
+           iterations, single, dl, dr);
+    assert_true(dl < 1e-9 && dr < 1e-9);
+    assert_true(iterations <= 2 * single);
+    /* Laplace has no place for them: refused, naming the block. */
+    assert_int_equal(eg2d_set_system(left, EG2D_SYSTEM_LAPLACE), EG2D_OK);
+    assert_int_equal(eg2d_set_system(right, EG2D_SYSTEM_LAPLACE), EG2D_OK);
+    expect(eg2d_blocks_solve(set), EG2D_ERR_STATE, set, "block 0 has control terms but the system is Laplace");
+    eg2d_blocks_destroy(set);
+    eg2d_destroy(left), eg2d_destroy(right), eg2d_destroy(ref);
+}
+
 static void expect(int status, int code, const eg2d_blocks *set, const char *words) {
     if (status != code || !strstr(eg2d_blocks_last_error(set), words))
         fail_msg("status %d (wanted %d): \"%s\" (wanted \"%s\")", status, code, eg2d_blocks_last_error(set), words);
@@ -213,7 +262,7 @@ static void test_errors(void **state) {
     expect(eg2d_blocks_check(set), EG2D_ERR_STATE, set, "block 1 solves the Laplace system, block 0 the Winslow");
     assert_int_equal(eg2d_set_system(right, EG2D_SYSTEM_WINSLOW), EG2D_OK);
     assert_int_equal(eg2d_set_wall_spacing(right, EG2D_SIDE_JMIN, 1e-3), EG2D_OK);
-    expect(eg2d_blocks_solve(set), EG2D_ERR_UNSUPPORTED, set, "block 1 has controls");
+    expect(eg2d_blocks_solve(set), EG2D_ERR_UNSUPPORTED, set, "block 1 has a wall control");
     expect(eg2d_blocks_get_run(set, NULL, NULL, NULL), EG2D_ERR_STATE, set, "has not run");
     eg2d_destroy(right);
     expect(eg2d_blocks_solve(set), EG2D_ERR_STATE, set, "block 1 was destroyed");
@@ -254,6 +303,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_set_is_the_single_block),
         cmocka_unit_test(test_inner_vertex),
+        cmocka_unit_test(test_controls),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_backward_facing_step),
     };

@@ -833,9 +833,10 @@ static const bad_input rows[] = {
      0},
     {"a set whose blocks are not joined", "eg2d_blocks_solve(set)", S_SQUARE, r_blocks_unconnected, EG2D_ERR_STATE,
      "eg2d_blocks_solve: the set is not connected: no chain of joins from block 0 to block 1", 0},
-    {"a block of a set with controls", "eg2d_blocks_solve(set)", S_SQUARE, r_blocks_controls, EG2D_ERR_UNSUPPORTED,
-     "eg2d_blocks_solve: block 1 has controls (a wall spacing, sources, weights or an orthogonality method): not "
-     "available on a set of blocks yet",
+    {"a block of a set with a wall control", "eg2d_blocks_solve(set)", S_SQUARE, r_blocks_controls,
+     EG2D_ERR_UNSUPPORTED,
+     "eg2d_blocks_solve: block 1 has a wall control (eg2d_set_wall_spacing, EG2D_ORTHO_WALL): not available on a set "
+     "of blocks yet",
      0},
     {"a block destroyed while in a set", "eg2d_blocks_solve(set)", S_SQUARE, r_blocks_destroyed, EG2D_ERR_STATE,
      "eg2d_blocks_solve: block 1 was destroyed", 0},
