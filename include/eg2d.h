@@ -1158,7 +1158,7 @@ EG2D_API int eg2d_set_airfoil(eg2d_grid *grid, const eg2d_curve *section, int to
  * arrays, parameter grid, weights, EG2D_ORTHO_MIDDLECOFF_THOMAS: each on
  * its own block; a joined node takes the terms its block gives there, or
  * where the block gives none (its boundary) those one line in), block 0's
- * solver (EG2D_SOLVER_MULTIGRID over the whole set, or EG2D_SOLVER_PSOR)
+ * solver (EG2D_SOLVER_MULTIGRID over the whole set, PSOR, LSOR or NESTED)
  * and settings (tolerance, iteration limit, stall window, relaxation,
  * multigrid cycle). A block with a wall control, interior lines or the
  * variational system, and any other solver, is refused

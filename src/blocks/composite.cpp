@@ -27,7 +27,7 @@ Composite::Composite(const std::vector<BlockShape> &shapes, const std::vector<Jo
     : shapes_(shapes), joins_(joins) {
     blocks_.reserve(shapes.size());
     for (const BlockShape &sh : shapes) {
-        Block blk{sh.ni, sh.nj, Connectivity(sh.ni + 2, sh.nj + 2, Topology::Single), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+        Block blk{sh.ni, sh.nj, Connectivity(sh.ni + 2, sh.nj + 2, Topology::Single), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
         const std::size_t n = static_cast<std::size_t>(sh.ni + 2) * static_cast<std::size_t>(sh.nj + 2);
         for (auto *v : {&blk.x, &blk.y, &blk.rx, &blk.ry}) v->assign(n, 0.0);
         blk.role.assign(n, kHeld);
@@ -320,6 +320,34 @@ void Composite::sweep(System system, double omega) {
         sync_from(b);  // the blocks after this one see its new values at once (Gauss-Seidel across the set)
     }
     relax_vertices(system);
+}
+
+void Composite::sweep_lines(System system, double omega_xi, double omega_eta) {
+    for (int pass = 0; pass < 2; ++pass)
+        for (std::size_t b = 0; b < blocks_.size(); ++b) {
+            Block &blk = blocks_[b];
+            const Level L = blk.level();
+            if (pass == 0) sweep_xi_lines(system, L, omega_xi, blk.lines);
+            else sweep_eta_lines(system, L, omega_eta, blk.lines);
+            sync_from(b);
+        }
+    relax_vertices(system);
+}
+
+int Composite::longest() const {
+    int n = 0;
+    for (const BlockShape &s : shapes_) n = std::max({n, s.ni, s.nj});
+    return n;
+}
+
+LineOmega Composite::line_omega() const {
+    LineOmega best{1.0, 1.0};
+    for (const Block &blk : blocks_) {
+        const LineOmega o = optimal_line_sor_omega(Connectivity(blk.ni, blk.nj, Topology::Single));
+        best.xi = std::max(best.xi, o.xi);
+        best.eta = std::max(best.eta, o.eta);
+    }
+    return best;
 }
 
 void Composite::smooth(System system) {

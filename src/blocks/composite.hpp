@@ -26,6 +26,7 @@
 #include "blocks/block_set.hpp"
 #include "operator/operator.hpp"
 #include "operator/system.hpp"
+#include "solvers/line_relax.hpp"
 #include "solvers/multigrid_ilu.hpp"
 
 namespace eg2d {
@@ -55,6 +56,9 @@ public:
     // One Gauss-Seidel/SOR sweep over every block's unknowns, the copies
     // and halos brought up to date after each block.
     void sweep(System system, double omega);
+    // One line SOR sweep: every block's xi-lines, then every block's
+    // eta-lines (line_relax.hpp), the copies and halos after each block.
+    void sweep_lines(System system, double omega_xi, double omega_eta);
     // The multigrid smoother: on each block the ILU sweep in both orderings
     // (solvers/multigrid_ilu.hpp), then its copies and halos.
     void smooth(System system);
@@ -90,6 +94,10 @@ public:
     void extract(int b, std::vector<double> &x, std::vector<double> &y) const;
     long unknowns() const { return unknowns_; }
     long nodes() const;
+    // The most nodes along one side of any block.
+    int longest() const;
+    // The line SOR model optimum of the block whose factors are largest.
+    LineOmega line_omega() const;
     // For a guarded sweep: keep the coordinates, put them back, and the
     // largest coordinate change since save() (inf if any is not finite).
     void save();
@@ -105,6 +113,7 @@ private:
         std::vector<char> role;
         ControlFields controls;  // (ni+2) x (nj+2); empty: none
         IluWork ilu;
+        LineWork lines;
         std::size_t at(int i, int j) const {  // block node (i, j), -1 <= i <= ni
             return static_cast<std::size_t>(i + 1) + static_cast<std::size_t>(ni + 2) * static_cast<std::size_t>(j + 1);
         }

@@ -24,6 +24,21 @@ public:
     // sampled from it, the coarsest solved, then on each finer level the
     // coarser one's correction and one cycle (counts as the first cycle).
     void fmg(System system, Composite &fine, int index, int pre, int post);
+    // The nested iteration's start (Petrilli 1989, the Phoenix grid code's
+    // coarse-to-fine phase): from the coarsest level up, each level swept
+    // by `solve` until its residual is below `tolerance` or it makes no
+    // progress, its change interpolated into the next finer one.
+    template <class Solve>
+    void coarse_to_fine(Composite &fine, Solve &&solve) {
+        for (std::size_t l = 0; l < coarse_.size(); ++l) {
+            coarse_[l].sample(l == 0 ? fine : coarse_[l - 1]);
+            coarse_[l].start_fmg();
+        }
+        for (std::size_t l = coarse_.size(); l-- > 0;) {
+            solve(coarse_[l]);
+            coarse_[l].prolong_to(l == 0 ? fine : coarse_[l - 1]);
+        }
+    }
 
 private:
     void solve_coarsest(System system, Composite &c) const;

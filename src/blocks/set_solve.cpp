@@ -17,17 +17,11 @@ namespace eg2d {
 
 namespace {
 
-// SOR's factor for the model problem on the set (Young 1971): 2/(1 + sin(pi h))
-// with h one over the longest chain of nodes across the set, bounded by the
-// nodes' count (a chain of blocks is as long as their sum).
-double automatic_omega(const BlockSet &set) {
-    double nodes = 0.0, longest = 0.0;
-    for (int b = 0; b < set.size(); ++b) {
-        const Grid &g = set.block(b)->grid();
-        nodes += static_cast<double>(g.ni()) * g.nj();
-        longest = std::max(longest, static_cast<double>(std::max(g.ni(), g.nj())));
-    }
-    const double n = std::max(longest, std::sqrt(nodes));
+// Point SOR's factor for the model problem on the set (Young 1971): 2/(1 +
+// sin(pi h)) with h one over the longest chain of nodes across the set,
+// bounded by the nodes' count (a chain of blocks is as long as their sum).
+double point_omega(const Composite &c) {
+    const double n = std::max(static_cast<double>(c.longest()), std::sqrt(static_cast<double>(c.nodes())));
     return 2.0 / (1.0 + std::sin(M_PI / n));
 }
 
@@ -39,42 +33,55 @@ void write_back(const BlockSet &set, const Composite &c, long iterations) {
                                     static_cast<int>(std::min<long>(iterations, 2147483647L)));
 }
 
-// Point SOR over the set. Automatic factor: the point solvers' guarded ramp
-// (solvers/auto_relaxation.hpp) from Gauss-Seidel to the target over its
-// ramp, a sweep that moves the grid more than kJump times the last one
-// undone and redone with half the over-relaxation: a fixed factor near 2
-// blows up on a TFI start (the 49x161 step diverged).
+// Point or line SOR over the set. Automatic factor: the point solvers'
+// guarded ramp (solvers/auto_relaxation.hpp) from Gauss-Seidel to the
+// target over its ramp, a sweep that moves the grid more than kJump times
+// the last one undone and redone with half the over-relaxation: a fixed
+// factor near 2 blows up on a TFI start (the 49x161 step diverged).
 class SetSor {
 public:
-    SetSor(const Settings &s, const BlockSet &set)
-        : automatic_(!(s.relaxation > 0.0)), target_(automatic_ ? automatic_omega(set) : s.relaxation),
-          ramp_(automatic_ ? AutoRelaxation::ramp_for(target_) : 0) {}
+    SetSor(const Settings &s, const Composite &c, bool lines) : lines_(lines), automatic_(!(s.relaxation > 0.0)) {
+        if (!automatic_) target_ = LineOmega{s.relaxation, s.relaxation};
+        else if (lines) target_ = c.line_omega();
+        else target_ = LineOmega{point_omega(c), point_omega(c)};
+        ramp_ = automatic_ ? AutoRelaxation::ramp_for(std::max(target_.xi, target_.eta)) : 0;
+    }
     void iterate(System system, Composite &c) {
         c.save();
-        c.sweep(system, factor());
+        sweep(system, c);
         double m = c.move();
         if (automatic_ && !(m <= kJump * last_move_) && sweeps_ > 0) {
             c.restore();
             share_ *= 0.5;
-            c.sweep(system, factor());
+            sweep(system, c);
             m = c.move();
         }
         last_move_ = m;
         ++sweeps_;
     }
-    double factor() const {
-        if (!automatic_) return target_;
+    double factor(double target) const {
+        if (!automatic_) return target;
         const double r = ramp_ > 0 ? std::min(1.0, static_cast<double>(sweeps_ + 1) / static_cast<double>(ramp_)) : 1.0;
-        return 1.0 + share_ * r * (target_ - 1.0);
+        return 1.0 + share_ * r * (target - 1.0);
     }
+    double factor() const { return factor(target_.xi); }
 
 private:
+    void sweep(System system, Composite &c) {
+        if (lines_) c.sweep_lines(system, factor(target_.xi), factor(target_.eta));
+        else c.sweep(system, factor(target_.xi));
+    }
     static constexpr double kJump = 3.0;
-    bool automatic_;
-    double target_;
-    long ramp_, sweeps_ = 0;
+    bool lines_, automatic_;
+    LineOmega target_{1.0, 1.0};
+    long ramp_ = 0, sweeps_ = 0;
     double share_ = 1.0, last_move_ = std::numeric_limits<double>::infinity();
 };
+
+// The nested iteration's coarse levels are converged to this at most:
+// below it the next level's interpolation error dominates (solvers/nested.cpp).
+constexpr double kCoarseTolerance = 1e-7;
+constexpr long kCoarseSweeps = 5000;
 
 }  // namespace
 
@@ -82,20 +89,21 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
     set.check();
     const Settings &s = set.block(0)->settings;
     const int solver = set.block(0)->solver_id();
-    if (solver != EG2D_SOLVER_MULTIGRID && solver != EG2D_SOLVER_PSOR)
-        fail(Failure::Unsupported, format("block 0's solver is %s: a set of blocks is solved by multigrid or point SOR "
-                                          "(EG2D_SOLVER_MULTIGRID, EG2D_SOLVER_PSOR) in this version",
-                                          set.block(0)->solver_name()));
+    if (solver != EG2D_SOLVER_MULTIGRID && solver != EG2D_SOLVER_PSOR && solver != EG2D_SOLVER_LSOR &&
+        solver != EG2D_SOLVER_NESTED)
+        fail(Failure::Unsupported, format("block 0's solver is \"%s\": a set of blocks is solved by multigrid, point SOR, "
+                                          "line SOR or the nested iteration (EG2D_SOLVER_MULTIGRID, _PSOR, _LSOR, "
+                                          "_NESTED) in this version", set.block(0)->solver_name()));
     for (int b = 0; b < set.size(); ++b)
         if (!set.block(b)->grid().initialized()) set.block(b)->initialize(EG2D_INIT_TFI);
     const System system = set.block(0)->system();
     Composite c = Composite::of(set);
     run = SetRun{};
     run.unknowns = c.unknowns();
-    const bool multigrid = solver == EG2D_SOLVER_MULTIGRID;
-    SetSor sor(s, set);
-    std::vector<SetMultigrid> mg;  // built only for multigrid
-    if (multigrid) mg.emplace_back(c);
+    const bool multigrid = solver == EG2D_SOLVER_MULTIGRID, nested = solver == EG2D_SOLVER_NESTED;
+    SetSor sor(s, c, solver == EG2D_SOLVER_LSOR);
+    std::vector<SetMultigrid> mg;  // the levels: multigrid's and the nested iteration's
+    if (multigrid || nested) mg.emplace_back(c);
     run.omega = multigrid ? 1.0 : sor.factor();
     const double extent = set.extent();
     const long limit = static_cast<long>(s.max_iterations);
@@ -122,8 +130,21 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
         else if (multigrid)
             mg[0].cycle(system, c, static_cast<int>(s.mg_cycle), static_cast<int>(s.mg_pre_smooth),
                         static_cast<int>(s.mg_post_smooth));
-        else
+        else {
+            if (nested && run.iterations == 0)
+                mg[0].coarse_to_fine(c, [&](Composite &level) {
+                    SetSor level_sor(s, level, false);
+                    StallWatch level_watch(window);
+                    const double goal = std::max(s.tolerance, kCoarseTolerance);
+                    double r = level.residual(system, extent);
+                    for (long k = 0; k < kCoarseSweeps && r > goal && !level_watch.stalled(k, r, 0.0); ++k) {
+                        level_sor.iterate(system, level);
+                        r = level.residual(system, extent);
+                        if (!std::isfinite(r)) break;
+                    }
+                });
             sor.iterate(system, c);
+        }
         ++run.iterations;
         run.residual = c.residual(system, extent);
         if (!std::isfinite(run.residual) || !c.finite() ||
@@ -144,11 +165,9 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
         }
     }
     write_back(set, c, run.iterations);
-    run.levels = multigrid ? mg[0].levels() : 1;
-    run.note = multigrid ? format("set of %d blocks: %ld unknowns, multigrid on %d level(s), %ld cycle(s), residual %.3g",
-                                  set.size(), run.unknowns, run.levels, run.iterations, run.residual)
-                         : format("set of %d blocks: %ld unknowns, point SOR (factor %.4g), %ld iterations, residual %.3g",
-                                  set.size(), run.unknowns, sor.factor(), run.iterations, run.residual);
+    run.levels = mg.empty() ? 1 : mg[0].levels();
+    run.note = format("set of %d blocks: %ld unknowns, %s on %d level(s), %ld iteration(s), residual %.3g", set.size(),
+                      run.unknowns, set.block(0)->solver_name(), run.levels, run.iterations, run.residual);
 }
 
 }  // namespace eg2d

@@ -1,5 +1,6 @@
 // Solving a set of blocks as one grid (composite.hpp) with block 0's
-// solver (multigrid over the set, set_multigrid.hpp, or point SOR) and
+// solver (multigrid over the set, set_multigrid.hpp; point or line SOR;
+// the nested iteration's coarse-to-fine start, then point SOR) and
 // settings (tolerance, iteration limit, stall window, relaxation, the
 // multigrid cycle), each block's grid receiving its part.
 #pragma once

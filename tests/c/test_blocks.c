@@ -73,12 +73,15 @@ static const struct turned kTurns[] = {
 /* Two blocks covering the reference domain, the right one as given, turned
  * by 180 and by 90 degrees, give the single block's grid: the joined
  * column is solved as an interior one; by multigrid over the set in at most
- * twice the single block's cycles (it has no FMG start yet), and by point SOR. */
+ * twice the single block's cycles, and by point SOR, line SOR and the
+ * nested iteration. */
 static void test_set_is_the_single_block(void **state) {
     (void)state;
-    const int systems[] = {EG2D_SYSTEM_LAPLACE, EG2D_SYSTEM_WINSLOW, EG2D_SYSTEM_LAPLACE, EG2D_SYSTEM_WINSLOW};
-    const int solvers[] = {EG2D_SOLVER_MULTIGRID, EG2D_SOLVER_MULTIGRID, EG2D_SOLVER_PSOR, EG2D_SOLVER_PSOR};
-    for (size_t s = 0; s < 4; ++s) {
+    const int systems[] = {EG2D_SYSTEM_LAPLACE, EG2D_SYSTEM_WINSLOW, EG2D_SYSTEM_LAPLACE, EG2D_SYSTEM_WINSLOW,
+                           EG2D_SYSTEM_WINSLOW, EG2D_SYSTEM_WINSLOW};
+    const int solvers[] = {EG2D_SOLVER_MULTIGRID, EG2D_SOLVER_MULTIGRID, EG2D_SOLVER_PSOR, EG2D_SOLVER_PSOR,
+                           EG2D_SOLVER_LSOR, EG2D_SOLVER_NESTED};
+    for (size_t s = 0; s < sizeof solvers / sizeof solvers[0]; ++s) {
         int single;
         eg2d_grid *ref = reference(systems[s], solvers[s], &single);
         for (size_t t = 0; t < sizeof kTurns / sizeof kTurns[0]; ++t) {
@@ -264,6 +267,10 @@ static void test_errors(void **state) {
     assert_int_equal(eg2d_set_wall_spacing(right, EG2D_SIDE_JMIN, 1e-3), EG2D_OK);
     expect(eg2d_blocks_solve(set), EG2D_ERR_UNSUPPORTED, set, "block 1 has a wall control");
     expect(eg2d_blocks_get_run(set, NULL, NULL, NULL), EG2D_ERR_STATE, set, "has not run");
+    assert_int_equal(eg2d_set_orthogonality(right, EG2D_ORTHO_NONE), EG2D_OK);
+    assert_int_equal(eg2d_set_solver(left, EG2D_SOLVER_AF), EG2D_OK);
+    expect(eg2d_blocks_solve(set), EG2D_ERR_UNSUPPORTED, set, "block 0's solver is \"af\": a set of blocks is solved by");
+    assert_int_equal(eg2d_set_solver(left, EG2D_SOLVER_MULTIGRID), EG2D_OK);
     eg2d_destroy(right);
     expect(eg2d_blocks_solve(set), EG2D_ERR_STATE, set, "block 1 was destroyed");
     eg2d_blocks_destroy(set);
