@@ -1222,14 +1222,16 @@ EG2D_API int eg2d_blocks_get_run(const eg2d_blocks *set, int *iterations, double
  * and the set checks; 0 and 0 for a set without joined nodes. */
 EG2D_API int eg2d_blocks_get_kinks(const eg2d_blocks *set, double *at_joins, double *nearby);
 
-/* Writes the set as one mesh to `path`: the joined nodes one point, the
- * joins interior faces, the blocks' patches (eg2d_set_patch on each block;
- * those of the same name one patch, the joined edges in none) the
- * boundary. Formats: EG2D_FORMAT_SU2 (one zone) and EG2D_FORMAT_OPENFOAM
- * (a case directory, as eg2d_write makes). Any other format:
- * EG2D_ERR_UNSUPPORTED naming those (write each block's grid with
- * eg2d_write). EG2D_ERR_STATE unless the set checks and every block is
- * initialised; EG2D_ERR_IO as eg2d_write. All or nothing, as eg2d_write. */
+/* Writes the set to `path`. EG2D_FORMAT_SU2 (one zone) and
+ * EG2D_FORMAT_OPENFOAM (a case directory, as eg2d_write makes) take it as
+ * one mesh: the joined nodes one point, the joins interior faces, the
+ * blocks' patches (eg2d_set_patch on each block; those of the same name
+ * one patch, the joined edges in none) the boundary. EG2D_FORMAT_PLOT3D
+ * and _PLOT3D_ASCII (with their flags) hold a zone a block, in block
+ * order, in a multi-grid file. Any other format: EG2D_ERR_UNSUPPORTED
+ * naming those (write each block's grid with eg2d_write). EG2D_ERR_STATE
+ * unless the set checks and every block is initialised; EG2D_ERR_IO as
+ * eg2d_write. All or nothing, as eg2d_write. */
 EG2D_API int eg2d_blocks_write(const eg2d_blocks *set, int format, const char *path);
 
 #ifdef __cplusplus

@@ -119,6 +119,7 @@ EG2D_API int eg2d_blocks_get_kinks(const eg2d_blocks *set, double *at_joins, dou
 EG2D_API int eg2d_blocks_write(const eg2d_blocks *set, int file_format, const char *path) {
     return guard_set(set, "eg2d_blocks_write", [&] {
         require_ptr(path, "path");
+        const SetWriting how = set_writing(file_format);
         set->set.check();
         const BlockSet &bs = set->set;
         std::vector<MeshBlock> blocks;
@@ -131,6 +132,12 @@ EG2D_API int eg2d_blocks_write(const eg2d_blocks *set, int file_format, const ch
             for (int s = 0; s < 4; ++s) mb.joined[static_cast<std::size_t>(s)].assign(static_cast<std::size_t>(g.side_length(Side(s))), 0);
             blocks.push_back(std::move(mb));
             nodes += static_cast<long>(g.size());
+        }
+        if (how == SetWriting::Zones) {
+            std::vector<const Grid *> grids;
+            for (const MeshBlock &mb : blocks) grids.push_back(mb.grid);
+            write_blocks(grids, bs.block(0)->settings, path, file_format);
+            return;
         }
         std::vector<MeshTwin> twins;
         for (const Join &j : bs.joins()) {

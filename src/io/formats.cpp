@@ -8,6 +8,8 @@ namespace eg2d {
 // The writers, each in its own file.
 void write_plot3d(const WriteRequest &r, OutputFile &out);        // plot3d_write.cpp
 void write_plot3d_ascii(const WriteRequest &r, OutputFile &out);
+void write_plot3d_blocks(const BlocksRequest &r, OutputFile &out);
+void write_plot3d_ascii_blocks(const BlocksRequest &r, OutputFile &out);
 void write_vts(const WriteRequest &r, OutputFile &out);           // vts.cpp
 void write_cgns(const WriteRequest &r, OutputFile &out);          // cgns_loader.cpp
 void write_gmv(const WriteRequest &r, OutputFile &out);           // gmv.cpp
@@ -29,9 +31,9 @@ constexpr int kPlot3dFlags = EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI | EG2D_PLOT3D_SI
 // write_directory instead of write; one written from the unstructured mesh
 // has its mesh writer too (sets of blocks).
 const FileFormat kFormats[] = {
-    {EG2D_FORMAT_PLOT3D, "plot3d", ".xyz", kPlot3dFlags, write_plot3d},
+    {EG2D_FORMAT_PLOT3D, "plot3d", ".xyz", kPlot3dFlags, write_plot3d, nullptr, nullptr, nullptr, write_plot3d_blocks},
     {EG2D_FORMAT_PLOT3D_ASCII, "plot3d-ascii", ".p3d", EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI | EG2D_PLOT3D_EXTRUDED,
-     write_plot3d_ascii},
+     write_plot3d_ascii, nullptr, nullptr, nullptr, write_plot3d_ascii_blocks},
     {EG2D_FORMAT_VTS, "vts", ".vts", 0, write_vts},
     {EG2D_FORMAT_CGNS, "cgns", ".cgns", 0, write_cgns},
     {EG2D_FORMAT_GMV, "gmv", ".gmv", 0, write_gmv},
@@ -48,17 +50,22 @@ Table<FileFormat> format_table() { return table_of(kFormats); }
 
 const FileFormat *find_format(int id) { return format_table().find(id); }
 
+SetWriting set_writing(int id) {
+    const FileFormat *f = id >= 0 ? find_format(id & kFormatMask) : nullptr;
+    if (!f) fail(Failure::Argument, format("format = %d: no such file format", id));
+    if (f->write_mesh || f->write_mesh_directory) return SetWriting::Mesh;
+    if (f->write_blocks) return SetWriting::Zones;
+    std::string can;
+    for (const FileFormat &k : format_table())
+        if (k.write_mesh || k.write_mesh_directory || k.write_blocks) can += std::string(can.empty() ? "" : ", ") + k.name;
+    fail(Failure::Unsupported, format("the %s format cannot hold a set of blocks (%s can; or write each block's grid)",
+                                      f->name, can.c_str()));
+}
+
 void write_mesh(const UnstructuredMesh &mesh, const Settings &settings, const std::string &title, const char *path,
                 int id) {
-    const FileFormat *f = id >= 0 ? find_format(id) : nullptr;
-    if (!f) fail(Failure::Argument, format("format = %d: no such file format", id));
-    if (!f->write_mesh && !f->write_mesh_directory) {
-        std::string can;
-        for (const FileFormat &k : format_table())
-            if (k.write_mesh || k.write_mesh_directory) can += std::string(can.empty() ? "" : ", ") + k.name;
-        fail(Failure::Unsupported, format("the %s format cannot hold a set of blocks as one mesh (%s can; or write "
-                                          "each block's grid)", f->name, can.c_str()));
-    }
+    const FileFormat *f = find_format(id & kFormatMask);
+    if (id & ~kFormatMask) fail(Failure::Argument, format("format = %#x: the %s format takes no flags", id, f->name));
     if (!*path) fail(Failure::Argument, "path is empty");
     const MeshRequest r{mesh, settings, title};
     if (f->write_mesh_directory) {
@@ -67,6 +74,17 @@ void write_mesh(const UnstructuredMesh &mesh, const Settings &settings, const st
     }
     OutputFile out(path);
     f->write_mesh(r, out);
+    out.commit();
+}
+
+void write_blocks(const std::vector<const Grid *> &grids, const Settings &settings, const char *path, int id) {
+    const FileFormat *f = find_format(id & kFormatMask);
+    const int flags = id & ~kFormatMask;
+    if (flags & ~f->allowed_flags)
+        fail(Failure::Argument, format("format = %#x: flags %#x do not apply to the %s format", id,
+                                       flags & ~f->allowed_flags, f->name));
+    OutputFile out(path);
+    f->write_blocks(BlocksRequest{grids, settings, flags}, out);
     out.commit();
 }
 

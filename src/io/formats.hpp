@@ -3,6 +3,7 @@
 // variant flags (EG2D_PLOT3D_*, OR-ed into the id) lists them.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "base/settings.hpp"
 #include "base/grid.hpp"
@@ -34,6 +35,13 @@ struct MeshRequest {
     const std::string &title;
 };
 
+// Grids to write into one file, one zone each (a set of blocks).
+struct BlocksRequest {
+    std::vector<const Grid *> grids;
+    const Settings &settings;
+    int flags;
+};
+
 struct FileFormat {
     int id;                 // EG2D_FORMAT_*
     const char *name;       // list name: "plot3d-ascii"
@@ -48,15 +56,24 @@ struct FileFormat {
     // the mesh (a file, or a directory of files).
     void (*write_mesh)(const MeshRequest &request, OutputFile &out) = nullptr;
     void (*write_mesh_directory)(const MeshRequest &request, const std::string &directory) = nullptr;
+    // A format with several zones in one file writes a set of blocks one zone a block.
+    void (*write_blocks)(const BlocksRequest &request, OutputFile &out) = nullptr;
 };
 
 Table<FileFormat> format_table();  // in increasing id order
 // nullptr if there is no format with that id.
 const FileFormat *find_format(int id);
 
-// Writes a merged mesh (a set of blocks) to path in the format id, which
-// must have a mesh writer (Failure::Unsupported naming those that do).
+// A set of blocks: whether the format writes them as one merged mesh
+// (write_mesh) or a zone a block (write_blocks); Failure::Argument for no
+// such format, Unsupported naming the formats that hold a set for one that
+// does neither.
+enum class SetWriting { Mesh, Zones };
+SetWriting set_writing(int id);
+// Writes a merged mesh (a set of blocks) to path in the format id.
 void write_mesh(const UnstructuredMesh &mesh, const Settings &settings, const std::string &title, const char *path, int id);
+// Writes the blocks a zone each to path in the format (id | flags).
+void write_blocks(const std::vector<const Grid *> &grids, const Settings &settings, const char *path, int id);
 
 // Writes the grid to path in the format (id | flags); all-or-nothing.
 void write_grid(const Grid &grid, const Settings &settings, const char *path, int id,

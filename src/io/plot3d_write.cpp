@@ -1,6 +1,6 @@
 // Plot3D writers: Fortran-unformatted binary and ASCII, 2D or 3D (one
 // k-plane, z = 0, or two, z = 0 and the span), single- or multi-grid header
-// (layout in plot3d.hpp).
+// (layout in plot3d.hpp); a set of blocks as a multi-grid file.
 #include <cstdint>
 #include <vector>
 
@@ -52,49 +52,67 @@ private:
 // without -2D need); EG2D_PLOT3D_3D alone: one k-plane, z = 0.
 int k_planes(int flags) { return (flags & EG2D_PLOT3D_EXTRUDED) ? 2 : (flags & EG2D_PLOT3D_3D) ? 1 : 0; }
 
-std::vector<std::int32_t> dimensions(const Grid &g, int planes) {
-    std::vector<std::int32_t> d{g.ni(), g.nj()};
-    if (planes > 0) d.push_back(planes);
+std::vector<std::int32_t> dimensions(const std::vector<const Grid *> &grids, int planes) {
+    std::vector<std::int32_t> d;
+    for (const Grid *g : grids) {
+        d.push_back(g->ni());
+        d.push_back(g->nj());
+        if (planes > 0) d.push_back(planes);
+    }
     return d;
 }
 
 // x, y, z of every k-plane in turn (Fortran order: i fastest, then j, then k).
-std::vector<std::vector<double>> columns(const WriteRequest &r, int planes) {
-    const std::size_t n = r.grid.size();
-    if (planes == 0) return {r.grid.x, r.grid.y};
+std::vector<std::vector<double>> columns(const Grid &g, double span, int planes) {
+    const std::size_t n = g.size();
+    if (planes == 0) return {g.x, g.y};
     std::vector<std::vector<double>> c(3);
     for (int k = 0; k < planes; ++k) {
-        c[0].insert(c[0].end(), r.grid.x.begin(), r.grid.x.end());
-        c[1].insert(c[1].end(), r.grid.y.begin(), r.grid.y.end());
-        c[2].insert(c[2].end(), n, k == 0 ? 0.0 : r.settings.span);
+        c[0].insert(c[0].end(), g.x.begin(), g.x.end());
+        c[1].insert(c[1].end(), g.y.begin(), g.y.end());
+        c[2].insert(c[2].end(), n, k == 0 ? 0.0 : span);
     }
     return c;
 }
 }  // namespace
 
-void write_plot3d(const WriteRequest &r, OutputFile &out) {
+// A multi-grid file (the block count first) when asked or when there are
+// several grids: every block's dimensions in one record, then each block's
+// coordinates in a record of its own.
+void write_plot3d_blocks(const BlocksRequest &r, OutputFile &out) {
     const bool single = r.flags & EG2D_PLOT3D_SINGLE;
     const int planes = k_planes(r.flags);
     RecordWriter rec(out, r.flags & EG2D_PLOT3D_BIG_ENDIAN, !(r.flags & EG2D_PLOT3D_NO_MARKERS));
-    if (r.flags & EG2D_PLOT3D_MULTI) rec.ints({1});
-    rec.ints(dimensions(r.grid, planes));
-    const std::vector<std::vector<double>> c = columns(r, planes);
-    const std::size_t real = single ? 4 : 8;
-    rec.begin(c[0].size() * real * c.size());
-    for (const std::vector<double> &v : c) {
-        if (single) rec.reals<float>(v);
-        else rec.reals<double>(v);
+    if ((r.flags & EG2D_PLOT3D_MULTI) || r.grids.size() > 1) rec.ints({static_cast<std::int32_t>(r.grids.size())});
+    rec.ints(dimensions(r.grids, planes));
+    for (const Grid *g : r.grids) {
+        const std::vector<std::vector<double>> c = columns(*g, r.settings.span, planes);
+        const std::size_t real = single ? 4 : 8;
+        rec.begin(c[0].size() * real * c.size());
+        for (const std::vector<double> &v : c) {
+            if (single) rec.reals<float>(v);
+            else rec.reals<double>(v);
+        }
+        rec.end();
     }
-    rec.end();
+}
+
+void write_plot3d_ascii_blocks(const BlocksRequest &r, OutputFile &out) {
+    const int planes = k_planes(r.flags);
+    if ((r.flags & EG2D_PLOT3D_MULTI) || r.grids.size() > 1) out.print("%zu\n", r.grids.size());
+    for (std::int32_t d : dimensions(r.grids, planes)) out.print("%d ", d);
+    out.print("\n");
+    for (const Grid *g : r.grids)
+        for (const std::vector<double> &v : columns(*g, r.settings.span, planes))
+            for (std::size_t k = 0; k < v.size(); ++k) out.real(v[k], (k % 4 == 3 || k + 1 == v.size()) ? '\n' : ' ');
+}
+
+void write_plot3d(const WriteRequest &r, OutputFile &out) {
+    write_plot3d_blocks(BlocksRequest{{&r.grid}, r.settings, r.flags}, out);
 }
 
 void write_plot3d_ascii(const WriteRequest &r, OutputFile &out) {
-    const int planes = k_planes(r.flags);
-    if (r.flags & EG2D_PLOT3D_MULTI) out.print("1\n");
-    for (std::int32_t d : dimensions(r.grid, planes)) out.print("%d ", d);
-    out.print("\n");
-    for (const std::vector<double> &v : columns(r, planes))
-        for (std::size_t k = 0; k < v.size(); ++k) out.real(v[k], (k % 4 == 3 || k + 1 == v.size()) ? '\n' : ' ');
+    write_plot3d_ascii_blocks(BlocksRequest{{&r.grid}, r.settings, r.flags}, out);
 }
 
 }  // namespace eg2d

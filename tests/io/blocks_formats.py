@@ -10,7 +10,10 @@ write_block_samples.c), then:
     markers wall, inlet and outlet with their edge counts;
   OpenFOAM: checkMesh says "Mesh OK.", one region (the joins are interior
     faces), upper-triangular order, its patch table wall, inlet, outlet and
-    frontAndBack with their face counts.
+    frontAndBack with their face counts;
+  Plot3D: the three zones read by OpenFOAM's plot3dToFoam (which merges
+    the points zones share), then checkMesh: "Mesh OK.", one region, the
+    cells, and the boundary faces less the joins'.
 The counts come from the blocks' sizes (OUTDIR/step.txt)."""
 import os
 import re
@@ -85,6 +88,22 @@ def main():
     skew = re.search(r"Max skewness = (\S+)", log)
     print(f"     checkMesh: non-orthogonality max {non_orth.group(1) if non_orth else '?'}, "
           f"skewness max {skew.group(1) if skew else '?'}")
+
+    # The blocks as the zones of a one-cell-thick Plot3D file, through
+    # OpenFOAM's plot3dToFoam (which merges the points the zones share).
+    p3 = os.path.join(out, "step_p3d")
+    os.makedirs(os.path.join(p3, "constant"))
+    shutil.copytree(os.path.join(case, "system"), os.path.join(p3, "system"))
+    p = subprocess.run([os.path.join(os.path.dirname(checkmesh), "plot3dToFoam"), "-case", p3, "-noBlank",
+                        os.path.join(out, "step.p3d")], capture_output=True, text=True, env=env)
+    check(p.returncode == 0, f"plot3d: plot3dToFoam reads the three zones, exit {p.returncode}")
+    log = subprocess.run([checkmesh, "-case", p3], capture_output=True, text=True, env=env).stdout
+    m = re.search(r"^\s*cells:\s+(\d+)", log, re.M)
+    f = re.search(r"^\s+defaultFaces\s+(\d+)", log, re.M)
+    faces = 2 * cells + wall + inlet + outlet
+    check("\nMesh OK." in log and "Number of regions: 1 (OK)." in log and m and int(m.group(1)) == cells
+          and f and int(f.group(1)) == faces,
+          f"plot3d: checkMesh \"Mesh OK.\", one region, {cells} cells, {faces} boundary faces (the joins merged)")
     return 1 if failures else 0
 
 

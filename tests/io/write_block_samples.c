@@ -4,7 +4,8 @@
  * (blocks 25x41, 81x41 and 81x17), solved, with the patches: "wall" on
  * every wall (the floors, the top, the step's face), "inlet" (block 0's
  * IMIN), "outlet" (blocks 1 and 2's IMAX); the joins none. Writes
- * DIR/step.su2 and the OpenFOAM case DIR/step_foam, and DIR/step.txt:
+ * DIR/step.su2, the OpenFOAM case DIR/step_foam, the three blocks as zones
+ * of the one-cell-thick ASCII Plot3D DIR/step.p3d, and DIR/step.txt:
  * "cells points wall inlet outlet", the counts worked out here from the
  * blocks. Then refuses EG2D_FORMAT_VTS for a set (EG2D_ERR_UNSUPPORTED). */
 #include <stdio.h>
@@ -50,9 +51,12 @@ int main(int argc, char **argv) {
     check(eg2d_blocks_write(set, EG2D_FORMAT_SU2, path), path, eg2d_blocks_last_error(set));
     snprintf(path, sizeof path, "%s/step_foam", argv[1]);
     check(eg2d_blocks_write(set, EG2D_FORMAT_OPENFOAM, path), path, eg2d_blocks_last_error(set));
+    snprintf(path, sizeof path, "%s/step.p3d", argv[1]);
+    check(eg2d_blocks_write(set, EG2D_FORMAT_PLOT3D_ASCII | EG2D_PLOT3D_EXTRUDED, path), path, eg2d_blocks_last_error(set));
     snprintf(path, sizeof path, "%s/step.vts", argv[1]);
     if (eg2d_blocks_write(set, EG2D_FORMAT_VTS, path) != EG2D_ERR_UNSUPPORTED ||
-        !strstr(eg2d_blocks_last_error(set), "the vts format cannot hold a set of blocks as one mesh (su2, openfoam can")) {
+        !strstr(eg2d_blocks_last_error(set),
+                "the vts format cannot hold a set of blocks (plot3d, plot3d-ascii, su2, openfoam can")) {
         fprintf(stderr, "VTS for a set: \"%s\"\n", eg2d_blocks_last_error(set));
         return 1;
     }
