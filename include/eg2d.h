@@ -1228,7 +1228,9 @@ EG2D_API int eg2d_blocks_get_kinks(const eg2d_blocks *set, double *at_joins, dou
  * blocks' patches (eg2d_set_patch on each block; those of the same name
  * one patch, the joined edges in none) the boundary. EG2D_FORMAT_PLOT3D
  * and _PLOT3D_ASCII (with their flags) hold a zone a block, in block
- * order, in a multi-grid file. Any other format: EG2D_ERR_UNSUPPORTED
+ * order, in a multi-grid file; EG2D_FORMAT_CGNS a zone a block ("block0",
+ * ...) with its boundary conditions less the joined edges and each join
+ * as a 1-to-1 connection from both zones. Any other format: EG2D_ERR_UNSUPPORTED
  * naming those (write each block's grid with eg2d_write). EG2D_ERR_STATE
  * unless the set checks and every block is initialised; EG2D_ERR_IO as
  * eg2d_write. All or nothing, as eg2d_write. */

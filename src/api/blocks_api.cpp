@@ -136,7 +136,10 @@ EG2D_API int eg2d_blocks_write(const eg2d_blocks *set, int file_format, const ch
         if (how == SetWriting::Zones) {
             std::vector<const Grid *> grids;
             for (const MeshBlock &mb : blocks) grids.push_back(mb.grid);
-            write_blocks(grids, bs.block(0)->settings, path, file_format);
+            std::vector<ZoneJoin> joins;
+            for (const Join &j : bs.joins())
+                joins.push_back(ZoneJoin{j.a.block, j.a.side, j.a.first, j.a.last, j.b.block, j.b.side, j.b.first, j.b.last});
+            write_blocks(grids, joins, bs.block(0)->settings, path, file_format);
             return;
         }
         std::vector<MeshTwin> twins;

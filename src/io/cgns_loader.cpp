@@ -5,6 +5,8 @@
 // of the process; a failed one is retried on the next call.
 #include <dlfcn.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <mutex>
 #include <string>
@@ -27,37 +29,43 @@ std::string own_directory() {
     return slash == std::string::npos ? "" : file.substr(0, slash);
 }
 
-eg2d_cgns_write_fn try_load(const std::string &file, std::string &why) {
+struct Plugin {
+    eg2d_cgns_write_fn write = nullptr;
+    eg2d_cgns_write_zones_fn write_zones = nullptr;
+};
+
+Plugin try_load(const std::string &file, std::string &why) {
     void *h = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!h) {
         const char *e = dlerror();
         why += format("\n  %s: %s", file.c_str(), e ? e : "cannot load");
-        return nullptr;
+        return {};
     }
     auto abi = reinterpret_cast<eg2d_cgns_abi_fn>(dlsym(h, "eg2d_cgns_plugin_abi"));
-    auto write = reinterpret_cast<eg2d_cgns_write_fn>(dlsym(h, "eg2d_cgns_plugin_write"));
-    if (!abi || !write || abi() != EG2D_CGNS_PLUGIN_ABI) {
+    Plugin p{reinterpret_cast<eg2d_cgns_write_fn>(dlsym(h, "eg2d_cgns_plugin_write")),
+             reinterpret_cast<eg2d_cgns_write_zones_fn>(dlsym(h, "eg2d_cgns_plugin_write_zones"))};
+    if (!abi || !p.write || !p.write_zones || abi() != EG2D_CGNS_PLUGIN_ABI) {
         why += format("\n  %s: not an eg2d CGNS plugin of ABI %d", file.c_str(), EG2D_CGNS_PLUGIN_ABI);
         dlclose(h);
-        return nullptr;
+        return {};
     }
-    return write;
+    return p;
 }
 
-eg2d_cgns_write_fn load_plugin() {
+Plugin load_plugin() {
     static std::mutex lock;
-    static eg2d_cgns_write_fn loaded = nullptr;
+    static Plugin loaded;
     std::lock_guard<std::mutex> hold(lock);
-    if (loaded) return loaded;
+    if (loaded.write) return loaded;
     std::string why;
     if (const char *dir = std::getenv("EG2D_PLUGIN_DIR")) {
         loaded = try_load(std::string(dir) + "/" + EG2D_CGNS_PLUGIN_NAME, why);
     } else {
         const std::string own = own_directory();
         if (!own.empty()) loaded = try_load(own + "/" + EG2D_CGNS_PLUGIN_NAME, why);
-        if (!loaded) loaded = try_load(EG2D_CGNS_PLUGIN_NAME, why);
+        if (!loaded.write) loaded = try_load(EG2D_CGNS_PLUGIN_NAME, why);
     }
-    if (!loaded)
+    if (!loaded.write)
         fail(Failure::Unsupported,
              format("EG2D_FORMAT_CGNS needs the optional plugin %s (built when libcgns is found, installed next to "
                     "libeg2d), and it could not be loaded:%s",
@@ -72,8 +80,35 @@ struct CgnsBoundary {
     std::vector<eg2d_cgns_connection> connections;
 };
 
-CgnsBoundary cgns_boundary(const Grid &g) {
-    const std::vector<Patch> resolved = resolve_patches(g);
+// A 1-based node range {i1, j1, i2, j2} of nodes first..last of side s.
+void side_range(const Grid &g, Side s, int first, int last, int *range) {
+    const NodeIJ a = side_ij(g.ni(), g.nj(), s, first), e = side_ij(g.ni(), g.nj(), s, last);
+    range[0] = a.i + 1;
+    range[1] = a.j + 1;
+    range[2] = e.i + 1;
+    range[3] = e.j + 1;
+}
+
+// The patches' stretches less the edges `joined` marks (per side, edge q:
+// nodes q..q+1; empty: none), split where a join cuts one.
+std::vector<Patch> unjoined(const std::vector<Patch> &resolved, const std::array<std::vector<char>, 4> *joined) {
+    if (!joined) return resolved;
+    std::vector<Patch> out;
+    for (const Patch &p : resolved) {
+        const std::vector<char> &e = (*joined)[static_cast<std::size_t>(p.side)];
+        int q = p.first;
+        while (q < p.last) {
+            while (q < p.last && !e.empty() && e[static_cast<std::size_t>(q)]) ++q;
+            const int start = q;
+            while (q < p.last && (e.empty() || !e[static_cast<std::size_t>(q)])) ++q;
+            if (q > start) out.push_back(Patch{p.side, start, q, p.type, p.name});
+        }
+    }
+    return out;
+}
+
+CgnsBoundary cgns_boundary(const Grid &g, const std::array<std::vector<char>, 4> *joined = nullptr) {
+    const std::vector<Patch> resolved = unjoined(resolve_patches(g), joined);
     const std::vector<PatchGroup> groups = group_patches(resolved);
     CgnsBoundary b;
     b.names.reserve(2 * resolved.size() + 4);  // c_str()s stay valid: no reallocation
@@ -97,22 +132,96 @@ CgnsBoundary cgns_boundary(const Grid &g) {
         }
     // Each cut from both of its sides, as the SIDS list a 1-to-1 interface.
     if (g.topology() == Topology::O) {
-        b.connections.push_back({"cut_imin", {1, 1, 1, nj}, {ni, 1, ni, nj}, {1, 2}});
-        b.connections.push_back({"cut_imax", {ni, 1, ni, nj}, {1, 1, 1, nj}, {1, 2}});
+        b.connections.push_back({"cut_imin", "eg2d", {1, 1, 1, nj}, {ni, 1, ni, nj}, {1, 2}});
+        b.connections.push_back({"cut_imax", "eg2d", {ni, 1, ni, nj}, {1, 1, 1, nj}, {1, 2}});
     } else if (g.topology() == Topology::C) {
         // Lower wake i = 0..w runs outflow to trailing edge; the upper wake
         // i = ni-1-w..ni-1 back out: i maps to ni-1-i, and across the cut
         // +j on one side is -j on the other.
         const int w = g.cut_wake();
-        b.connections.push_back({"wake_lower", {1, 1, w + 1, 1}, {ni, 1, ni - w, 1}, {-1, -2}});
-        b.connections.push_back({"wake_upper", {ni - w, 1, ni, 1}, {w + 1, 1, 1, 1}, {-1, -2}});
+        b.connections.push_back({"wake_lower", "eg2d", {1, 1, w + 1, 1}, {ni, 1, ni - w, 1}, {-1, -2}});
+        b.connections.push_back({"wake_upper", "eg2d", {ni - w, 1, ni, 1}, {w + 1, 1, 1, 1}, {-1, -2}});
     }
     return b;
 }
+
+// SIDS's short transform of a join seen from block a: a's normal index
+// (outward from its side) is b's normal index inward; a's index along the
+// side is b's along its side, the same way when both ranges run alike.
+void join_transform(const ZoneJoin &j, int *t) {
+    auto normal = [](Side s) { return (s == Side::IMin || s == Side::IMax) ? 1 : 2; };
+    auto outward = [](Side s) { return (s == Side::IMax || s == Side::JMax) ? 1 : -1; };
+    const int step_a = j.first_a <= j.last_a ? 1 : -1, step_b = j.first_b <= j.last_b ? 1 : -1;
+    t[normal(j.side_a) - 1] = -outward(j.side_a) * outward(j.side_b) * normal(j.side_b);
+    t[2 - normal(j.side_a)] = step_a * step_b * (3 - normal(j.side_b));
+}
 }  // namespace
 
+// A set of blocks: a zone a block ("block0", ...), its patches less the
+// joined edges, each join a 1-to-1 connection listed from both zones.
+void write_cgns_blocks(const BlocksRequest &r, OutputFile &out) {
+    const Plugin plugin = load_plugin();
+    const std::size_t n = r.grids.size();
+    std::vector<std::array<std::vector<char>, 4>> joined(n);
+    for (std::size_t b = 0; b < n; ++b)
+        for (int s = 0; s < 4; ++s)
+            joined[b][static_cast<std::size_t>(s)].assign(static_cast<std::size_t>(r.grids[b]->side_length(Side(s))), 0);
+    for (const ZoneJoin &j : r.joins)
+        for (int k = 0; k < 2; ++k) {
+            const int first = k == 0 ? j.first_a : j.first_b, last = k == 0 ? j.last_a : j.last_b;
+            std::vector<char> &e = joined[static_cast<std::size_t>(k == 0 ? j.a : j.b)][static_cast<std::size_t>(k == 0 ? j.side_a : j.side_b)];
+            for (int q = std::min(first, last); q < std::max(first, last); ++q) e[static_cast<std::size_t>(q)] = 1;
+        }
+    std::vector<std::string> zone_names;
+    for (std::size_t b = 0; b < n; ++b) zone_names.push_back(format("block%zu", b));
+    std::vector<CgnsBoundary> boundaries;
+    std::vector<std::vector<CellField>> fields(n);
+    std::vector<std::vector<const char *>> names(n);
+    std::vector<std::vector<const double *>> values(n);
+    for (std::size_t b = 0; b < n; ++b) {
+        boundaries.push_back(cgns_boundary(*r.grids[b], &joined[b]));
+        fields[b] = cell_fields(*r.grids[b]);
+        for (const CellField &f : fields[b]) {
+            names[b].push_back(f.name.c_str());
+            values[b].push_back(f.values.data());
+        }
+    }
+    std::vector<std::string> join_names;
+    join_names.reserve(r.joins.size());
+    for (std::size_t k = 0; k < r.joins.size(); ++k) join_names.push_back(format("join%zu", k + 1));
+    for (std::size_t k = 0; k < r.joins.size(); ++k) {
+        const ZoneJoin &j = r.joins[k];
+        const Grid &ga = *r.grids[static_cast<std::size_t>(j.a)], &gb = *r.grids[static_cast<std::size_t>(j.b)];
+        eg2d_cgns_connection ca{join_names[k].c_str(), zone_names[static_cast<std::size_t>(j.b)].c_str(), {}, {}, {}};
+        side_range(ga, j.side_a, j.first_a, j.last_a, ca.range);
+        side_range(gb, j.side_b, j.first_b, j.last_b, ca.donor);
+        join_transform(j, ca.transform);
+        const ZoneJoin back{j.b, j.side_b, j.first_b, j.last_b, j.a, j.side_a, j.first_a, j.last_a};
+        eg2d_cgns_connection cb{join_names[k].c_str(), zone_names[static_cast<std::size_t>(j.a)].c_str(), {}, {}, {}};
+        side_range(gb, j.side_b, j.first_b, j.last_b, cb.range);
+        side_range(ga, j.side_a, j.first_a, j.last_a, cb.donor);
+        join_transform(back, cb.transform);
+        boundaries[static_cast<std::size_t>(j.a)].connections.push_back(ca);
+        boundaries[static_cast<std::size_t>(j.b)].connections.push_back(cb);
+    }
+    std::vector<eg2d_cgns_zone> zones;
+    for (std::size_t b = 0; b < n; ++b) {
+        const Grid &g = *r.grids[b];
+        const CgnsBoundary &bd = boundaries[b];
+        zones.push_back(eg2d_cgns_zone{zone_names[b].c_str(), g.ni(), g.nj(), g.x.data(), g.y.data(),
+                                       static_cast<int>(names[b].size()), names[b].data(), values[b].data(),
+                                       static_cast<int>(bd.patches.size()), bd.patches.data(),
+                                       static_cast<int>(bd.connections.size()), bd.connections.data()});
+    }
+    out.close_stream();  // the plugin writes the temporary by its name
+    char message[512] = "";
+    if (plugin.write_zones(out.temp_path().c_str(), static_cast<int>(zones.size()), zones.data(), message,
+                           sizeof message) != 0)
+        fail(Failure::Io, format("%s: %s", out.path().c_str(), message));
+}
+
 void write_cgns(const WriteRequest &r, OutputFile &out) {
-    const eg2d_cgns_write_fn write = load_plugin();
+    const eg2d_cgns_write_fn write = load_plugin().write;
     const std::vector<CellField> fields = cell_fields(r.grid);
     std::vector<const char *> names;
     std::vector<const double *> values;

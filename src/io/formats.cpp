@@ -12,6 +12,7 @@ void write_plot3d_blocks(const BlocksRequest &r, OutputFile &out);
 void write_plot3d_ascii_blocks(const BlocksRequest &r, OutputFile &out);
 void write_vts(const WriteRequest &r, OutputFile &out);           // vts.cpp
 void write_cgns(const WriteRequest &r, OutputFile &out);          // cgns_loader.cpp
+void write_cgns_blocks(const BlocksRequest &r, OutputFile &out);
 void write_gmv(const WriteRequest &r, OutputFile &out);           // gmv.cpp
 void write_matlab(const WriteRequest &r, OutputFile &out);        // matlab.cpp
 void write_svg(const WriteRequest &r, OutputFile &out);           // svg.cpp
@@ -35,7 +36,7 @@ const FileFormat kFormats[] = {
     {EG2D_FORMAT_PLOT3D_ASCII, "plot3d-ascii", ".p3d", EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI | EG2D_PLOT3D_EXTRUDED,
      write_plot3d_ascii, nullptr, nullptr, nullptr, write_plot3d_ascii_blocks},
     {EG2D_FORMAT_VTS, "vts", ".vts", 0, write_vts},
-    {EG2D_FORMAT_CGNS, "cgns", ".cgns", 0, write_cgns},
+    {EG2D_FORMAT_CGNS, "cgns", ".cgns", 0, write_cgns, nullptr, nullptr, nullptr, write_cgns_blocks},
     {EG2D_FORMAT_GMV, "gmv", ".gmv", 0, write_gmv},
     {EG2D_FORMAT_MATLAB, "matlab", ".m", 0, write_matlab},
     {EG2D_FORMAT_SVG, "svg", ".svg", 0, write_svg},
@@ -77,14 +78,15 @@ void write_mesh(const UnstructuredMesh &mesh, const Settings &settings, const st
     out.commit();
 }
 
-void write_blocks(const std::vector<const Grid *> &grids, const Settings &settings, const char *path, int id) {
+void write_blocks(const std::vector<const Grid *> &grids, const std::vector<ZoneJoin> &joins, const Settings &settings,
+                  const char *path, int id) {
     const FileFormat *f = find_format(id & kFormatMask);
     const int flags = id & ~kFormatMask;
     if (flags & ~f->allowed_flags)
         fail(Failure::Argument, format("format = %#x: flags %#x do not apply to the %s format", id,
                                        flags & ~f->allowed_flags, f->name));
     OutputFile out(path);
-    f->write_blocks(BlocksRequest{grids, settings, flags}, out);
+    f->write_blocks(BlocksRequest{grids, settings, flags, joins}, out);
     out.commit();
 }
 

@@ -35,11 +35,24 @@ struct MeshRequest {
     const std::string &title;
 };
 
+// Nodes first_a..last_a of side side_a of grid a are nodes first_b..last_b
+// of side side_b of grid b (a set of blocks' join, for the formats that
+// record connections).
+struct ZoneJoin {
+    int a;
+    Side side_a;
+    int first_a, last_a;
+    int b;
+    Side side_b;
+    int first_b, last_b;
+};
+
 // Grids to write into one file, one zone each (a set of blocks).
 struct BlocksRequest {
     std::vector<const Grid *> grids;
     const Settings &settings;
     int flags;
+    std::vector<ZoneJoin> joins = {};
 };
 
 struct FileFormat {
@@ -73,7 +86,8 @@ SetWriting set_writing(int id);
 // Writes a merged mesh (a set of blocks) to path in the format id.
 void write_mesh(const UnstructuredMesh &mesh, const Settings &settings, const std::string &title, const char *path, int id);
 // Writes the blocks a zone each to path in the format (id | flags).
-void write_blocks(const std::vector<const Grid *> &grids, const Settings &settings, const char *path, int id);
+void write_blocks(const std::vector<const Grid *> &grids, const std::vector<ZoneJoin> &joins, const Settings &settings,
+                  const char *path, int id);
 
 // Writes the grid to path in the format (id | flags); all-or-nothing.
 void write_grid(const Grid &grid, const Settings &settings, const char *path, int id,

@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """A set of blocks written as one mesh, checked by readers eg2d did not write.
 
-Usage: blocks_formats.py WRITE_BLOCK_SAMPLES OUTDIR
-Runs WRITE_BLOCK_SAMPLES OUTDIR (a backward-facing step in three blocks;
-write_block_samples.c), then:
+Usage: blocks_formats.py WRITE_BLOCK_SAMPLES OUTDIR cgns|no-cgns [CGNSCHECK]
+Runs WRITE_BLOCK_SAMPLES OUTDIR (a backward-facing step in three blocks,
+and a pair of blocks one turned by 90 degrees; write_block_samples.c), then:
   SU2: meshio reads the points (the joined nodes once) and the quads, every
     quad counter-clockwise, no edge in more than two quads, the boundary
     edges (those of one quad) exactly the markers' edges, each once, the
@@ -13,7 +13,11 @@ write_block_samples.c), then:
     frontAndBack with their face counts;
   Plot3D: the three zones read by OpenFOAM's plot3dToFoam (which merges
     the points zones share), then checkMesh: "Mesh OK.", one region, the
-    cells, and the boundary faces less the joins'.
+    cells, and the boundary faces less the joins';
+  CGNS: cgnscheck reports no error (it checks each 1-to-1 transform against
+    its ranges) and `cgnscheck -v` lists a zone a block, the boundary
+    conditions less the joined sides, and each join from both zones with
+    its transform ([1,2] on the step, [2,-1] and [-2,1] on the turned pair).
 The counts come from the blocks' sizes (OUTDIR/step.txt)."""
 import os
 import re
@@ -23,20 +27,16 @@ import sys
 
 import numpy as np
 
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from solver_formats import check, checkmesh_env, failures, run_cgnscheck  # noqa: E402
 
 
 def main():
-    writer, out = sys.argv[1], sys.argv[2]
+    writer, out, with_cgns = sys.argv[1], sys.argv[2], sys.argv[3] == "cgns"
+    cgnscheck = sys.argv[4] if len(sys.argv) > 4 else None
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
-    subprocess.run([writer, out], check=True)
+    subprocess.run([writer, out] + ([] if with_cgns else ["no-cgns"]), check=True)
     with open(os.path.join(out, "step.txt")) as f:
         cells, points, wall, inlet, outlet = map(int, f.read().split())
     patches = {"wall": wall, "inlet": inlet, "outlet": outlet}
@@ -68,9 +68,7 @@ def main():
           f"su2: {len(marked)} marker edges, each once, are the {len(boundary)} boundary edges")
 
     checkmesh = shutil.which("checkMesh") or "/usr/bin/checkMesh"
-    env = dict(os.environ)
-    if "WM_PROJECT_DIR" not in env and os.path.isdir("/usr/share/openfoam/etc"):
-        env["WM_PROJECT_DIR"] = "/usr/share/openfoam"
+    env = checkmesh_env()
     case = os.path.join(out, "step_foam")
     p = subprocess.run([checkmesh, "-case", case], capture_output=True, text=True, env=env)
     log = p.stdout + p.stderr
@@ -104,7 +102,39 @@ def main():
     check("\nMesh OK." in log and "Number of regions: 1 (OK)." in log and m and int(m.group(1)) == cells
           and f and int(f.group(1)) == faces,
           f"plot3d: checkMesh \"Mesh OK.\", one region, {cells} cells, {faces} boundary faces (the joins merged)")
+    if with_cgns and cgnscheck:
+        check_cgns(out, cgnscheck)
     return 1 if failures else 0
+
+
+def check_cgns(out, cgnscheck):
+    for name, zones, bcs, conns in [
+        ("step", ["block0", "block1", "block2"],
+         {"block0": {"wall": "1:25,1:1", "wall_2": "1:25,41:41", "inlet": "1:1,1:41"},
+          "block1": {"wall": "1:81,41:41", "outlet": "81:81,1:41"},
+          "block2": {"wall": "1:81,1:1", "wall_2": "1:1,1:17", "outlet": "81:81,1:17"}},
+         {("block0", "join1"): ("25:25,1:41", "block1", "1:1,1:41", "1,2"),
+          ("block1", "join1"): ("1:1,1:41", "block0", "25:25,1:41", "1,2"),
+          ("block1", "join2"): ("1:81,1:1", "block2", "1:81,17:17", "1,2"),
+          ("block2", "join2"): ("1:81,17:17", "block1", "1:81,1:1", "1,2")}),
+        ("turned", ["block0", "block1"], None,
+         {("block0", "join1"): ("9:9,1:9", "block1", "9:1,1:1", "2,-1"),
+          ("block1", "join1"): ("9:1,1:1", "block0", "9:9,1:9", "-2,1")})]:
+        log = run_cgnscheck(out, name, cgnscheck)
+        # Split the verbose listing by zone.
+        parts = re.split(r'^checking zone "(\w+)"', log, flags=re.M)
+        by_zone = {parts[k]: parts[k + 1] for k in range(1, len(parts) - 1, 2)}
+        check(list(by_zone) == zones, f"cgns {name}: zones {list(by_zone)} == {zones}")
+        got_conns = {}
+        got_bcs = {}
+        for z, text in by_zone.items():
+            for m in re.findall(r'checking 1to1 connectivity "(\w+)"\s+Range=\[([^\]]*)\].*?Donor Name=(\w+)'
+                                r'\s+Donor Range=\[([^\]]*)\].*?Transform=\[([^\]]*)\]', text, re.S):
+                got_conns[(z, m[0])] = m[1:]
+            got_bcs[z] = {m[0]: m[1] for m in re.findall(r'checking BC "(\w+)".*?Range=\[([^\]]*)\]', text, re.S)}
+        check(got_conns == conns, f"cgns {name}: 1-to-1 connections {got_conns} == {conns}")
+        if bcs is not None:
+            check(got_bcs == bcs, f"cgns {name}: boundary conditions {got_bcs} == {bcs}")
 
 
 if __name__ == "__main__":

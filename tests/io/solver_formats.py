@@ -137,9 +137,10 @@ def check_plot3d(d, name, ni, nj, wake, checkmesh):
           f"plot3d {name}: checkMesh \"Mesh OK.\", {cells} cells, {faces} boundary faces (the cut merged), span 0.5")
 
 
-def cgns_check(d, name, ni, nj, wake, cgnscheck):
-    path = os.path.join(d, name + ".cgns")
-    p = subprocess.run([cgnscheck, "-v", path], capture_output=True, text=True)
+def run_cgnscheck(d, name, cgnscheck):
+    """`cgnscheck -v` of d/name.cgns (its log kept beside it), checked to
+    report no error; returns the log."""
+    p = subprocess.run([cgnscheck, "-v", os.path.join(d, name + ".cgns")], capture_output=True, text=True)
     out = p.stdout + p.stderr
     with open(os.path.join(d, name + "_cgnscheck.log"), "w") as f:
         f.write(out)
@@ -147,6 +148,11 @@ def cgns_check(d, name, ni, nj, wake, cgnscheck):
     errors = [l for l in out.splitlines() if "ERROR" in l.upper()]
     check(p.returncode == 0 and not errors and "checking complete" in out,
           f"cgns {name}: cgnscheck exit {p.returncode}, {len(errors)} errors {errors[:3]}")
+    return out
+
+
+def cgns_check(d, name, ni, nj, wake, cgnscheck):
+    out = run_cgnscheck(d, name, cgnscheck)
     # The boundary conditions and the cut's connections as cgnscheck -v read
     # them, against ranges worked out here from the topology (1-based).
     bcs = {m[0]: (m[1], m[2]) for m in re.findall(

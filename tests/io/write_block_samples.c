@@ -1,11 +1,13 @@
 /* Writes a set of blocks as one mesh, for blocks_formats.py to check with
  * readers eg2d did not write (meshio, OpenFOAM's checkMesh). Usage:
- * write_block_samples DIR. The backward-facing step of block_domains.h
+ * write_block_samples DIR [no-cgns]. The backward-facing step of block_domains.h
  * (blocks 25x41, 81x41 and 81x17), solved, with the patches: "wall" on
  * every wall (the floors, the top, the step's face), "inlet" (block 0's
  * IMIN), "outlet" (blocks 1 and 2's IMAX); the joins none. Writes
  * DIR/step.su2, the OpenFOAM case DIR/step_foam, the three blocks as zones
- * of the one-cell-thick ASCII Plot3D DIR/step.p3d, and DIR/step.txt:
+ * of the one-cell-thick ASCII Plot3D DIR/step.p3d, a zone a block with
+ * its boundary conditions and the joins as 1-to-1 connections in
+ * DIR/step.cgns (unless no-cgns), and DIR/step.txt:
  * "cells points wall inlet outlet", the counts worked out here from the
  * blocks. Then refuses EG2D_FORMAT_VTS for a set (EG2D_ERR_UNSUPPORTED). */
 #include <stdio.h>
@@ -22,9 +24,12 @@ static void check(int status, const char *what, const char *message) {
     }
 }
 
+static void left_half(int i, int j, int *I, int *J, const int *p) { (void)p, *I = i, *J = j; }
+static void right_quarter(int i, int j, int *I, int *J, const int *p) { (void)p, *I = 8 + j, *J = 8 - i; }
+
 int main(int argc, char **argv) {
-    if (argc != 2) {
-        fprintf(stderr, "usage: write_block_samples DIR\n");
+    if (argc < 2 || argc > 3) {
+        fprintf(stderr, "usage: write_block_samples DIR [no-cgns]\n");
         return 2;
     }
     enum { UP = 25, DOWN = 81, UPPER = 41, LOWER = 17 };
@@ -53,12 +58,35 @@ int main(int argc, char **argv) {
     check(eg2d_blocks_write(set, EG2D_FORMAT_OPENFOAM, path), path, eg2d_blocks_last_error(set));
     snprintf(path, sizeof path, "%s/step.p3d", argv[1]);
     check(eg2d_blocks_write(set, EG2D_FORMAT_PLOT3D_ASCII | EG2D_PLOT3D_EXTRUDED, path), path, eg2d_blocks_last_error(set));
+    if (argc < 3 || strcmp(argv[2], "no-cgns")) {
+        snprintf(path, sizeof path, "%s/step.cgns", argv[1]);
+        check(eg2d_blocks_write(set, EG2D_FORMAT_CGNS, path), path, eg2d_blocks_last_error(set));
+    }
     snprintf(path, sizeof path, "%s/step.vts", argv[1]);
     if (eg2d_blocks_write(set, EG2D_FORMAT_VTS, path) != EG2D_ERR_UNSUPPORTED ||
         !strstr(eg2d_blocks_last_error(set),
-                "the vts format cannot hold a set of blocks (plot3d, plot3d-ascii, su2, openfoam can")) {
+                "the vts format cannot hold a set of blocks (plot3d, plot3d-ascii, cgns, su2, openfoam can")) {
         fprintf(stderr, "VTS for a set: \"%s\"\n", eg2d_blocks_last_error(set));
         return 1;
+    }
+    /* The bump in two blocks, the right one turned by 90 degrees (its JMIN
+     * joined to the left one's IMAX the other way round): a 1-to-1
+     * connection with the transform [2, -1] (block_domains.h). */
+    if (argc < 3 || strcmp(argv[2], "no-cgns")) {
+        eg2d_grid *h[2];
+        eg2d_blocks *pair = NULL;
+        const int mid = 8;
+        check(bump_block(17, 9, mid + 1, 9, left_half, NULL, &h[0]), "bump_block", eg2d_last_error(NULL));
+        check(bump_block(17, 9, 9, 17 - mid, right_quarter, NULL, &h[1]), "bump_block", eg2d_last_error(NULL));
+        int b;
+        check(eg2d_blocks_create(&pair), "eg2d_blocks_create", eg2d_last_error(NULL));
+        const int rc = eg2d_blocks_add(pair, h[0], &b) || eg2d_blocks_add(pair, h[1], &b) ||
+                       eg2d_blocks_join(pair, 0, EG2D_SIDE_IMAX, 0, 8, 1, EG2D_SIDE_JMIN, 8, 0) || eg2d_blocks_solve(pair);
+        check(rc, "the turned pair", eg2d_blocks_last_error(pair));
+        snprintf(path, sizeof path, "%s/turned.cgns", argv[1]);
+        check(eg2d_blocks_write(pair, EG2D_FORMAT_CGNS, path), path, eg2d_blocks_last_error(pair));
+        eg2d_blocks_destroy(pair);
+        eg2d_destroy(h[0]), eg2d_destroy(h[1]);
     }
     /* Cells; points: every block's nodes less one per joined node (the
      * step's corner is in both joins and three blocks: two fewer, as the
