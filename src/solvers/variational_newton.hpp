@@ -9,11 +9,16 @@
 //     Galerkin multigrid V-cycle (block_multigrid.hpp) on the convex one,
 //     or after a full step on the exact one where that hierarchy is
 //     positive definite at its coarsest level and the direction descends,
-//     and stopped at a direction of negative curvature (truncated Newton:
-//     the iterate so far still descends);
+//     inside a trust region once a step needed shortening (Steihaug 1983:
+//     stopped on its edge, or at a direction of negative curvature followed
+//     to it; without a region, truncated Newton: the iterate so far);
 //   - a line search on V (Armijo) whose first trial is, under the fold guard
 //     (EG2D_PARAM_FOLD_CHECK), at most kToFold of the way to the first
 //     corner of any cell turning flat, so no step folds a cell;
+//   - the trust region's radius from the steps the line search took and the
+//     ratio of V's actual to predicted decrease (update_radius());
+//   - nonlinear elimination after each step: point Newton sweeps where the
+//     direction was largest (eliminate());
 //   - a Levenberg shift mu D (D: the convex Hessian's diagonal) on both
 //     matrices after a step that found no descent, shrinking again after
 //     full steps; the run notes the first one.
@@ -67,6 +72,8 @@ private:
     double energy(const double *x, const double *y, const Functional &F, double alpha) const;
     double fold_limit(const double *x, const double *y, int orientation) const;
     int solve(const BlockStencil &K, double forcing, bool &negative);
+    void eliminate(const Connectivity &conn, double *x, double *y, const Functional &F);
+    void update_radius(double alpha, int halvings, bool limited, double rho, double dnorm);
 
     int ni_ = 0, nc_ = 0, nr_ = 0;
     bool periodic_ = false;
@@ -82,6 +89,8 @@ private:
     bool last_limited_ = false;
     bool last_full_ = false;   // the last step a full one along a direction of positive curvature
     double v_last_ = 0.0;      // V where the last step began
+    double radius_ = 0.0;      // the trust region's radius in the norm ||d||_D (infinite: none yet)
+    bool boundary_ = false;    // the last direction ended on the trust region's edge
     bool barrier_ = false;  // V has W or O's cotangents: infinite on a flat corner, its minimum unfolded
 };
 
