@@ -1202,7 +1202,11 @@ EG2D_API int eg2d_blocks_check(eg2d_blocks *set);
 /* Checks the set, starts each block not yet initialised from its TFI grid
  * and iterates the set to block 0's tolerance (NUMERICS.md's residual over
  * the set, on the extent of the whole set). EG2D_OK: every block holds its
- * part of the solution. EG2D_ERR_NOT_CONVERGED (the iteration limit or the
+ * part of the solution, and eg2d_get_run_info and eg2d_get_run_event on
+ * any block describe the set's run (its solver, the levels multigrid had
+ * over the set, what was solved, and a set that could not be halved:
+ * multigrid over a set needs an even number of cells each way in every
+ * block and joins that end at even nodes). EG2D_ERR_NOT_CONVERGED (the iteration limit or the
  * stall window) and EG2D_ERR_INTERRUPTED leave the last iterate in the
  * blocks; EG2D_ERR_DIVERGED leaves them as they were. */
 EG2D_API int eg2d_blocks_solve(eg2d_blocks *set);

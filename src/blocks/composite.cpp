@@ -6,6 +6,7 @@
 #include <map>
 #include <utility>
 
+#include "base/error.hpp"
 #include "generator/generator.hpp"
 
 namespace eg2d {
@@ -241,13 +242,18 @@ Composite Composite::of(const BlockSet &set) {
     return c;
 }
 
-bool Composite::coarsenable() const {
-    for (const BlockShape &s : shapes_)
-        if ((s.ni - 1) % 2 != 0 || (s.nj - 1) % 2 != 0 || s.ni < 5 || s.nj < 5) return false;
+std::string Composite::why_not_coarsenable() const {
+    for (std::size_t b = 0; b < shapes_.size(); ++b) {
+        const BlockShape &s = shapes_[b];
+        if ((s.ni - 1) % 2 != 0 || (s.nj - 1) % 2 != 0 || s.ni < 5 || s.nj < 5)
+            return format("block %zu has %d x %d cells (the set halves with an even number of cells, at least 4, "
+                          "each way in every block)", b, s.ni - 1, s.nj - 1);
+    }
     for (const Join &j : joins_)
         for (const SideRange &r : {j.a, j.b})
-            if (r.first % 2 != 0 || r.last % 2 != 0) return false;
-    return true;
+            if (r.first % 2 != 0 || r.last % 2 != 0)
+                return format("the join of %s ends at an odd node", describe(r).c_str());
+    return "";
 }
 
 Composite Composite::coarsened() const {

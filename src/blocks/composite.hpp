@@ -20,6 +20,7 @@
 // and corrected with the rest in multigrid.
 #pragma once
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "base/connectivity.hpp"
@@ -46,7 +47,9 @@ public:
 
     // Every block has an even number of cells each way (at least 4) and
     // every join's ends are even nodes: the set coarsens by two.
-    bool coarsenable() const;
+    bool coarsenable() const { return why_not_coarsenable().empty(); }
+    // What keeps it from coarsening ("block 1 has 249 x 99 cells"), or "".
+    std::string why_not_coarsenable() const;
     // Every other node of each block, the joins halved; coordinates and
     // control fields sampled (a, b, c doubled and d halved: control_fields.hpp).
     Composite coarsened() const;
@@ -71,6 +74,7 @@ public:
     // sweeps round the vertices on the domain's boundary (a step's corner).
     void relax_vertices(System system);
     int free_vertices() const { return static_cast<int>(vertices_.size()); }
+    int held_vertices() const { return static_cast<int>(held_vertices_.size()); }
     // R = L(r) - f at every unknown into the residual fields (0 elsewhere),
     // copies and halos synced so a restriction reads across the joins.
     void compute_residual(System system);

@@ -6,6 +6,9 @@ namespace {
 // The coarsest level: sweeps until its residual falls by this, at most kCoarseSweeps.
 constexpr double kCoarseReduction = 1e-3;
 constexpr int kCoarseSweeps = 50;
+// A coarsest level with more nodes than this along a block's side is a
+// level the set could not halve (an odd cell count), not its natural bottom.
+constexpr int kLargeCoarsest = 17;
 }  // namespace
 
 SetMultigrid::SetMultigrid(const Composite &fine) {
@@ -14,6 +17,10 @@ SetMultigrid::SetMultigrid(const Composite &fine) {
         coarse_.push_back(c->coarsened());
         c = &coarse_.back();
     }
+    // Said when the set did not halve at all, or its coarsest level is still
+    // large: a set halved down to a few nodes a side has stopped where any
+    // multigrid stops.
+    if (coarse_.empty() || c->longest() > kLargeCoarsest) stopped_ = c->why_not_coarsenable();
 }
 
 void SetMultigrid::cycle(System system, Composite &fine, int index, int pre, int post) {

@@ -7,6 +7,7 @@
 // (the residual's halos), bilinear corrections, the coarsest level
 // smoothed to a thousandth of its residual.
 #pragma once
+#include <string>
 #include <vector>
 
 #include "blocks/composite.hpp"
@@ -18,6 +19,9 @@ public:
     // The levels below `fine` while the set coarsens (Composite::coarsenable).
     explicit SetMultigrid(const Composite &fine);
     int levels() const { return static_cast<int>(coarse_.size()) + 1; }
+    // Why there is no coarser level below the coarsest ("" when it is too
+    // small to halve again is not the reason: Composite::why_not_coarsenable).
+    const std::string &stopped() const { return stopped_; }
     // One cycle: index 1 V, 2 W; pre and post smoothing sweeps per level.
     void cycle(System system, Composite &fine, int index, int pre, int post);
     // Full multigrid from the start the fine level holds: every level
@@ -44,6 +48,7 @@ private:
     void solve_coarsest(System system, Composite &c) const;
     void cycle(System system, Composite &fine, std::size_t level, int index, int pre, int post);
     std::vector<Composite> coarse_;
+    std::string stopped_;
 };
 
 }  // namespace eg2d

@@ -11,6 +11,7 @@
 #include "eg2d.h"
 #include "generator/generator.hpp"
 #include "generator/stall_watch.hpp"
+#include "solvers/run_report.hpp"
 #include "solvers/auto_relaxation.hpp"
 
 namespace eg2d {
@@ -25,12 +26,13 @@ double point_omega(const Composite &c) {
     return 2.0 / (1.0 + std::sin(M_PI / n));
 }
 
-void write_back(const BlockSet &set, const Composite &c, long iterations) {
+void write_back(const BlockSet &set, const Composite &c, long iterations, RunReport &report) {
     std::vector<std::vector<double>> xs(static_cast<std::size_t>(set.size())), ys(xs.size());
     for (int b = 0; b < set.size(); ++b) c.extract(b, xs[static_cast<std::size_t>(b)], ys[static_cast<std::size_t>(b)]);
+    report.iteration = static_cast<int>(std::min<long>(iterations, 2147483647L));
     for (int b = 0; b < set.size(); ++b)
-        set.block(b)->take_solution(xs[static_cast<std::size_t>(b)], ys[static_cast<std::size_t>(b)],
-                                    static_cast<int>(std::min<long>(iterations, 2147483647L)));
+        set.block(b)->take_solution(xs[static_cast<std::size_t>(b)], ys[static_cast<std::size_t>(b)], report.iteration,
+                                    report);
 }
 
 // Point or line SOR over the set. Automatic factor: the point solvers'
@@ -105,6 +107,18 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
     std::vector<SetMultigrid> mg;  // the levels: multigrid's and the nested iteration's
     if (multigrid || nested) mg.emplace_back(c);
     run.omega = multigrid ? 1.0 : sor.factor();
+    // What the set's run is, on every block's eg2d_get_run_info and _event.
+    RunReport report;
+    report.solver = solver;
+    report.levels = report.levels_built = mg.empty() ? 1 : mg[0].levels();
+    report.iteration = 1;
+    report.note(format("set of %d blocks solved as one grid: %ld unknowns, %d inner vertex(es) at their neighbours' "
+                       "mean, %d vertex(es) on the boundary held; %s on %d level(s)", set.size(), run.unknowns,
+                       c.free_vertices(), c.held_vertices(), set.block(0)->solver_name(), report.levels));
+    if (!mg.empty() && !mg[0].stopped().empty())
+        report.note(format("%s: no coarser level below %d: %s%s", set.block(0)->solver_name(), report.levels,
+                           mg[0].stopped().c_str(),
+                           report.levels == 1 ? "; the smoother alone converges slowly" : ""));
     const double extent = set.extent();
     const long limit = static_cast<long>(s.max_iterations);
     long window = static_cast<long>(s.stall_iterations);
@@ -120,7 +134,7 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
     double best = run.residual;
     while (run.residual > s.tolerance) {
         if (run.iterations >= limit) {
-            write_back(set, c, run.iterations);
+            write_back(set, c, run.iterations, report);
             fail(Failure::NotConverged, format("the set reached the iteration limit (%ld) at residual %.3g (tolerance %.3g)",
                                                limit, run.residual, s.tolerance));
         }
@@ -154,17 +168,17 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
                                            multigrid ? "multigrid" : format("SOR factor %.4g", sor.factor()).c_str()));
         best = std::min(best, run.residual);
         if (watch.stalled(run.iterations, run.residual, 0.0)) {
-            write_back(set, c, run.iterations);
+            write_back(set, c, run.iterations, report);
             fail(Failure::NotConverged, format("the set made no progress in %ld iterations (residual %.3g, best %.3g, "
                                                "tolerance %.3g)", watch.window(), run.residual,
                                                watch.best_residual(), s.tolerance));
         }
         if (monitor && monitor(run.iterations, run.residual)) {
-            write_back(set, c, run.iterations);
+            write_back(set, c, run.iterations, report);
             fail(Failure::Interrupted, format("the monitor stopped the set's run at iteration %ld", run.iterations));
         }
     }
-    write_back(set, c, run.iterations);
+    write_back(set, c, run.iterations, report);
     run.levels = mg.empty() ? 1 : mg[0].levels();
     run.note = format("set of %d blocks: %ld unknowns, %s on %d level(s), %ld iteration(s), residual %.3g", set.size(),
                       run.unknowns, set.block(0)->solver_name(), run.levels, run.iterations, run.residual);

@@ -191,9 +191,16 @@ void Generator::set_coordinates(const double *x, const double *y) {
     controls_.invalidate();
 }
 
-void Generator::take_solution(const std::vector<double> &x, const std::vector<double> &y, int iterations) {
+void Generator::take_solution(const std::vector<double> &x, const std::vector<double> &y, int iterations,
+                              const RunReport &report) {
     check_coordinates("x", x.data(), grid_.size());
     check_coordinates("y", y.data(), grid_.size());
+    RunReport copy = report;  // allocates before the change: strong guarantee
+    report_.events.swap(copy.events);
+    report_.solver = report.solver;
+    report_.levels = report.levels;
+    report_.levels_built = report.levels_built;
+    report_.iteration = report.iteration;
     grid_.x = x;
     grid_.y = y;
     grid_.mark_initialized();

@@ -69,8 +69,9 @@ public:
     void set_coordinates(const double *x, const double *y);
     // A set of blocks solved together (blocks/): every node from x, y (ni*nj
     // each), the boundary as the user set it kept (a joined side's nodes
-    // moved with the set), `iterations` the set's.
-    void take_solution(const std::vector<double> &x, const std::vector<double> &y, int iterations);
+    // moved with the set), `iterations` and `report` the set's run.
+    void take_solution(const std::vector<double> &x, const std::vector<double> &y, int iterations,
+                       const RunReport &report);
     // Interior lines (Grid::set_interior_line): the solvers' unknowns
     // change, so any cached hierarchy is dropped; an initialised grid gets
     // the line's points at once.

@@ -222,6 +222,39 @@ static void test_controls(void **state) {
     eg2d_destroy(left), eg2d_destroy(right), eg2d_destroy(ref);
 }
 
+/* The set's run on every block's run information: the solver, the levels
+ * and a first event that says what was solved; a set that cannot halve (15
+ * cells across) says so in a second event, and still converges. */
+static void test_run_events(void **state) {
+    (void)state;
+    for (int nj = NJ; nj >= NJ - 1; --nj) {
+        eg2d_grid *g[2];
+        eg2d_blocks *set;
+        int value, iteration, events;
+        char message[512];
+        assert_int_equal(bump_halves(NI, nj, MID, g, &set), EG2D_OK);
+        assert_int_equal(eg2d_set_tolerance(g[0], 1e-12), EG2D_OK);
+        assert_int_equal(eg2d_blocks_solve(set), EG2D_OK);
+        for (int k = 0; k < 2; ++k) {
+            assert_int_equal(eg2d_get_run_info(g[k], EG2D_RUN_SOLVER, &value), EG2D_OK);
+            assert_int_equal(value, EG2D_SOLVER_MULTIGRID);
+            assert_int_equal(eg2d_get_run_info(g[k], EG2D_RUN_LEVELS, &value), EG2D_OK);
+            assert_int_equal(value, nj == NJ ? 4 : 1);
+            assert_int_equal(eg2d_get_run_info(g[k], EG2D_RUN_EVENTS, &events), EG2D_OK);
+            assert_int_equal(events, nj == NJ ? 1 : 2);
+            assert_int_equal(eg2d_get_run_event(g[k], 0, &iteration, message, sizeof message), EG2D_OK);
+            assert_non_null(strstr(message, "set of 2 blocks solved as one grid"));
+        }
+        if (nj != NJ) {
+            assert_int_equal(eg2d_get_run_event(g[0], 1, &iteration, message, sizeof message), EG2D_OK);
+            printf("%s\n", message);
+            assert_non_null(strstr(message, "no coarser level below 1: block 0 has 16 x 15 cells"));
+        }
+        eg2d_blocks_destroy(set);
+        eg2d_destroy(g[0]), eg2d_destroy(g[1]);
+    }
+}
+
 static void expect(int status, int code, const eg2d_blocks *set, const char *words) {
     if (status != code || !strstr(eg2d_blocks_last_error(set), words))
         fail_msg("status %d (wanted %d): \"%s\" (wanted \"%s\")", status, code, eg2d_blocks_last_error(set), words);
@@ -311,6 +344,7 @@ int main(void) {
         cmocka_unit_test(test_set_is_the_single_block),
         cmocka_unit_test(test_inner_vertex),
         cmocka_unit_test(test_controls),
+        cmocka_unit_test(test_run_events),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_backward_facing_step),
     };
