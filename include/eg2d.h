@@ -1238,7 +1238,7 @@ EG2D_API int eg2d_blocks_get_kinks(const eg2d_blocks *set, double *at_joins, dou
  * naming those (write each block's grid with eg2d_write). EG2D_ERR_STATE
  * unless the set checks and every block is initialised; EG2D_ERR_IO as
  * eg2d_write. All or nothing, as eg2d_write. */
-EG2D_API int eg2d_blocks_write(const eg2d_blocks *set, int format, const char *path);
+EG2D_API int eg2d_blocks_write(const eg2d_blocks *set, const char *path, int format);
 
 #ifdef __cplusplus
 }

@@ -564,5 +564,66 @@ private:
     std::unique_ptr<monitor_state> monitor_;
 };
 
+/* A set of blocks (eg2d.h, "Sets of blocks"): it refers to the grids added
+ * (it owns none): keep them alive while the set is used. */
+class blocks {
+public:
+    blocks() {
+        eg2d_blocks *s = nullptr;
+        const int status = ::eg2d_blocks_create(&s);
+        if (status != EG2D_OK) throw error(status, ::eg2d_last_error(nullptr));
+        s_ = s;
+    }
+    ~blocks() { ::eg2d_blocks_destroy(s_); }
+    blocks(const blocks &) = delete;
+    blocks &operator=(const blocks &) = delete;
+    blocks(blocks &&other) noexcept : s_(std::exchange(other.s_, nullptr)) {}
+    blocks &operator=(blocks &&other) noexcept {
+        if (this != &other) {
+            ::eg2d_blocks_destroy(s_);
+            s_ = std::exchange(other.s_, nullptr);
+        }
+        return *this;
+    }
+
+    eg2d_blocks *get() const noexcept { return s_; }
+    std::string last_error() const { return ::eg2d_blocks_last_error(s_); }
+
+    /* The block's index. */
+    int add(grid &g) {
+        int b = -1;
+        check(::eg2d_blocks_add(s_, g.get(), &b));
+        return b;
+    }
+    void join(int block_a, int side_a, int first_a, int last_a, int block_b, int side_b, int first_b, int last_b) {
+        check(::eg2d_blocks_join(s_, block_a, side_a, first_a, last_a, block_b, side_b, first_b, last_b));
+    }
+    void check_set() const { check(::eg2d_blocks_check(s_)); }
+    void solve() { check(::eg2d_blocks_solve(s_)); }
+    struct run_info {
+        int iterations;
+        double residual;
+        int unknowns;
+    };
+    run_info get_run() const {
+        run_info r{0, 0.0, 0};
+        check(::eg2d_blocks_get_run(s_, &r.iterations, &r.residual, &r.unknowns));
+        return r;
+    }
+    /* The largest turn of a grid line at the joins, and one node into each block (degrees). */
+    std::pair<double, double> get_kinks() const {
+        double at = 0.0, near = 0.0;
+        check(::eg2d_blocks_get_kinks(s_, &at, &near));
+        return {at, near};
+    }
+    void write(const std::string &path, int format) const { check(::eg2d_blocks_write(s_, path.c_str(), format)); }
+
+private:
+    void check(int status) const {
+        if (status != EG2D_OK) throw error(status, ::eg2d_blocks_last_error(s_));
+    }
+    eg2d_blocks *s_ = nullptr;
+};
+
 }  // namespace eg2d
 #endif /* EG2D_HPP */

@@ -112,6 +112,9 @@ TYPES = {
     "eg2d_curve *": CType("type(c_ptr)", "c_ptr", "value", "curve_p"),
     "const eg2d_curve *": CType("type(c_ptr)", "c_ptr", "value", "curve_p"),
     "eg2d_curve **": CType("type(c_ptr)", "c_ptr", "out", "POINTER(curve_p)"),
+    "eg2d_blocks *": CType("type(c_ptr)", "c_ptr", "value", "blocks_p"),
+    "const eg2d_blocks *": CType("type(c_ptr)", "c_ptr", "value", "blocks_p"),
+    "eg2d_blocks **": CType("type(c_ptr)", "c_ptr", "out", "POINTER(blocks_p)"),
     "eg2d_monitor_fn": CType("type(c_funptr)", "c_funptr", "value", "monitor_fn"),
     "eg2d_curve_fn": CType("type(c_funptr)", "c_funptr", "value", "curve_fn"),
     "const char **": CType("type(c_ptr)", "c_ptr", "out", "POINTER(c_char_p)"),  # a string the library owns
@@ -131,6 +134,7 @@ RETURNS = {
 PY_ALIASES = [
     ("grid_p", "c_void_p", "eg2d_grid *"),
     ("curve_p", "c_void_p", "eg2d_curve *"),
+    ("blocks_p", "c_void_p", "eg2d_blocks *"),
     ("double_p", "POINTER(c_double)", None),
     ("int_p", "POINTER(c_int)", None),
 ]
@@ -162,6 +166,7 @@ POINTERS = {
     "eg2d_get_patch_count": {"count": "optional"},
     "eg2d_get_patch": {"side": "optional", "first": "optional", "last": "optional", "type": "optional",
                        "name": "optional"},
+    "eg2d_blocks_get_run": {"iterations": "optional", "residual": "optional", "unknowns": "optional"},
 }
 
 # ---- The Fortran wrappers (eg2d_wrappers.inc): what the C types cannot tell.
@@ -183,6 +188,17 @@ HAND_WRITTEN = {
     "eg2d_read_plot3d": "eg2d_read_plot3d_grid: sizes the block, allocates x, y, then reads",
     "eg2d_read_plot3d_into": "eg2d_read_plot3d_grid (with eg2d_read_plot3d)",
     "eg2d_read_points": "eg2d_read_point_file: counts, allocates x, y, then reads",
+    # a set of blocks (eg2d.h section 11): eg2d_blocks_t, a type of its own that holds the set's handle
+    "eg2d_blocks_create": "blocks_create: frees the set held before",
+    "eg2d_blocks_destroy": "blocks_destroy and the final procedure: a no-op on a freed set",
+    "eg2d_blocks_last_error": "last_error() of eg2d_blocks_t",
+    "eg2d_blocks_add": "a procedure of eg2d_blocks_t taking a class(eg2d_grid_t)",
+    "eg2d_blocks_join": "a procedure of eg2d_blocks_t",
+    "eg2d_blocks_check": "a procedure of eg2d_blocks_t",
+    "eg2d_blocks_solve": "a procedure of eg2d_blocks_t",
+    "eg2d_blocks_get_run": "a procedure of eg2d_blocks_t",
+    "eg2d_blocks_get_kinks": "a procedure of eg2d_blocks_t",
+    "eg2d_blocks_write": "a procedure of eg2d_blocks_t",
 }
 
 # The name of a wrapper where the rule of the docstring does not give it (the

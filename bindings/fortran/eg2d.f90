@@ -100,6 +100,28 @@ module eg2d
     final :: curve_final
   end type eg2d_curve_t
 
+  ! A set of blocks (eg2d.h, "Sets of blocks"): made by create, freed by
+  ! destroy or its final procedure; it refers to the grids added (it owns
+  ! none): keep them alive while the set is used. Do not copy a created set
+  ! by assignment. Hand-written (tools/gen_bindings.py, HAND_WRITTEN).
+  type, public :: eg2d_blocks_t
+    type(c_ptr), private :: handle = c_null_ptr
+    character(:), allocatable, private :: message
+  contains
+    procedure :: create => blocks_create
+    procedure :: destroy => blocks_destroy
+    procedure :: c_handle => blocks_c_handle
+    procedure :: last_error => blocks_last_error
+    procedure :: add => blocks_add
+    procedure :: join => blocks_join
+    procedure :: check => blocks_check
+    procedure :: solve => blocks_solve
+    procedure :: get_run => blocks_get_run
+    procedure :: get_kinks => blocks_get_kinks
+    procedure :: write => blocks_write
+    final :: blocks_final
+  end type eg2d_blocks_t
+
   include 'eg2d_wrappers_public.inc'
   public :: eg2d_c_string, eg2d_version_string, eg2d_live_grids
   public :: eg2d_read_plot3d_grid, eg2d_read_point_file, eg2d_get_tensor_parameter_grid
@@ -544,6 +566,121 @@ contains
     end do
     p(len_trim(path) + 1) = c_null_char
   end function c_path
+
+  ! ---------------------------------------------------------------- sets of blocks
+  ! After a C call on the set: records the library's message on failure.
+  subroutine blocks_finish(self, rc, status)
+    class(eg2d_blocks_t), intent(inout) :: self
+    integer(c_int), intent(in) :: rc
+    integer, intent(out), optional :: status
+    if (rc /= EG2D_OK) self%message = eg2d_c_string(eg2d_blocks_last_error(self%handle))
+    if (.not. allocated(self%message)) self%message = ''
+    call settle(rc, self%message, status)
+  end subroutine blocks_finish
+
+  ! A new, empty set; a set held by self is freed first.
+  subroutine blocks_create(self, status)
+    class(eg2d_blocks_t), intent(inout) :: self
+    integer, intent(out), optional :: status
+    integer(c_int) :: rc
+    call blocks_destroy(self)
+    rc = eg2d_blocks_create(self%handle)
+    if (rc /= EG2D_OK) self%message = eg2d_c_string(eg2d_last_error(c_null_ptr))
+    if (.not. allocated(self%message)) self%message = ''
+    call settle(rc, self%message, status)
+  end subroutine blocks_create
+
+  ! Frees the set (not its grids); a set never created or already freed is a no-op.
+  subroutine blocks_destroy(self)
+    class(eg2d_blocks_t), intent(inout) :: self
+    if (c_associated(self%handle)) call eg2d_blocks_destroy(self%handle)
+    self%handle = c_null_ptr
+  end subroutine blocks_destroy
+
+  subroutine blocks_final(self)
+    type(eg2d_blocks_t), intent(inout) :: self
+    call blocks_destroy(self)
+  end subroutine blocks_final
+
+  function blocks_c_handle(self) result(p)
+    class(eg2d_blocks_t), intent(in) :: self
+    type(c_ptr) :: p
+    p = self%handle
+  end function blocks_c_handle
+
+  function blocks_last_error(self) result(s)
+    class(eg2d_blocks_t), intent(in) :: self
+    character(:), allocatable :: s
+    if (allocated(self%message)) then
+      s = self%message
+    else
+      s = ''
+    end if
+  end function blocks_last_error
+
+  ! Adds the grid as the set's next block; block receives its index (0, 1, ...).
+  subroutine blocks_add(self, grid, block, status)
+    class(eg2d_blocks_t), intent(inout) :: self
+    class(eg2d_grid_t), intent(in) :: grid
+    integer, intent(out) :: block
+    integer, intent(out), optional :: status
+    integer(c_int) :: b
+    b = -1
+    call blocks_finish(self, eg2d_blocks_add(self%handle, grid%handle, b), status)
+    block = int(b)
+  end subroutine blocks_add
+
+  subroutine blocks_join(self, block_a, side_a, first_a, last_a, block_b, side_b, first_b, last_b, status)
+    class(eg2d_blocks_t), intent(inout) :: self
+    integer, intent(in) :: block_a, side_a, first_a, last_a, block_b, side_b, first_b, last_b
+    integer, intent(out), optional :: status
+    call blocks_finish(self, eg2d_blocks_join(self%handle, int(block_a, c_int), int(side_a, c_int), &
+         int(first_a, c_int), int(last_a, c_int), int(block_b, c_int), int(side_b, c_int), int(first_b, c_int), &
+         int(last_b, c_int)), status)
+  end subroutine blocks_join
+
+  subroutine blocks_check(self, status)
+    class(eg2d_blocks_t), intent(inout) :: self
+    integer, intent(out), optional :: status
+    call blocks_finish(self, eg2d_blocks_check(self%handle), status)
+  end subroutine blocks_check
+
+  subroutine blocks_solve(self, status)
+    class(eg2d_blocks_t), intent(inout) :: self
+    integer, intent(out), optional :: status
+    call blocks_finish(self, eg2d_blocks_solve(self%handle), status)
+  end subroutine blocks_solve
+
+  subroutine blocks_get_run(self, iterations, residual, unknowns, status)
+    class(eg2d_blocks_t), intent(inout) :: self
+    integer, intent(out) :: iterations, unknowns
+    real(c_double), intent(out) :: residual
+    integer, intent(out), optional :: status
+    integer(c_int) :: it, n
+    it = 0
+    n = 0
+    residual = 0
+    call blocks_finish(self, eg2d_blocks_get_run(self%handle, it, residual, n), status)
+    iterations = int(it)
+    unknowns = int(n)
+  end subroutine blocks_get_run
+
+  subroutine blocks_get_kinks(self, at_joins, nearby, status)
+    class(eg2d_blocks_t), intent(inout) :: self
+    real(c_double), intent(out) :: at_joins, nearby
+    integer, intent(out), optional :: status
+    at_joins = 0
+    nearby = 0
+    call blocks_finish(self, eg2d_blocks_get_kinks(self%handle, at_joins, nearby), status)
+  end subroutine blocks_get_kinks
+
+  subroutine blocks_write(self, path, format, status)
+    class(eg2d_blocks_t), intent(inout) :: self
+    character(*), intent(in) :: path
+    integer, intent(in) :: format
+    integer, intent(out), optional :: status
+    call blocks_finish(self, eg2d_blocks_write(self%handle, c_path(path), int(format, c_int)), status)
+  end subroutine blocks_write
 
   ! ---------------------------------------------------------------- generated
   ! The wrappers of the mechanical shapes, generated from eg2d.h by

@@ -116,7 +116,7 @@ EG2D_API int eg2d_blocks_get_kinks(const eg2d_blocks *set, double *at_joins, dou
     });
 }
 
-EG2D_API int eg2d_blocks_write(const eg2d_blocks *set, int file_format, const char *path) {
+EG2D_API int eg2d_blocks_write(const eg2d_blocks *set, const char *path, int file_format) {
     return guard_set(set, "eg2d_blocks_write", [&] {
         require_ptr(path, "path");
         const SetWriting how = set_writing(file_format);

@@ -275,6 +275,59 @@ int main(int argc, char **argv) {
         CHECK(p.get_patches().back().name == "imin");
     }
 
+    // a set of blocks: the unit square with a bulging top as one block and as
+    // two blocks joined down its middle give the same grid
+    {
+        const int ni = 17, nj = 9, mid = 8;
+        auto square = [&](int i0, int i1) {
+            const int n = i1 - i0 + 1;
+            eg2d::grid g(n, nj);
+            std::vector<double> sx(n), sy(n), tx(nj), ty(nj);
+            auto top = [](double u) { return 1 + u * (1 - u) / 4; };
+            for (int side = 0; side < 4; ++side) {
+                const bool along = side == EG2D_SIDE_JMIN || side == EG2D_SIDE_JMAX;
+                std::vector<double> &px = along ? sx : tx, &py = along ? sy : ty;
+                for (std::size_t k = 0; k < px.size(); ++k) {
+                    const double u = along ? double(i0 + int(k)) / (ni - 1) : (side == EG2D_SIDE_IMAX ? double(i1) / (ni - 1) : double(i0) / (ni - 1));
+                    const double v = along ? (side == EG2D_SIDE_JMAX ? 1.0 : 0.0) : double(k) / (nj - 1);
+                    px[k] = u;
+                    py[k] = v * top(u);
+                }
+                g.set_side(side, px, py);
+            }
+            return g;
+        };
+        eg2d::grid one = square(0, ni - 1), left = square(0, mid), right = square(mid, ni - 1);
+        one.set_tolerance(1e-13);
+        one.solve();
+        std::vector<double> xo, yo, xl, yl, xr, yr;
+        one.get_coordinates(xo, yo);
+        eg2d::blocks set;
+        CHECK(set.add(left) == 0 && set.add(right) == 1);
+        CHECK(throws([&] { set.join(0, EG2D_SIDE_IMAX, 0, 1, 1, EG2D_SIDE_IMIN, 0, 2); }, EG2D_ERR_ARGUMENT,
+                     "block 0 side IMAX nodes 0..1 has 2 nodes, block 1 side IMIN nodes 0..2 has 3"));
+        set.join(0, EG2D_SIDE_IMAX, 0, nj - 1, 1, EG2D_SIDE_IMIN, 0, nj - 1);
+        set.check_set();
+        left.set_tolerance(1e-13);
+        set.solve();
+        const auto run = set.get_run();
+        CHECK(run.unknowns == (ni - 2) * (nj - 2) && run.residual <= 1e-13);
+        CHECK(set.get_kinks().first > 0);
+        left.get_coordinates(xl, yl);
+        right.get_coordinates(xr, yr);
+        double diff = 0;
+        for (int j = 0; j < nj; ++j)
+            for (int i = 0; i < ni; ++i) {
+                const double xs = i <= mid ? xl[i + (mid + 1) * j] : xr[i - mid + (ni - mid) * j];
+                const double ys = i <= mid ? yl[i + (mid + 1) * j] : yr[i - mid + (ni - mid) * j];
+                diff = std::fmax(diff, std::fmax(std::fabs(xs - xo[i + ni * j]), std::fabs(ys - yo[i + ni * j])));
+            }
+        std::printf("set of blocks: max |set - one block| = %.2e\n", diff);
+        CHECK(diff < 1e-9);
+        CHECK(throws([&] { set.write("/nonexistent-dir/x.vts", EG2D_FORMAT_VTS); }, EG2D_ERR_UNSUPPORTED,
+                     "the vts format cannot hold a set of blocks"));
+    }
+
     // the swan of the C library (tests/support/swan_write_c.c)
     if (argc > 1) {
         std::ifstream in(argv[1]);

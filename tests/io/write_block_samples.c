@@ -53,17 +53,17 @@ int main(int argc, char **argv) {
     check(eg2d_blocks_solve(set), "eg2d_blocks_solve", eg2d_blocks_last_error(set));
     char path[4096];
     snprintf(path, sizeof path, "%s/step.su2", argv[1]);
-    check(eg2d_blocks_write(set, EG2D_FORMAT_SU2, path), path, eg2d_blocks_last_error(set));
+    check(eg2d_blocks_write(set, path, EG2D_FORMAT_SU2), path, eg2d_blocks_last_error(set));
     snprintf(path, sizeof path, "%s/step_foam", argv[1]);
-    check(eg2d_blocks_write(set, EG2D_FORMAT_OPENFOAM, path), path, eg2d_blocks_last_error(set));
+    check(eg2d_blocks_write(set, path, EG2D_FORMAT_OPENFOAM), path, eg2d_blocks_last_error(set));
     snprintf(path, sizeof path, "%s/step.p3d", argv[1]);
-    check(eg2d_blocks_write(set, EG2D_FORMAT_PLOT3D_ASCII | EG2D_PLOT3D_EXTRUDED, path), path, eg2d_blocks_last_error(set));
+    check(eg2d_blocks_write(set, path, EG2D_FORMAT_PLOT3D_ASCII | EG2D_PLOT3D_EXTRUDED), path, eg2d_blocks_last_error(set));
     if (argc < 3 || strcmp(argv[2], "no-cgns")) {
         snprintf(path, sizeof path, "%s/step.cgns", argv[1]);
-        check(eg2d_blocks_write(set, EG2D_FORMAT_CGNS, path), path, eg2d_blocks_last_error(set));
+        check(eg2d_blocks_write(set, path, EG2D_FORMAT_CGNS), path, eg2d_blocks_last_error(set));
     }
     snprintf(path, sizeof path, "%s/step.vts", argv[1]);
-    if (eg2d_blocks_write(set, EG2D_FORMAT_VTS, path) != EG2D_ERR_UNSUPPORTED ||
+    if (eg2d_blocks_write(set, path, EG2D_FORMAT_VTS) != EG2D_ERR_UNSUPPORTED ||
         !strstr(eg2d_blocks_last_error(set),
                 "the vts format cannot hold a set of blocks (plot3d, plot3d-ascii, cgns, su2, openfoam can")) {
         fprintf(stderr, "VTS for a set: \"%s\"\n", eg2d_blocks_last_error(set));
@@ -84,7 +84,7 @@ int main(int argc, char **argv) {
                        eg2d_blocks_join(pair, 0, EG2D_SIDE_IMAX, 0, 8, 1, EG2D_SIDE_JMIN, 8, 0) || eg2d_blocks_solve(pair);
         check(rc, "the turned pair", eg2d_blocks_last_error(pair));
         snprintf(path, sizeof path, "%s/turned.cgns", argv[1]);
-        check(eg2d_blocks_write(pair, EG2D_FORMAT_CGNS, path), path, eg2d_blocks_last_error(pair));
+        check(eg2d_blocks_write(pair, path, EG2D_FORMAT_CGNS), path, eg2d_blocks_last_error(pair));
         eg2d_blocks_destroy(pair);
         eg2d_destroy(h[0]), eg2d_destroy(h[1]);
     }

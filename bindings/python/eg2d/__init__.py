@@ -1,7 +1,7 @@
 """eg2d: elliptic generation of boundary-fitted quadrilateral grids.
 
 A ctypes + numpy package over libeg2d (include/eg2d.h is the manual): the
-classes Grid and Curve, the grid-less calls (status_string, last_error, version,
+classes Grid, Curve and Blocks (a set of blocks), the grid-less calls (status_string, last_error, version,
 solver_name, parameter_bounds, read_plot3d, read_points), the constants under their C names without the
 EG2D_ prefix, and exceptions carrying the status and the library's message.
 The library is found via $EG2D_LIBRARY, the install location, or the system
@@ -36,5 +36,6 @@ from .functions import (format_info, list_entries, list_find, list_name, paramet
 from .curve import Curve  # noqa: F401
 from .functions import clustering_map, distribution, distribution_parameter, first_cell_height, tensor_parameter_grid  # noqa: F401,E501
 from .grid import Grid  # noqa: F401
+from .blocks import Blocks  # noqa: F401
 
 __version__ = "%d.%d.%d" % (VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH)  # noqa: F405

@@ -7,6 +7,7 @@ from ctypes import CFUNCTYPE, POINTER, c_char_p, c_double, c_int, c_void_p
 
 grid_p = c_void_p  # eg2d_grid *
 curve_p = c_void_p  # eg2d_curve *
+blocks_p = c_void_p  # eg2d_blocks *
 double_p = POINTER(c_double)
 int_p = POINTER(c_int)
 
@@ -104,4 +105,15 @@ PROTOTYPES = {
     "eg2d_set_side_curve": (c_int, [grid_p, c_int, curve_p, c_int, c_double, c_double, c_int]),
     "eg2d_first_cell_height": (c_int, [c_double, c_double, c_double, double_p]),
     "eg2d_set_airfoil": (c_int, [grid_p, curve_p, c_int]),
+    # 11) Sets of blocks (multi-block)
+    "eg2d_blocks_create": (c_int, [POINTER(blocks_p)]),
+    "eg2d_blocks_destroy": (None, [blocks_p]),
+    "eg2d_blocks_last_error": (c_char_p, [blocks_p]),
+    "eg2d_blocks_add": (c_int, [blocks_p, grid_p, int_p]),
+    "eg2d_blocks_join": (c_int, [blocks_p, c_int, c_int, c_int, c_int, c_int, c_int, c_int, c_int]),
+    "eg2d_blocks_check": (c_int, [blocks_p]),
+    "eg2d_blocks_solve": (c_int, [blocks_p]),
+    "eg2d_blocks_get_run": (c_int, [blocks_p, int_p, double_p, int_p]),
+    "eg2d_blocks_get_kinks": (c_int, [blocks_p, double_p, double_p]),
+    "eg2d_blocks_write": (c_int, [blocks_p, c_char_p, c_int]),
 }
