@@ -237,7 +237,165 @@ static int write_start_grid(eg2d_grid *g, const Case &c, const RunOptions &o) {
     return EXIT_OK;
 }
 
+namespace {
+
+struct BlocksDeleter {
+    void operator()(eg2d_blocks *b) const { eg2d_blocks_destroy(b); }
+};
+using BlocksPtr = std::unique_ptr<eg2d_blocks, BlocksDeleter>;
+
+// A failed call on the set: the location in the case file and the set's message.
+void check_set(eg2d_blocks *set, int status, const Location &at) {
+    if (status == EG2D_ERR_MEMORY)
+        throw Failure(EXIT_MEMORY, std::string("out of memory: the set is too large for this machine (") +
+                                       eg2d_blocks_last_error(set) + ")");
+    if (status != EG2D_OK) throw Failure(exit_code_for_status(status), at.str() + ": " + eg2d_blocks_last_error(set));
+}
+
+// The set's files: su2 and openfoam as one mesh (eg2d_blocks_write, NAME.su2,
+// NAME_foam), every other library format one file per block (eg2d_write,
+// NAME-BLOCK.vts, ...). In the order of [output] formats, blocks in order.
+struct SetFile {
+    std::string name;
+    int format;
+    bool directory;
+    int block;  // -1: the whole set
+    Location where;
+};
+
+std::vector<SetFile> set_files(const Case &c) {
+    std::vector<SetFile> files;
+    for (const auto &out : c.outputs) {
+        if (out.format == EG2D_FORMAT_SU2 || out.format == EG2D_FORMAT_OPENFOAM) {
+            files.push_back({out.name, out.format, out.directory, -1, out.where});
+            continue;
+        }
+        std::string ext;
+        for (const auto &f : formats())
+            if (f.id == out.format && !f.tool) ext = f.extension;
+        const std::string stem = out.name.substr(0, out.name.size() - ext.size());
+        for (std::size_t b = 0; b < c.blocks.size(); ++b)
+            files.push_back({stem + "-" + c.blocks[b].name + ext, out.format, out.directory, static_cast<int>(b), out.where});
+    }
+    return files;
+}
+
+// A case of [[blocks]]: each block a single-block grid with the case's
+// system, solver and parameters, its own sides and patches; the set joins
+// and solves them (eg2d_blocks_*), block 0's settings driving it.
+int run_block_set(const Case &c, const RunOptions &o) {
+    std::vector<GridPtr> grids;
+    for (const BlockSpec &b : c.blocks) {
+        eg2d_grid *raw = nullptr;
+        check(nullptr, eg2d_create(b.ni, b.nj, &raw), b.size_at);
+        grids.emplace_back(raw);
+        eg2d_grid *g = raw;
+        check(g, eg2d_set_system(g, c.system), c.system_at);
+        check(g, eg2d_set_solver(g, c.solver), c.solver_at);
+        std::vector<ParameterSetting> params = c.parameters;
+        std::stable_partition(params.begin(), params.end(), [](const ParameterSetting &p) { return p.value != 0.0; });
+        for (const auto &p : params) check(g, eg2d_set_parameter(g, p.id, p.value), p.where);
+        for (const auto &s : b.sides) {
+            const bool along_i = s.side == EG2D_SIDE_JMIN || s.side == EG2D_SIDE_JMAX;
+            std::vector<double> x, y;
+            side_nodes(s, along_i ? b.ni : b.nj, false, b.constants, x, y);
+            check(g, eg2d_set_side(g, s.side, x.data(), y.data()), s.where);
+        }
+        for (const auto &p : b.patches)
+            check(g, eg2d_set_patch(g, p.side, p.first, p.last, p.type, p.name.c_str()), p.where);
+    }
+    eg2d_blocks *raw_set = nullptr;
+    check_set(nullptr, eg2d_blocks_create(&raw_set), c.blocks_at);
+    BlocksPtr owner(raw_set);
+    eg2d_blocks *set = owner.get();
+    for (std::size_t k = 0; k < grids.size(); ++k) {
+        int index = 0;
+        check_set(set, eg2d_blocks_add(set, grids[k].get(), &index), c.blocks[k].where);
+    }
+    for (const JoinSpec &j : c.joins)
+        check_set(set, eg2d_blocks_join(set, j.a.block, j.a.side, j.a.first, j.a.last, j.b.block, j.b.side, j.b.first,
+                                        j.b.last),
+                  j.where);
+    check_set(set, eg2d_blocks_check(set), c.joins.empty() ? c.blocks_at : c.joins.front().where);
+
+    double tolerance = 0;
+    eg2d_get_parameter(grids.front().get(), EG2D_PARAM_TOLERANCE, &tolerance);
+    long nodes = 0;
+    for (const BlockSpec &b : c.blocks) nodes += static_cast<long>(b.ni) * b.nj;
+    std::printf("%s: a set of %zu blocks, %zu join%s, %ld nodes, %s system, %s solver, tolerance %.3g\n", c.title.c_str(),
+                c.blocks.size(), c.joins.size(), c.joins.size() == 1 ? "" : "s", nodes, name_of(systems(), c.system),
+                eg2d_solver_name(c.solver), tolerance);
+    for (const BlockSpec &b : c.blocks) std::printf("  block %s: %d x %d\n", b.name.c_str(), b.ni, b.nj);
+    std::fflush(stdout);
+
+    const std::vector<SetFile> files = set_files(c);
+    std::vector<PlannedPath> paths;
+    for (const auto &f : files) paths.push_back({f.name, f.format, f.directory, f.where.str()});
+    check_before_solving(o.out_dir, paths);
+
+    const auto start = std::chrono::steady_clock::now();
+    const int status = eg2d_blocks_solve(set);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    int iterations = 0, unknowns = 0;
+    double residual = 0;
+    eg2d_blocks_get_run(set, &iterations, &residual, &unknowns);
+    if (status == EG2D_ERR_INTERRUPTED) {
+        std::printf("interrupted at iteration %d, residual %.3e: no files written\n", iterations, residual);
+        return EXIT_INTERRUPTED;
+    }
+    if (status == EG2D_OK)
+        std::printf("converged in %d iterations, residual %.3e, %d nodes solved for, %.2f s\n", iterations, residual,
+                    unknowns, seconds);
+    if (status != EG2D_OK && status != EG2D_ERR_DIVERGED)
+        std::printf("stopped after %d iterations, residual %.3e\n", iterations, residual);
+    if (status != EG2D_OK)
+        throw Failure(exit_code_for_status(status), c.file + ": " + eg2d_blocks_last_error(set) + " (no files written)");
+    double at_joins = 0, nearby = 0;
+    check_set(set, eg2d_blocks_get_kinks(set, &at_joins, &nearby), c.blocks_at);
+    std::printf("grid lines across the joins: turns up to %.2f deg at the joined nodes, %.2f deg one line into the "
+                "blocks\n", at_joins, nearby);
+    // the quality of the set: every block's, folded cells summed
+    double folded = 0, fold_check = 1;
+    for (std::size_t k = 0; k < grids.size(); ++k) {
+        eg2d_grid *g = grids[k].get();
+        double f = 0, lo = 0, hi = 0, skew = 0, aspect = 0;
+        eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &f);
+        eg2d_get_quality(g, EG2D_QUALITY_MIN_AREA, &lo);
+        eg2d_get_quality(g, EG2D_QUALITY_MAX_AREA, &hi);
+        eg2d_get_quality(g, EG2D_QUALITY_SKEWNESS, &skew);
+        eg2d_get_quality(g, EG2D_QUALITY_ASPECT_RATIO, &aspect);
+        std::printf("  block %s: %.0f folded cells, cell area %.4g to %.4g, skewness max %.2f deg, aspect ratio max %.3g\n",
+                    c.blocks[k].name.c_str(), f, lo, hi, skew, aspect);
+        folded += f;
+    }
+    std::printf("quality: %.0f folded cells in the set\n", folded);
+    eg2d_get_parameter(grids.front().get(), EG2D_PARAM_FOLD_CHECK, &fold_check);
+    if (folded > 0 && fold_check != 0)
+        throw Failure(EXIT_FOLDED, c.file + ": the set has " + fmt(folded) + " folded cells (no files written)");
+
+    Progress signals(false, true);  // SIGINT and SIGTERM stop the set, which removes its stage
+    if (c.svg_quality >= 0)
+        for (auto &g : grids) check(g.get(), eg2d_set_parameter(g.get(), EG2D_PARAM_SVG_QUALITY, c.svg_quality), c.svg_quality_at);
+    OutputSet out(o.out_dir);
+    for (const SetFile &f : files) {
+        if (f.block < 0)
+            out.add(f.name, f.directory, [set, &f](const std::string &path, bool) {
+                check_set(set, eg2d_blocks_write(set, f.format, path.c_str()), f.where);
+            });
+        else {
+            eg2d_grid *g = grids[static_cast<std::size_t>(f.block)].get();
+            out.add(f.name, f.directory,
+                    [g, &f](const std::string &path, bool) { check(g, eg2d_write(g, path.c_str(), f.format), f.where); });
+        }
+    }
+    for (const std::string &path : out.commit()) std::printf("wrote %s\n", path.c_str());
+    return EXIT_OK;
+}
+
+}  // namespace
+
 int run_case(const Case &c, const RunOptions &o) {
+    if (!c.blocks.empty()) return run_block_set(c, o);
     eg2d_grid *raw = nullptr;
     check(nullptr, eg2d_create(c.ni, c.nj, &raw), c.size_at);
     GridPtr grid(raw);
