@@ -245,11 +245,16 @@ struct BlocksDeleter {
 using BlocksPtr = std::unique_ptr<eg2d_blocks, BlocksDeleter>;
 
 // A failed call on the set: the location in the case file and the set's message.
-void check_set(eg2d_blocks *set, int status, const Location &at) {
+// `blocks`: the blocks' names in order, added to a message that numbers them.
+void check_set(eg2d_blocks *set, int status, const Location &at, const std::string &blocks = "") {
     if (status == EG2D_ERR_MEMORY)
         throw Failure(EXIT_MEMORY, std::string("out of memory: the set is too large for this machine (") +
                                        eg2d_blocks_last_error(set) + ")");
-    if (status != EG2D_OK) throw Failure(exit_code_for_status(status), at.str() + ": " + eg2d_blocks_last_error(set));
+    const std::string message = eg2d_blocks_last_error(set);
+    const bool numbered = !blocks.empty() && message.find("block ") != std::string::npos;
+    if (status != EG2D_OK)
+        throw Failure(exit_code_for_status(status),
+                      at.str() + ": " + message + (numbered ? " (blocks 0, 1, ...: " + blocks + ")" : ""));
 }
 
 // The set's files: su2 and openfoam as one mesh (eg2d_blocks_write, NAME.su2,
@@ -308,6 +313,8 @@ int run_block_set(const Case &c, const RunOptions &o) {
     check_set(nullptr, eg2d_blocks_create(&raw_set), c.blocks_at);
     BlocksPtr owner(raw_set);
     eg2d_blocks *set = owner.get();
+    std::string names;
+    for (const BlockSpec &b : c.blocks) names += (names.empty() ? "" : ", ") + b.name;
     for (std::size_t k = 0; k < grids.size(); ++k) {
         int index = 0;
         check_set(set, eg2d_blocks_add(set, grids[k].get(), &index), c.blocks[k].where);
@@ -315,8 +322,22 @@ int run_block_set(const Case &c, const RunOptions &o) {
     for (const JoinSpec &j : c.joins)
         check_set(set, eg2d_blocks_join(set, j.a.block, j.a.side, j.a.first, j.a.last, j.b.block, j.b.side, j.b.first,
                                         j.b.last),
-                  j.where);
-    check_set(set, eg2d_blocks_check(set), c.joins.empty() ? c.blocks_at : c.joins.front().where);
+                  j.where, names);
+    // The library names a join by its blocks' indices and sides: the case
+    // file's message names the join's key where the message is about one.
+    if (const int status = eg2d_blocks_check(set); status != EG2D_OK) {
+        static const char *const library_side[] = {"JMIN", "IMAX", "JMAX", "IMIN"};
+        const std::string message = eg2d_blocks_last_error(set);
+        Location at = c.blocks_at;
+        for (const JoinSpec &j : c.joins) {
+            char text[256];
+            std::snprintf(text, sizeof text, "join block %d side %s nodes %d..%d to block %d side %s nodes %d..%d",
+                          j.a.block, library_side[j.a.side], j.a.first, j.a.last, j.b.block, library_side[j.b.side],
+                          j.b.first, j.b.last);
+            if (message.find(text) != std::string::npos) at = j.where;
+        }
+        check_set(set, status, at, names);
+    }
 
     double tolerance = 0;
     eg2d_get_parameter(grids.front().get(), EG2D_PARAM_TOLERANCE, &tolerance);
