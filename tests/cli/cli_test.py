@@ -167,7 +167,7 @@ class ErrorMessages(unittest.TestCase):
     def test_unknown_key(self):
         self.check('size = [9, 9]\nsovler = "psor"\n' + self.GOOD_SIDES, 3,
                    "CASE:2:1: key 'sovler': unknown key (expected one of: title, size, topology, system, "
-                   "initial, solve, constants, solver, sides, controls, output, patches, interior_lines, "
+                   "initial, solve, constants, solver, sides, controls, output, patches, interior_lines, blocks, joins, "
                    "variational_area, variational_spacing, variational_orthogonality, variational_smoothness, "
                    "variational_orthogonality_form, hermite_spacing, "
                    "hermite_sides, hermite_height_jmin, hermite_height_imax, hermite_height_jmax, "

@@ -117,7 +117,9 @@ def main():
           "`examples/` named under it, at that file's size (`eg2d run examples/NAME.toml`).",
           "The same files are the built-in demos (`eg2d demo NAME`). Regenerate after a",
           "change: `cmake --build --preset default --target gallery` (ctest's",
-          "`gallery_up_to_date` fails while a picture is stale).", ""]
+          "`gallery_up_to_date` fails while a picture is stale). The sets of blocks",
+          "(case files of `[[blocks]]`: backward-facing-step, t-junction) are not drawn",
+          "here: they write one picture per block (docs/case-files.md, \"Sets of blocks\").", ""]
     with tempfile.TemporaryDirectory() as out:
         for name in examples(src):
             summary = render(tool, src, name, out)
