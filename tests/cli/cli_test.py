@@ -2293,6 +2293,18 @@ class BlockSets(unittest.TestCase):
         self.bad([('formats = ["su2", "openfoam", "vts"]', 'formats = ["su2", "history"]')], 3,
                  "key 'output.formats[1]': is not written for a set of blocks")
 
+    def test_library_refusals_and_exit_codes(self):
+        # what the library's set does not support, at the key that asks for it (exit 9)
+        self.bad([('system = "winslow"', 'system = "variational"')], 9,
+                 "key 'system': eg2d_blocks_check: block 0: the variational system on a set of blocks is not available")
+        # the iteration limit (block 0's): exit 5, nothing written
+        self.bad([("[output]", "[solver]\nmax_iterations = 2\n\n[output]")], 5,
+                 "eg2d_blocks_solve: the set reached the iteration limit (2)")
+        # a block no join reaches: exit 4, the blocks named by their indices
+        self.bad([('[[joins]]\na = { block = "upper", side = "bottom" }\nb = { block = "lower", side = "top" }', "")], 4,
+                 "key 'blocks': eg2d_blocks_check: the set is not connected: no chain of joins from block 0 to block 2 "
+                 "(blocks 0, 1, ...: upstream, upper, lower)")
+
     def test_library_error_names_the_join(self):
         # the lower block's top moved up: the joined nodes do not coincide (eg2d_blocks_check)
         with tempfile.TemporaryDirectory() as d:

@@ -336,6 +336,11 @@ int run_block_set(const Case &c, const RunOptions &o) {
                           j.b.first, j.b.last);
             if (message.find(text) != std::string::npos) at = j.where;
         }
+        int block = -1;
+        if (message.find(" system ") != std::string::npos) at = c.system_at;  // the case's, every block's
+        else if (at.key == c.blocks_at.key && std::sscanf(message.c_str(), "eg2d_blocks_check: block %d", &block) == 1 &&
+                 block >= 0 && block < static_cast<int>(c.blocks.size()))
+            at = c.blocks[static_cast<std::size_t>(block)].where;  // a block no join reaches, ...
         check_set(set, status, at, names);
     }
 
