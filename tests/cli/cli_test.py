@@ -2256,6 +2256,19 @@ class BlockSets(unittest.TestCase):
         self.bad([('b = { block = "upper", side = "left" }', 'b = { block = "uper", side = "left" }')], 3,
                  "key 'joins[0].b.block': no block is named \"uper\" (the blocks: upstream, upper, lower)")
 
+    def test_compact_join(self):
+        # "BLOCK.SIDE": the whole side; the step solves as with the tables
+        with tempfile.TemporaryDirectory() as d:
+            path = case_from_example(d, self.STEP, ('a = { block = "upstream", side = "right" }', 'a = "upstream.right"'),
+                                     ('b = { block = "lower", side = "top" }', 'b = "lower.top"'))
+            code, stdout, stderr = run("run", path, "-o", os.path.join(d, "out"))
+            self.assertEqual(code, 0, stdout + stderr)
+            self.assertIn("turns up to 7.34 deg at the joined nodes", stdout)
+        self.bad([('b = { block = "lower", side = "top" }', 'b = "lower.up"')], 3,
+                 "key 'joins[1].b': \"up\" is not one of: bottom, right, top, left")
+        self.bad([('b = { block = "lower", side = "top" }', 'b = "lower"')], 3,
+                 "key 'joins[1].b': \"lower\": expected \"BLOCK.SIDE\" (a whole side) or {block, side, first, last}")
+
     def test_join_of_different_node_counts(self):
         self.bad([('a = { block = "upstream", side = "right" }', 'a = { block = "upstream", side = "right", last = 30 }')], 3,
                  "key 'joins[0].b': spans 41 nodes (0 to 40) but a spans 31 (0 to 30): a join is node to node")

@@ -318,11 +318,12 @@ void read_blocks(const Fields &top, Case &c) {
 
 // One end of a join: {block, side, first, last}; first and last default to
 // the side's ends.
-JoinEnd read_join_end(const Fields &parent, const char *key, const Case &c) {
-    Fields f(parent.table(key), parent.at(key), {"block", "side", "first", "last"});
-    f.finish();
+// One end of a join from its fields (block, side, first, last).
+// compact: from "BLOCK.SIDE", whose messages name `where`.
+JoinEnd read_join_end_fields(const Fields &f, const Location &where, const Case &c, bool compact) {
     JoinEnd e;
-    e.where = parent.at(key);
+    e.where = where;
+    const Location block_at = compact ? where : f.at("block"), side_at = compact ? where : f.at("side");
     const std::string block = f.text("block");
     std::vector<std::string> known;
     e.block = -1;
@@ -331,12 +332,14 @@ JoinEnd read_join_end(const Fields &parent, const char *key, const Case &c) {
         if (c.blocks[k].name == block) e.block = static_cast<int>(k);
     }
     if (e.block < 0)
-        throw Failure(EXIT_CASE, f.at("block").str() + ": no block is named \"" + block + "\" (the blocks: " + join(known) + ")");
+        throw Failure(EXIT_CASE, block_at.str() + ": no block is named \"" + block + "\" (the blocks: " + join(known) + ")");
     const BlockSpec &b = c.blocks[static_cast<std::size_t>(e.block)];
     const auto &valid = side_names(EG2D_TOPO_SINGLE);
     std::vector<std::string> sides;
     for (const auto &s : valid) sides.push_back(s.first);
-    const std::string side = f.choice("side", "", sides);
+    const std::string side = f.text("side");
+    if (std::find(sides.begin(), sides.end(), side) == sides.end())
+        throw Failure(EXIT_CASE, side_at.str() + ": \"" + side + "\" is not one of: " + join(sides));
     for (const auto &s : valid)
         if (s.first == side) e.side = s.second;
     const int n = (e.side == EG2D_SIDE_JMIN || e.side == EG2D_SIDE_JMAX) ? b.ni : b.nj;
@@ -353,6 +356,25 @@ JoinEnd read_join_end(const Fields &parent, const char *key, const Case &c) {
     e.first = static_cast<int>(first);
     e.last = static_cast<int>(last);
     return e;
+}
+
+// The compact form "BLOCK.SIDE" is the whole side.
+JoinEnd read_join_end(const Fields &parent, const char *key, const Case &c) {
+    if (parent.has(key) && parent.node(key)->is_string()) {
+        const std::string text = parent.text(key);
+        const auto dot = text.rfind('.');
+        if (dot == std::string::npos)
+            throw Failure(EXIT_CASE, parent.at(key).str() + ": \"" + text +
+                                         "\": expected \"BLOCK.SIDE\" (a whole side) or {block, side, first, last}");
+        toml::table t;
+        t.insert("block", text.substr(0, dot));
+        t.insert("side", text.substr(dot + 1));
+        Fields f(t, parent.at(key), {"block", "side"});
+        return read_join_end_fields(f, parent.at(key), c, true);
+    }
+    Fields f(parent.table(key), parent.at(key), {"block", "side", "first", "last"});
+    f.finish();
+    return read_join_end_fields(f, parent.at(key), c, false);
 }
 
 // [[joins]]: a = {block, side, first, last}, b = {...}: node first of a is
