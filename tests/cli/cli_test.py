@@ -2210,7 +2210,7 @@ class BlockSets(unittest.TestCase):
             self.assertLessEqual(float(m.group(1)), float(m.group(2)))  # no kinks at the joins
             self.assertIn("quality: 0 folded cells in the set", stdout)
             self.assertEqual(sorted(os.listdir(out)),
-                             sorted([self.STEP + ".su2", self.STEP + "_foam"] +
+                             sorted([self.STEP + ".su2", self.STEP + "_foam", self.STEP + ".svg"] +
                                     [f"{self.STEP}-{b}.vts" for b in ("upstream", "upper", "lower")]))
             # SU2: one zone, the joined nodes once, the joins no markers
             with open(os.path.join(out, self.STEP + ".su2")) as f:
@@ -2220,6 +2220,8 @@ class BlockSets(unittest.TestCase):
             names = re.findall(r"^MARKER_TAG=\s*(\S+)", text, re.M)
             sizes = [int(n) for n in re.findall(r"^MARKER_ELEMS=\s*(\d+)", text, re.M)]
             self.assertEqual(dict(zip(names, sizes)), self.PATCHES)
+            # one picture of the set: every block's lines, the joins not drawn as walls
+            check_svg(self, os.path.join(out, self.STEP + ".svg"))
             # each block's own file has the block's nodes
             with open(os.path.join(out, self.STEP + "-lower.vts")) as f:
                 self.assertIn('WholeExtent="0 80 0 16 0 0"', f.read())
@@ -2303,7 +2305,7 @@ class BlockSets(unittest.TestCase):
         self.assertIn("--size does not apply to a case of [[blocks]]", stderr)
 
     def test_run_files_refused(self):
-        self.bad([('formats = ["su2", "openfoam", "vts"]', 'formats = ["su2", "history"]')], 3,
+        self.bad([('formats = ["su2", "openfoam", "vts", "svg"]', 'formats = ["su2", "history"]')], 3,
                  "key 'output.formats[1]': is not written for a set of blocks")
 
     def test_library_refusals_and_exit_codes(self):

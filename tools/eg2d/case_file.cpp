@@ -545,9 +545,9 @@ Case read_case(const std::string &text, const std::string &file, const std::stri
         read_joins(top, c);
         read_output(top, c, stem_of(file));
         for (const auto &out : c.outputs)
-            if (out.tool)
-                throw Failure(EXIT_CASE, out.where.str() + ": is not written for a set of blocks (the library's formats "
-                                         "are: su2 and openfoam as one mesh, the others one file per block)");
+            if (out.tool && out.tool != kGridPng)
+                throw Failure(EXIT_CASE, out.where.str() + ": is not written for a set of blocks (su2 and openfoam "
+                                         "are one mesh, svg and png one picture, the others one file per block)");
         return c;
     }
     read_sides(top, c);

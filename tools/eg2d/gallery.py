@@ -12,17 +12,9 @@ import sys
 import tempfile
 
 
-def is_block_set(path):
-    """A case of [[blocks]] (a set of blocks) writes one picture per block,
-    not the one NAME.svg a gallery entry shows: it is left out of the gallery
-    (its tests are the cli tests' BlockSets)."""
-    with open(path) as f:
-        return any(line.strip() == "[[blocks]]" for line in f)
-
-
 def examples(src):
     d = os.path.join(src, "examples")
-    return sorted(f[:-5] for f in os.listdir(d) if f.endswith(".toml") and not is_block_set(os.path.join(d, f)))
+    return sorted(f[:-5] for f in os.listdir(d) if f.endswith(".toml"))
 
 
 def render(tool, src, name, out):
@@ -117,9 +109,7 @@ def main():
           "`examples/` named under it, at that file's size (`eg2d run examples/NAME.toml`).",
           "The same files are the built-in demos (`eg2d demo NAME`). Regenerate after a",
           "change: `cmake --build --preset default --target gallery` (ctest's",
-          "`gallery_up_to_date` fails while a picture is stale). The sets of blocks",
-          "(case files of `[[blocks]]`: backward-facing-step, t-junction) are not drawn",
-          "here: they write one picture per block (docs/case-files.md, \"Sets of blocks\").", ""]
+          "`gallery_up_to_date` fails while a picture is stale).", ""]
     with tempfile.TemporaryDirectory() as out:
         for name in examples(src):
             summary = render(tool, src, name, out)

@@ -12,7 +12,9 @@
 
 #include "failure.hpp"
 #include "features.hpp"
+#include "grid_lines.hpp"
 #include "grid_views.hpp"
+#include "view_lines.hpp"
 #include "piece_curve.hpp"
 #include "output_set.hpp"
 #include "progress.hpp"
@@ -271,8 +273,9 @@ struct SetFile {
 std::vector<SetFile> set_files(const Case &c) {
     std::vector<SetFile> files;
     for (const auto &out : c.outputs) {
-        if (out.format == EG2D_FORMAT_SU2 || out.format == EG2D_FORMAT_OPENFOAM) {
-            files.push_back({out.name, out.format, out.directory, -1, out.where});
+        if (out.format == EG2D_FORMAT_SU2 || out.format == EG2D_FORMAT_OPENFOAM || out.tool == kGridPng ||
+            out.format == EG2D_FORMAT_SVG) {  // one mesh; one picture of the set
+            files.push_back({out.name, out.tool == kGridPng ? -1 : out.format, out.directory, -1, out.where});
             continue;
         }
         std::string ext;
@@ -283,6 +286,44 @@ std::vector<SetFile> set_files(const Case &c) {
             files.push_back({stem + "-" + c.blocks[b].name + ext, out.format, out.directory, static_cast<int>(b), out.where});
     }
     return files;
+}
+
+// The set as one picture (svg, png): every block's lines in one view of the
+// whole set, the joined stretches drawn as grid lines (each block's sides
+// are drawn by patch, and a joined side keeps its default wall patch).
+std::string set_picture(const Case &c, const std::vector<GridPtr> &grids, bool png) {
+    std::vector<GridLines> blocks;
+    GridLines all;
+    for (const auto &g : grids) {
+        blocks.push_back(grid_lines(g.get()));
+        all.x.insert(all.x.end(), blocks.back().x.begin(), blocks.back().x.end());
+        all.y.insert(all.y.end(), blocks.back().y.begin(), blocks.back().y.end());
+    }
+    for (const JoinSpec &j : c.joins)
+        for (const JoinEnd &e : {j.a, j.b}) {
+            GridLines &b = blocks[static_cast<std::size_t>(e.block)];
+            const std::size_t ni = static_cast<std::size_t>(b.ni), top = ni * static_cast<std::size_t>(b.nj - 1);
+            const int lo = std::min(e.first, e.last), hi = std::max(e.first, e.last);
+            for (LineRef &l : b.lines) {
+                if (l.kind == kGridLine) continue;
+                int side = -1;
+                std::size_t f = 0;
+                if (l.stride == 1 && l.first < ni) side = EG2D_SIDE_JMIN, f = l.first;
+                else if (l.stride == 1 && l.first >= top) side = EG2D_SIDE_JMAX, f = l.first - top;
+                else if (l.stride == ni && l.first % ni == 0) side = EG2D_SIDE_IMIN, f = l.first / ni;
+                else if (l.stride == ni && l.first % ni == ni - 1) side = EG2D_SIDE_IMAX, f = l.first / ni;
+                if (side == e.side && static_cast<int>(f) >= lo && static_cast<int>(f) + l.count - 1 <= hi) l.kind = kGridLine;
+            }
+        }
+    const View v = domain_view(all);
+    std::vector<Polyline> shown;
+    for (const GridLines &b : blocks) {
+        std::vector<Polyline> p = view_lines(b, v);
+        shown.insert(shown.end(), p.begin(), p.end());
+    }
+    // grid lines first, then boundaries, walls last (on top), as for one grid
+    std::stable_sort(shown.begin(), shown.end(), [](const Polyline &a, const Polyline &b) { return a.kind < b.kind; });
+    return png ? view_png(v, shown) : view_svg(v, shown, "eg2d " + c.title + ": the set of blocks");
 }
 
 // A case of [[blocks]]: each block a single-block grid with the case's
@@ -380,8 +421,14 @@ int run_block_set(const Case &c, const RunOptions &o) {
     check_set(set, eg2d_blocks_get_kinks(set, &at_joins, &nearby), c.blocks_at);
     std::printf("grid lines across the joins: turns up to %.2f deg at the joined nodes, %.2f deg one line into the "
                 "blocks\n", at_joins, nearby);
-    // the quality of the set: every block's, folded cells summed
+    // the quality of the set: folded cells summed, then every block's
     double folded = 0, fold_check = 1;
+    for (const auto &g : grids) {
+        double f = 0;
+        eg2d_get_quality(g.get(), EG2D_QUALITY_FOLDED_CELLS, &f);
+        folded += f;
+    }
+    std::printf("quality: %.0f folded cells in the set\n", folded);
     for (std::size_t k = 0; k < grids.size(); ++k) {
         eg2d_grid *g = grids[k].get();
         double f = 0, lo = 0, hi = 0, skew = 0, aspect = 0;
@@ -392,9 +439,7 @@ int run_block_set(const Case &c, const RunOptions &o) {
         eg2d_get_quality(g, EG2D_QUALITY_ASPECT_RATIO, &aspect);
         std::printf("  block %s: %.0f folded cells, cell area %.4g to %.4g, skewness max %.2f deg, aspect ratio max %.3g\n",
                     c.blocks[k].name.c_str(), f, lo, hi, skew, aspect);
-        folded += f;
     }
-    std::printf("quality: %.0f folded cells in the set\n", folded);
     eg2d_get_parameter(grids.front().get(), EG2D_PARAM_FOLD_CHECK, &fold_check);
     if (folded > 0 && fold_check != 0)
         throw Failure(EXIT_FOLDED, c.file + ": the set has " + fmt(folded) + " folded cells (no files written)");
@@ -404,7 +449,13 @@ int run_block_set(const Case &c, const RunOptions &o) {
         for (auto &g : grids) check(g.get(), eg2d_set_parameter(g.get(), EG2D_PARAM_SVG_QUALITY, c.svg_quality), c.svg_quality_at);
     OutputSet out(o.out_dir);
     for (const SetFile &f : files) {
-        if (f.block < 0)
+        if (f.block < 0 && (f.format == EG2D_FORMAT_SVG || f.format < 0)) {
+            try {
+                out.add_text(f.name, set_picture(c, grids, f.format < 0));
+            } catch (const Failure &e) {
+                throw Failure(e.exit_code(), f.where.str() + ": " + e.what());
+            }
+        } else if (f.block < 0)
             out.add(f.name, f.directory, [set, &f](const std::string &path, bool) {
                 check_set(set, eg2d_blocks_write(set, f.format, path.c_str()), f.where);
             });
