@@ -2308,6 +2308,27 @@ class BlockSets(unittest.TestCase):
         self.bad([('formats = ["su2", "openfoam", "vts", "svg"]', 'formats = ["su2", "history"]')], 3,
                  "key 'output.formats[1]': is not written for a set of blocks")
 
+    def test_output_set_all_or_nothing(self):
+        # a case path that is a file: refused before solving, nothing of the set written;
+        # a second run replaces the set, and an existing case directory is updated in place
+        with tempfile.TemporaryDirectory() as d:
+            out = os.path.join(d, "out")
+            os.mkdir(out)
+            blocker = os.path.join(out, self.STEP + "_foam")
+            with open(blocker, "w") as f:
+                f.write("old")
+            code, stdout, stderr = run("run", os.path.join(EXAMPLES, self.STEP + ".toml"), "-o", out)
+            self.assertEqual(code, 8, stdout + stderr)
+            self.assertIn("not a directory, so no case can be written there (checked before solving)", stderr)
+            self.assertNotIn("converged", stdout)
+            self.assertEqual(os.listdir(out), [self.STEP + "_foam"])
+            os.remove(blocker)
+            for _ in range(2):
+                code, stdout, stderr = run("run", os.path.join(EXAMPLES, self.STEP + ".toml"), "-o", out)
+                self.assertEqual(code, 0, stdout + stderr)
+            self.assertEqual(len(os.listdir(out)), 6)
+            self.assertTrue(os.path.isfile(os.path.join(out, self.STEP + "_foam", "constant", "polyMesh", "points")))
+
     def test_library_refusals_and_exit_codes(self):
         # what the library's set does not support, at the key that asks for it (exit 9)
         self.bad([('system = "winslow"', 'system = "variational"')], 9,
