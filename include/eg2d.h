@@ -225,6 +225,7 @@ EG2D_API void eg2d_version(int *major, int *minor, int *patch);
 #define EG2D_LIST_ORTHOGONALITY  6
 #define EG2D_LIST_TOPOLOGIES     7
 #define EG2D_LIST_DISTRIBUTIONS  8
+#define EG2D_LIST_SET_FORMATS    9  /* the formats that hold a set of blocks in one file (eg2d_blocks_write) */
 
 /* The number of entries of `list`. EG2D_ERR_ARGUMENT: an unknown list, NULL. */
 EG2D_API int eg2d_list_count(int list, int *count);

@@ -52,6 +52,10 @@ const List kLists[] = {
     {EG2D_LIST_ORTHOGONALITY, "EG2D_LIST_ORTHOGONALITY", [] { return entries(orthogonality_table()); }},
     {EG2D_LIST_TOPOLOGIES, "EG2D_LIST_TOPOLOGIES", [] { return entries(topology_table()); }},
     {EG2D_LIST_DISTRIBUTIONS, "EG2D_LIST_DISTRIBUTIONS", [] { return entries(distribution_table()); }},
+    {EG2D_LIST_SET_FORMATS, "EG2D_LIST_SET_FORMATS", [] {
+         const std::vector<FileFormat> f = set_formats();
+         return entries(Table<FileFormat>{f.data(), f.size()});
+     }},
 };
 constexpr int kListCount = sizeof kLists / sizeof kLists[0];
 
@@ -68,7 +72,7 @@ const Entries *list(int id) {
 
 const Entries &checked_list(int id) {
     const Entries *e = list(id);
-    if (!e) fail(Failure::Argument, format("list = %d: not one of EG2D_LIST_SOLVERS (0) .. EG2D_LIST_DISTRIBUTIONS (%d)",
+    if (!e) fail(Failure::Argument, format("list = %d: not one of EG2D_LIST_SOLVERS (0) .. EG2D_LIST_SET_FORMATS (%d)",
                                            id, kListCount - 1));
     return *e;
 }

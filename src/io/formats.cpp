@@ -51,14 +51,20 @@ Table<FileFormat> format_table() { return table_of(kFormats); }
 
 const FileFormat *find_format(int id) { return format_table().find(id); }
 
+std::vector<FileFormat> set_formats() {
+    std::vector<FileFormat> out;
+    for (const FileFormat &k : format_table())
+        if (k.write_mesh || k.write_mesh_directory || k.write_blocks) out.push_back(k);
+    return out;
+}
+
 SetWriting set_writing(int id) {
     const FileFormat *f = id >= 0 ? find_format(id & kFormatMask) : nullptr;
     if (!f) fail(Failure::Argument, format("format = %d: no such file format", id));
     if (f->write_mesh || f->write_mesh_directory) return SetWriting::Mesh;
     if (f->write_blocks) return SetWriting::Zones;
     std::string can;
-    for (const FileFormat &k : format_table())
-        if (k.write_mesh || k.write_mesh_directory || k.write_blocks) can += std::string(can.empty() ? "" : ", ") + k.name;
+    for (const FileFormat &k : set_formats()) can += std::string(can.empty() ? "" : ", ") + k.name;
     fail(Failure::Unsupported, format("the %s format cannot hold a set of blocks (%s can; or write each block's grid)",
                                       f->name, can.c_str()));
 }

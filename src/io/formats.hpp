@@ -83,6 +83,8 @@ const FileFormat *find_format(int id);
 // does neither.
 enum class SetWriting { Mesh, Zones };
 SetWriting set_writing(int id);
+// The formats that hold a set (a mesh or a zone writer), in id order.
+std::vector<FileFormat> set_formats();
 // Writes a merged mesh (a set of blocks) to path in the format id.
 void write_mesh(const UnstructuredMesh &mesh, const Settings &settings, const std::string &title, const char *path, int id);
 // Writes the blocks a zone each to path in the format (id | flags).

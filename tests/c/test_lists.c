@@ -14,7 +14,8 @@
 
 static const int kLists[] = {EG2D_LIST_SOLVERS,      EG2D_LIST_PARAMETERS,   EG2D_LIST_FORMATS,
                              EG2D_LIST_QUALITY,      EG2D_LIST_SYSTEMS,      EG2D_LIST_INITIALIZERS,
-                             EG2D_LIST_ORTHOGONALITY, EG2D_LIST_TOPOLOGIES,  EG2D_LIST_DISTRIBUTIONS};
+                             EG2D_LIST_ORTHOGONALITY, EG2D_LIST_TOPOLOGIES,  EG2D_LIST_DISTRIBUTIONS,
+                             EG2D_LIST_SET_FORMATS};
 #define NLISTS (sizeof kLists / sizeof kLists[0])
 
 /* Each list: entries in increasing id order, names unique, each found by
@@ -66,6 +67,8 @@ static void names_are_the_ids(void **state) {
         {EG2D_LIST_ORTHOGONALITY, "middlecoff-thomas", EG2D_ORTHO_MIDDLECOFF_THOMAS},
         {EG2D_LIST_TOPOLOGIES, "c", EG2D_TOPO_C},
         {EG2D_LIST_DISTRIBUTIONS, "tanh2", EG2D_DIST_TANH_TWO},
+        {EG2D_LIST_SET_FORMATS, "cgns", EG2D_FORMAT_CGNS},
+        {EG2D_LIST_SET_FORMATS, "openfoam", EG2D_FORMAT_OPENFOAM},
     };
     size_t k;
     (void)state;

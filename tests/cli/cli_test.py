@@ -2,7 +2,8 @@
 progress and Ctrl-C. Run by ctest with /usr/bin/python3:
 
     cli_test.py TOOL EXAMPLES_DIR [unittest arguments, e.g. ErrorMessages]
-    cli_test.py TOOL EXAMPLES_DIR --example NAME SIZE   (one example at a small size)
+    cli_test.py TOOL EXAMPLES_DIR --example NAME SIZE   (one example at a small size; SIZE
+                                                          "blocks": a set of blocks at its own sizes)
 """
 import math
 import json
@@ -104,7 +105,8 @@ class Example(unittest.TestCase):
     def test_runs(self):
         case = os.path.join(EXAMPLES, self.name + ".toml")
         with tempfile.TemporaryDirectory() as out:
-            code, stdout, stderr = run("run", case, "-o", out, "--size", self.size)
+            # a set of blocks (SIZE "blocks") runs at its blocks' own sizes
+            code, stdout, stderr = run("run", case, "-o", out, *(() if self.size == "blocks" else ("--size", self.size)))
             self.assertEqual(code, 0, stdout + stderr)
             with open(case) as f:
                 text = f.read()
@@ -165,7 +167,7 @@ class ErrorMessages(unittest.TestCase):
     def test_unknown_key(self):
         self.check('size = [9, 9]\nsovler = "psor"\n' + self.GOOD_SIDES, 3,
                    "CASE:2:1: key 'sovler': unknown key (expected one of: title, size, topology, system, "
-                   "initial, solve, constants, solver, sides, controls, output, patches, interior_lines, "
+                   "initial, solve, constants, solver, sides, controls, output, patches, interior_lines, blocks, joins, "
                    "variational_area, variational_spacing, variational_orthogonality, variational_smoothness, "
                    "variational_orthogonality_form, hermite_spacing, "
                    "hermite_sides, hermite_height_jmin, hermite_height_imax, hermite_height_jmax, "
@@ -2181,6 +2183,181 @@ class CaseParameters(unittest.TestCase):
                     code, stderr, report = self.run_case(d, initial=name)
                     self.assertEqual(code, 0, stderr)
                     self.assertEqual(report["folded_cells"], 0)
+
+
+class BlockSets(unittest.TestCase):
+    """Case files of several blocks ([[blocks]], [[joins]]): the step example
+    run, its merged mesh read by checkMesh and counted in the SU2 file, each
+    block's own file; bad sets refused naming the key."""
+
+    STEP = "backward-facing-step"
+    # the step's blocks: upstream 25x41, upper 81x41, lower 81x17
+    CELLS = 24 * 40 + 80 * 40 + 80 * 16
+    POINTS = 25 * 41 + 81 * 41 + 81 * 17 - 41 - 81
+    PATCHES = {"wall": 2 * 24 + 2 * 80 + 16, "inlet": 40, "outlet": 40 + 16}
+
+    def test_step_runs_and_writes_one_mesh(self):
+        with tempfile.TemporaryDirectory() as d:
+            out = os.path.join(d, "out")
+            code, stdout, stderr = run("run", os.path.join(EXAMPLES, self.STEP + ".toml"), "-o", out)
+            self.assertEqual(code, 0, stdout + stderr)
+            self.assertIn("a set of 3 blocks, 2 joins", stdout)
+            for block in ("upstream 25 x 41", "upper 81 x 41", "lower 81 x 17"):
+                self.assertIn("block " + block.replace(" ", ": ", 1), stdout)
+            self.assertRegex(stdout, r"converged in \d+ iterations, residual [0-9.e+-]+, 5281 nodes solved for")
+            m = re.search(r"turns up to ([0-9.]+) deg at the joined nodes, ([0-9.]+) deg one line into", stdout)
+            self.assertTrue(m, stdout)
+            self.assertLessEqual(float(m.group(1)), float(m.group(2)))  # no kinks at the joins
+            self.assertIn("quality: 0 folded cells in the set", stdout)
+            self.assertEqual(sorted(os.listdir(out)),
+                             sorted([self.STEP + ".su2", self.STEP + "_foam", self.STEP + ".svg"] +
+                                    [f"{self.STEP}-{b}.vts" for b in ("upstream", "upper", "lower")]))
+            # SU2: one zone, the joined nodes once, the joins no markers
+            with open(os.path.join(out, self.STEP + ".su2")) as f:
+                text = f.read()
+            self.assertEqual(int(re.search(r"^NELEM=\s*(\d+)", text, re.M).group(1)), self.CELLS)
+            self.assertEqual(int(re.search(r"^NPOIN=\s*(\d+)", text, re.M).group(1)), self.POINTS)
+            names = re.findall(r"^MARKER_TAG=\s*(\S+)", text, re.M)
+            sizes = [int(n) for n in re.findall(r"^MARKER_ELEMS=\s*(\d+)", text, re.M)]
+            self.assertEqual(dict(zip(names, sizes)), self.PATCHES)
+            # one picture of the set: every block's lines, the joins not drawn as walls
+            check_svg(self, os.path.join(out, self.STEP + ".svg"))
+            # each block's own file has the block's nodes
+            with open(os.path.join(out, self.STEP + "-lower.vts")) as f:
+                self.assertIn('WholeExtent="0 80 0 16 0 0"', f.read())
+            # OpenFOAM: checkMesh (where installed) finds one region, the joins interior faces
+            case = os.path.join(out, self.STEP + "_foam")
+            check_mesh(self, case)
+            checkmesh = shutil_which("checkMesh")
+            if checkmesh:
+                env = dict(os.environ)
+                env.setdefault("WM_PROJECT_DIR", "/usr/share/openfoam")
+                log = subprocess.run([checkmesh, "-case", case], capture_output=True, text=True, env=env).stdout
+                self.assertIn("\nMesh OK.", log)
+                self.assertIn("Number of regions: 1 (OK).", log)
+                self.assertEqual(int(re.search(r"^\s*cells:\s+(\d+)", log, re.M).group(1)), self.CELLS)
+                table = {k: int(v) for k, v in re.findall(r"^\s{4}(\w+)\s+(\d+)\s+\d+\s+ok", log, re.M)}
+                self.assertEqual(table, dict(self.PATCHES, frontAndBack=2 * self.CELLS))
+
+    def test_demo_runs_the_step(self):
+        with tempfile.TemporaryDirectory() as d:
+            code, stdout, stderr = run("demo", self.STEP, "-o", d, "--quiet")
+            self.assertEqual(code, 0, stdout + stderr)
+            self.assertIn(self.STEP + ".su2", os.listdir(d))
+
+    def bad(self, replacements, code, message):
+        with tempfile.TemporaryDirectory() as d:
+            path = case_from_example(d, self.STEP, *replacements)
+            got, stdout, stderr = run("run", path, "-o", os.path.join(d, "out"))
+            self.assertEqual(got, code, stdout + stderr)
+            self.assertIn(message, stderr)
+            self.assertTrue(stderr.startswith("eg2d: " + path + ":"), stderr)
+            self.assertFalse(os.path.exists(os.path.join(d, "out")) and os.listdir(os.path.join(d, "out")))
+
+    def test_join_to_an_unknown_block(self):
+        self.bad([('b = { block = "upper", side = "left" }', 'b = { block = "uper", side = "left" }')], 3,
+                 "key 'joins[0].b.block': no block is named \"uper\" (the blocks: upstream, upper, lower)")
+
+    def test_compact_join(self):
+        # "BLOCK.SIDE": the whole side; the step solves as with the tables
+        with tempfile.TemporaryDirectory() as d:
+            path = case_from_example(d, self.STEP, ('a = { block = "upstream", side = "right" }', 'a = "upstream.right"'),
+                                     ('b = { block = "lower", side = "top" }', 'b = "lower.top"'))
+            code, stdout, stderr = run("run", path, "-o", os.path.join(d, "out"))
+            self.assertEqual(code, 0, stdout + stderr)
+            self.assertIn("turns up to 7.34 deg at the joined nodes", stdout)
+        self.bad([('b = { block = "lower", side = "top" }', 'b = "lower.up"')], 3,
+                 "key 'joins[1].b': \"up\" is not one of: bottom, right, top, left")
+        self.bad([('b = { block = "lower", side = "top" }', 'b = "lower"')], 3,
+                 "key 'joins[1].b': \"lower\": expected \"BLOCK.SIDE\" (a whole side) or {block, side, first, last}")
+
+    def test_join_of_different_node_counts(self):
+        self.bad([('a = { block = "upstream", side = "right" }', 'a = { block = "upstream", side = "right", last = 30 }')], 3,
+                 "key 'joins[0].b': spans 41 nodes (0 to 40) but a spans 31 (0 to 30): a join is node to node")
+
+    def test_missing_side(self):
+        with open(os.path.join(EXAMPLES, self.STEP + ".toml")) as f:
+            text = f.read()
+        lower_top = text.index('[blocks.sides.top]\nx = "20*tanh(2*s)/tanh(2)"\ny = "1"\n', text.index('name = "lower"'))
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "case.toml")
+            with open(path, "w") as f:
+                f.write(text[:lower_top] + text[lower_top:].replace('[blocks.sides.top]\nx = "20*tanh(2*s)/tanh(2)"\ny = "1"\n', "", 1))
+            got, _, stderr = run("run", path, "-o", os.path.join(d, "out"))
+            self.assertEqual(got, 3, stderr)
+            self.assertIn("key 'blocks[2].sides.top': missing (a single-block case needs the sides bottom, right, top, left)",
+                          stderr)
+
+    def test_join_range_outside_the_side(self):
+        self.bad([('b = { block = "lower", side = "top" }', 'b = { block = "lower", side = "top", first = 1, last = 81 }')], 3,
+                 "key 'joins[1].b.last': last = 81: need a whole number in [0, 80] (side top of block lower has 81 nodes)")
+
+    def test_duplicate_block_name(self):
+        self.bad([('name = "lower"', 'name = "upper"')], 3, "key 'blocks[2].name': \"upper\" names two blocks")
+
+    def test_one_grid_keys_refused(self):
+        self.bad([('system = "winslow"', 'system = "winslow"\nsize = [9, 9]')], 3,
+                 "key 'size': not in a case of [[blocks]]")
+
+    def test_size_option_refused(self):
+        code, _, stderr = run("run", os.path.join(EXAMPLES, self.STEP + ".toml"), "-o", "/nonexistent/x", "--size", "9x9")
+        self.assertEqual(code, 2, stderr)
+        self.assertIn("--size does not apply to a case of [[blocks]]", stderr)
+
+    def test_run_files_refused(self):
+        self.bad([('formats = ["su2", "openfoam", "vts", "svg"]', 'formats = ["su2", "history"]')], 3,
+                 "key 'output.formats[1]': is not written for a set of blocks")
+
+    def test_output_set_all_or_nothing(self):
+        # a case path that is a file: refused before solving, nothing of the set written;
+        # a second run replaces the set, and an existing case directory is updated in place
+        with tempfile.TemporaryDirectory() as d:
+            out = os.path.join(d, "out")
+            os.mkdir(out)
+            blocker = os.path.join(out, self.STEP + "_foam")
+            with open(blocker, "w") as f:
+                f.write("old")
+            code, stdout, stderr = run("run", os.path.join(EXAMPLES, self.STEP + ".toml"), "-o", out)
+            self.assertEqual(code, 8, stdout + stderr)
+            self.assertIn("not a directory, so no case can be written there (checked before solving)", stderr)
+            self.assertNotIn("converged", stdout)
+            self.assertEqual(os.listdir(out), [self.STEP + "_foam"])
+            os.remove(blocker)
+            for _ in range(2):
+                code, stdout, stderr = run("run", os.path.join(EXAMPLES, self.STEP + ".toml"), "-o", out)
+                self.assertEqual(code, 0, stdout + stderr)
+            self.assertEqual(len(os.listdir(out)), 6)
+            self.assertTrue(os.path.isfile(os.path.join(out, self.STEP + "_foam", "constant", "polyMesh", "points")))
+
+    def test_library_refusals_and_exit_codes(self):
+        # what the library's set does not support, at the key that asks for it (exit 9)
+        self.bad([('system = "winslow"', 'system = "variational"')], 9,
+                 "key 'system': eg2d_blocks_check: block 0: the variational system on a set of blocks is not available")
+        # the iteration limit (block 0's): exit 5, nothing written
+        self.bad([("[output]", "[solver]\nmax_iterations = 2\n\n[output]")], 5,
+                 "eg2d_blocks_solve: the set reached the iteration limit (2)")
+        # a block no join reaches: exit 4, the blocks named by their indices
+        self.bad([('[[joins]]\na = { block = "upper", side = "bottom" }\nb = { block = "lower", side = "top" }', "")], 4,
+                 "key 'blocks': eg2d_blocks_check: the set is not connected: no chain of joins from block 0 to block 2 "
+                 "(blocks 0, 1, ...: upstream, upper, lower)")
+
+    def test_library_error_names_the_join(self):
+        # the lower block's top moved up: the joined nodes do not coincide (eg2d_blocks_check)
+        with tempfile.TemporaryDirectory() as d:
+            with open(os.path.join(EXAMPLES, self.STEP + ".toml")) as f:
+                text = f.read()
+            k = text.index('name = "lower"')
+            text = text[:k] + text[k:].replace('x = "20*tanh(2*s)/tanh(2)"\ny = "1"', 'x = "20*tanh(2*s)/tanh(2)"\ny = "1.5"', 1)
+            text = text.replace('y = "0.5 + 0.5*tanh(2.5*(2*s - 1))/tanh(2.5)"', 'y = "1.5*(0.5 + 0.5*tanh(2.5*(2*s - 1))/tanh(2.5))"')
+            path = os.path.join(d, "case.toml")
+            with open(path, "w") as f:
+                f.write(text)
+            code, stdout, stderr = run("run", path, "-o", os.path.join(d, "out"))
+            self.assertEqual(code, 4, stdout + stderr)
+            self.assertIn("key 'joins[1]': eg2d_blocks_check: join block 1 side JMIN", stderr)
+            self.assertIn("are 0.5 apart", stderr)
+            self.assertIn("(blocks 0, 1, ...: upstream, upper, lower)", stderr)
+            self.assertFalse(os.path.exists(os.path.join(d, "out")))
 
 
 def shutil_which(name):

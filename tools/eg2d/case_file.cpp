@@ -3,6 +3,8 @@
 #include <eg2d.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cstdlib>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -18,7 +20,8 @@ namespace eg2dtool {
 namespace {
 
 const std::vector<std::string> top_keys = {"title", "size", "topology", "system", "initial", "solve",
-                                           "constants", "solver", "sides", "controls", "output", "patches", "interior_lines"};
+                                           "constants", "solver", "sides", "controls", "output", "patches", "interior_lines",
+                                           "blocks", "joins"};
 // [controls]: the orthogonality, the growth limit, the command's control
 // kinds (features.cpp) and the controls' parameters (read with them).
 std::vector<std::string> controls_keys() {
@@ -83,21 +86,27 @@ void read_solver(const Fields &top, Case &c) {
     read_parameters(f, "solver", c);
 }
 
-void read_sides(const Fields &top, Case &c) {
-    const auto &valid = side_names(c.topology);
+// The sides of `parent`'s [sides] table (a case's, or a block's).
+std::vector<SideSpec> read_side_table(const Fields &parent, int topology, const std::string &dir,
+                                      const Constants &constants) {
+    const auto &valid = side_names(topology);
     std::vector<std::string> keys;
     for (const auto &s : valid) keys.push_back(s.first);
-    const Location where = top.at("sides");
-    Fields f(top.table("sides"), where, keys);
+    const Location where = parent.at("sides");
+    Fields f(parent.table("sides"), where, keys);
     f.finish();
+    std::vector<SideSpec> sides;
     for (const auto &s : valid) {
         if (!f.has(s.first))
             throw Failure(EXIT_CASE, f.at(s.first).str() + ": missing (a " +
-                                         (c.topology == EG2D_TOPO_O ? "O-grid" : c.topology == EG2D_TOPO_C ? "C-grid" : "single-block") +
+                                         (topology == EG2D_TOPO_O ? "O-grid" : topology == EG2D_TOPO_C ? "C-grid" : "single-block") +
                                          " case needs the sides " + join(keys) + ")");
-        c.sides.push_back(parse_side(*f.node(s.first), s.second, s.first, f.at(s.first), c.dir, c.constants));
+        sides.push_back(parse_side(*f.node(s.first), s.second, s.first, f.at(s.first), dir, constants));
     }
+    return sides;
 }
+
+void read_sides(const Fields &top, Case &c) { c.sides = read_side_table(top, c.topology, c.dir, c.constants); }
 
 // [controls] wall_spacing: a first-cell height per wall side, or a table
 // {yplus, reynolds, chord} turned into one by eg2d_first_cell_height.
@@ -222,15 +231,16 @@ void read_controls(const Fields &top, Case &c) {
 }
 
 // [[patches]]: side (a name of [sides]), first and last node (default: the
-// whole side), type and name, as eg2d_set_patch takes them.
-void read_patches(const Fields &top, Case &c) {
-    if (!top.has("patches")) return;
-    const toml::array &a = top.array("patches");
-    const auto &valid = side_names(c.topology);
+// whole side), type and name, as eg2d_set_patch takes them; of a case or a block.
+void read_patch_array(const Fields &parent, int topology, int ni, int nj, const Constants &constants,
+                      std::vector<PatchSetting> &patches) {
+    if (!parent.has("patches")) return;
+    const toml::array &a = parent.array("patches");
+    const auto &valid = side_names(topology);
     std::vector<std::string> sides;
     for (const auto &s : valid) sides.push_back(s.first);
     for (std::size_t k = 0; k < a.size(); ++k) {
-        const Location l = locate(top.where(), "patches[" + std::to_string(k) + "]", *a.get(k));
+        const Location l = locate(parent.where(), "patches[" + std::to_string(k) + "]", *a.get(k));
         if (!a.get(k)->is_table()) throw Failure(EXIT_CASE, l.str() + ": expected a table, found " + type_name(*a.get(k)));
         Fields f(*a.get(k)->as_table(), l, {"side", "first", "last", "type", "name"});
         f.finish();
@@ -238,19 +248,156 @@ void read_patches(const Fields &top, Case &c) {
         int id = 0;
         for (const auto &s : valid)
             if (s.first == side) id = s.second;
-        const int n = (id == EG2D_SIDE_JMIN || id == EG2D_SIDE_JMAX) ? c.ni : c.nj;
+        const int n = (id == EG2D_SIDE_JMIN || id == EG2D_SIDE_JMAX) ? ni : nj;
         const std::string type = f.choice("type", "", {"wall", "farfield", "outflow", "inflow", "symmetry"});
         const int t = type == "wall" ? EG2D_PATCH_WALL : type == "farfield" ? EG2D_PATCH_FARFIELD
                     : type == "outflow" ? EG2D_PATCH_OUTFLOW : type == "inflow" ? EG2D_PATCH_INFLOW
                     : EG2D_PATCH_SYMMETRY;
-        const double first = f.number("first", 0, c.constants), last = f.number("last", n - 1, c.constants);
+        const double first = f.number("first", 0, constants), last = f.number("last", n - 1, constants);
         if (!(first >= 0 && first < last && last <= n - 1) || first != static_cast<long>(first) ||
             last != static_cast<long>(last))
             throw Failure(EXIT_CASE, f.at(f.has("first") ? "first" : "last").str() + ": first = " + fmt(first) +
                                          ", last = " + fmt(last) + ": need whole numbers 0 <= first < last <= " +
                                          std::to_string(n - 1) + " (side " + side + " has " + std::to_string(n) +
                                          " nodes)");
-        c.patches.push_back({id, static_cast<int>(first), static_cast<int>(last), t, f.text("name"), l});
+        patches.push_back({id, static_cast<int>(first), static_cast<int>(last), t, f.text("name"), l});
+    }
+}
+
+void read_patches(const Fields &top, Case &c) { read_patch_array(top, c.topology, c.ni, c.nj, c.constants, c.patches); }
+
+// A block's name: 1 to 32 letters, digits, '_' or '-', a letter first (it is
+// part of the block's file names, NAME-BLOCK.vts).
+bool good_block_name(const std::string &n) {
+    if (n.empty() || n.size() > 32 || !std::isalpha(static_cast<unsigned char>(n[0]))) return false;
+    for (char ch : n)
+        if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '-') return false;
+    return true;
+}
+
+// [[blocks]]: name, size, sides (as a single-block case's [sides]) and
+// [[blocks.patches]]; each block's formulas see its own ni, nj.
+void read_blocks(const Fields &top, Case &c) {
+    c.blocks_at = top.at("blocks");
+    const toml::array &a = top.array("blocks");
+    if (a.empty()) throw Failure(EXIT_CASE, c.blocks_at.str() + ": a set needs at least one block");
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        const Location l = locate(top.where(), "blocks[" + std::to_string(k) + "]", *a.get(k));
+        if (!a.get(k)->is_table()) throw Failure(EXIT_CASE, l.str() + ": expected a table, found " + type_name(*a.get(k)));
+        Fields f(*a.get(k)->as_table(), l, {"name", "size", "sides", "patches"});
+        f.finish();
+        BlockSpec b;
+        b.where = l;
+        b.name = f.text("name");
+        if (!good_block_name(b.name))
+            throw Failure(EXIT_CASE, f.at("name").str() + ": \"" + b.name +
+                                         "\": a block's name is 1 to 32 letters, digits, '_' or '-', a letter first");
+        for (const auto &other : c.blocks)
+            if (other.name == b.name)
+                throw Failure(EXIT_CASE, f.at("name").str() + ": \"" + b.name + "\" names two blocks (the other at line " +
+                                             std::to_string(other.where.line) + ")");
+        b.size_at = f.at("size");
+        double dni = 0, dnj = 0;
+        read_pair(f.array("size"), b.size_at, c.constants, dni, dnj);
+        check_size(dni, dnj, b.size_at);
+        if (dni != static_cast<long>(dni) || dnj != static_cast<long>(dnj))
+            throw Failure(EXIT_CASE, b.size_at.str() + ": expected whole numbers [ni, nj]");
+        b.ni = static_cast<int>(dni);
+        b.nj = static_cast<int>(dnj);
+        b.constants = c.constants;
+        b.constants["ni"] = b.ni;
+        b.constants["nj"] = b.nj;
+        b.sides = read_side_table(f, EG2D_TOPO_SINGLE, c.dir, b.constants);
+        for (const SideSpec &sd : b.sides)
+            for (const SidePiece &p : sd.pieces)
+                if (p.sliding) throw Failure(EXIT_CASE, p.where.str() + ": a block's side does not slide (sets of blocks)");
+        read_patch_array(f, EG2D_TOPO_SINGLE, b.ni, b.nj, b.constants, b.patches);
+        c.blocks.push_back(std::move(b));
+    }
+}
+
+// One end of a join: {block, side, first, last}; first and last default to
+// the side's ends.
+// One end of a join from its fields (block, side, first, last).
+// compact: from "BLOCK.SIDE", whose messages name `where`.
+JoinEnd read_join_end_fields(const Fields &f, const Location &where, const Case &c, bool compact) {
+    JoinEnd e;
+    e.where = where;
+    const Location block_at = compact ? where : f.at("block"), side_at = compact ? where : f.at("side");
+    const std::string block = f.text("block");
+    std::vector<std::string> known;
+    e.block = -1;
+    for (std::size_t k = 0; k < c.blocks.size(); ++k) {
+        known.push_back(c.blocks[k].name);
+        if (c.blocks[k].name == block) e.block = static_cast<int>(k);
+    }
+    if (e.block < 0)
+        throw Failure(EXIT_CASE, block_at.str() + ": no block is named \"" + block + "\" (the blocks: " + join(known) + ")");
+    const BlockSpec &b = c.blocks[static_cast<std::size_t>(e.block)];
+    const auto &valid = side_names(EG2D_TOPO_SINGLE);
+    std::vector<std::string> sides;
+    for (const auto &s : valid) sides.push_back(s.first);
+    const std::string side = f.text("side");
+    if (std::find(sides.begin(), sides.end(), side) == sides.end())
+        throw Failure(EXIT_CASE, side_at.str() + ": \"" + side + "\" is not one of: " + join(sides));
+    for (const auto &s : valid)
+        if (s.first == side) e.side = s.second;
+    const int n = (e.side == EG2D_SIDE_JMIN || e.side == EG2D_SIDE_JMAX) ? b.ni : b.nj;
+    const double first = f.number("first", 0, b.constants), last = f.number("last", n - 1, b.constants);
+    for (const char *k : {"first", "last"}) {
+        const double v = k[0] == 'f' ? first : last;
+        if (!(v >= 0 && v <= n - 1) || v != static_cast<long>(v))
+            throw Failure(EXIT_CASE, f.at(k).str() + ": " + k + " = " + fmt(v) + ": need a whole number in [0, " +
+                                         std::to_string(n - 1) + "] (side " + side + " of block " + b.name + " has " +
+                                         std::to_string(n) + " nodes)");
+    }
+    if (first == last)
+        throw Failure(EXIT_CASE, f.at("last").str() + ": first = last = " + fmt(first) + ": a join spans at least two nodes");
+    e.first = static_cast<int>(first);
+    e.last = static_cast<int>(last);
+    return e;
+}
+
+// The compact form "BLOCK.SIDE" is the whole side.
+JoinEnd read_join_end(const Fields &parent, const char *key, const Case &c) {
+    if (parent.has(key) && parent.node(key)->is_string()) {
+        const std::string text = parent.text(key);
+        const auto dot = text.rfind('.');
+        if (dot == std::string::npos)
+            throw Failure(EXIT_CASE, parent.at(key).str() + ": \"" + text +
+                                         "\": expected \"BLOCK.SIDE\" (a whole side) or {block, side, first, last}");
+        toml::table t;
+        t.insert("block", text.substr(0, dot));
+        t.insert("side", text.substr(dot + 1));
+        Fields f(t, parent.at(key), {"block", "side"});
+        return read_join_end_fields(f, parent.at(key), c, true);
+    }
+    Fields f(parent.table(key), parent.at(key), {"block", "side", "first", "last"});
+    f.finish();
+    return read_join_end_fields(f, parent.at(key), c, false);
+}
+
+// [[joins]]: a = {block, side, first, last}, b = {...}: node first of a is
+// node first of b, and so on (eg2d_blocks_join).
+void read_joins(const Fields &top, Case &c) {
+    if (!top.has("joins")) return;
+    const toml::array &a = top.array("joins");
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        const Location l = locate(top.where(), "joins[" + std::to_string(k) + "]", *a.get(k));
+        if (!a.get(k)->is_table()) throw Failure(EXIT_CASE, l.str() + ": expected a table, found " + type_name(*a.get(k)));
+        Fields f(*a.get(k)->as_table(), l, {"a", "b"});
+        f.finish();
+        JoinSpec j;
+        j.where = l;
+        j.a = read_join_end(f, "a", c);
+        j.b = read_join_end(f, "b", c);
+        const int na = std::abs(j.a.last - j.a.first) + 1, nb = std::abs(j.b.last - j.b.first) + 1;
+        if (na != nb)
+            throw Failure(EXIT_CASE, j.b.where.str() + ": spans " + std::to_string(nb) + " nodes (" +
+                                         std::to_string(j.b.first) + " to " + std::to_string(j.b.last) + ") but a spans " +
+                                         std::to_string(na) + " (" + std::to_string(j.a.first) + " to " +
+                                         std::to_string(j.a.last) + "): a join is node to node");
+        c.joins.push_back(j);
     }
 }
 
@@ -338,18 +485,32 @@ Case read_case(const std::string &text, const std::string &file, const std::stri
     top.finish();
     c.title = top.text("title", stem_of(file));
 
-    // size first: ni and nj are constants of every formula
-    const toml::array &size = top.array("size");
-    c.size_at = top.at("size");
-    double dni = 0, dnj = 0;
-    read_pair(size, c.size_at, {}, dni, dnj);
-    check_size(dni, dnj, c.size_at);
-    if (dni != static_cast<long>(dni) || dnj != static_cast<long>(dnj))
-        throw Failure(EXIT_CASE, c.size_at.str() + ": expected whole numbers [ni, nj]");
-    c.ni = ni > 0 ? ni : static_cast<int>(dni);
-    c.nj = nj > 0 ? nj : static_cast<int>(dnj);
-    c.constants["ni"] = c.ni;
-    c.constants["nj"] = c.nj;
+    // A set of blocks: each block has its size; the one-grid keys are not at the top.
+    const bool set = top.has("blocks");
+    if (set) {
+        for (const char *k : {"size", "topology", "sides", "patches", "controls", "interior_lines"})
+            if (top.has(k))
+                throw Failure(EXIT_CASE, top.at(k).str() + ": not in a case of [[blocks]] (each block has its own size, "
+                                         "sides and patches; a set of blocks is single-block grids without controls or "
+                                         "interior lines)");
+        if (ni > 0 || nj > 0)
+            throw Failure(EXIT_USAGE, file + ": --size does not apply to a case of [[blocks]] (each block has its size)");
+    } else if (top.has("joins")) {
+        throw Failure(EXIT_CASE, top.at("joins").str() + ": joins belong to a case of [[blocks]]");
+    } else {
+        // size first: ni and nj are constants of every formula
+        const toml::array &size = top.array("size");
+        c.size_at = top.at("size");
+        double dni = 0, dnj = 0;
+        read_pair(size, c.size_at, {}, dni, dnj);
+        check_size(dni, dnj, c.size_at);
+        if (dni != static_cast<long>(dni) || dnj != static_cast<long>(dnj))
+            throw Failure(EXIT_CASE, c.size_at.str() + ": expected whole numbers [ni, nj]");
+        c.ni = ni > 0 ? ni : static_cast<int>(dni);
+        c.nj = nj > 0 ? nj : static_cast<int>(dnj);
+        c.constants["ni"] = c.ni;
+        c.constants["nj"] = c.nj;
+    }
     if (top.has("constants")) {
         const Location at = top.at("constants");
         const toml::table &t = top.table("constants");
@@ -361,7 +522,8 @@ Case read_case(const std::string &text, const std::string &file, const std::stri
         for (const auto &o : order) keys.push_back(o.second);
         Fields f(t, at, keys);
         for (const auto &k : keys) {
-            if (c.constants.count(k) || k == "pi" || k == "e" || k == "s" || k == "i" || k == "j")
+            if (c.constants.count(k) || k == "pi" || k == "e" || k == "s" || k == "i" || k == "j" ||
+                k == "ni" || k == "nj")
                 throw Failure(EXIT_CASE, f.at(k).str() + ": is a reserved or repeated name (pi, e, s, i, j, ni, nj)");
             c.constants[k] = f.number(k, c.constants);
         }
@@ -375,6 +537,19 @@ Case read_case(const std::string &text, const std::string &file, const std::stri
     c.solve = top.boolean("solve", true);
     read_parameters(top, "top", c);
     read_solver(top, c);
+    if (set) {
+        if (c.initial != EG2D_INIT_TFI)
+            throw Failure(EXIT_CASE, c.initial_at.str() + ": a set of blocks starts from each block's TFI grid");
+        if (!c.solve) throw Failure(EXIT_CASE, top.at("solve").str() + ": a set of blocks is solved (solve = true)");
+        read_blocks(top, c);
+        read_joins(top, c);
+        read_output(top, c, stem_of(file));
+        for (const auto &out : c.outputs)
+            if (out.tool && out.tool != kGridPng)
+                throw Failure(EXIT_CASE, out.where.str() + ": is not written for a set of blocks (su2 and openfoam "
+                                         "are one mesh, svg and png one picture, the others one file per block)");
+        return c;
+    }
     read_sides(top, c);
     read_controls(top, c);
     read_patches(top, c);

@@ -61,6 +61,26 @@ struct OutputFile {
     int tool = 0;            // a ToolFile (features.hpp) the command writes itself; 0: eg2d_write
 };
 
+// A set of blocks (docs/case-files.md, "Sets of blocks"): [[blocks]], [[joins]].
+struct BlockSpec {  // one block: a single-block grid of its own
+    std::string name;
+    int ni = 0, nj = 0;
+    Location where, size_at;
+    Constants constants;  // the case's, with this block's ni, nj
+    std::vector<SideSpec> sides;
+    std::vector<PatchSetting> patches;
+};
+
+struct JoinEnd {  // one side of a join: nodes first..last of a block's side
+    int block = 0, side = 0, first = 0, last = 0;
+    Location where;
+};
+
+struct JoinSpec {  // eg2d_blocks_join
+    JoinEnd a, b;
+    Location where;
+};
+
 struct Case {
     std::string file;  // as given
     std::string dir;   // directory of the case file: relative point files are read from here
@@ -93,6 +113,11 @@ struct Case {
     std::vector<OutputFile> outputs;
     int svg_quality = -1;  // EG2D_QUALITY_* the picture is coloured by; -1: none
     Location svg_quality_at;
+    // A set of blocks: every block's sides and patches are its own; size,
+    // sides, patches and the other one-grid keys are not at the top level.
+    std::vector<BlockSpec> blocks;  // empty: one grid
+    std::vector<JoinSpec> joins;
+    Location blocks_at;
 };
 
 // Reads a case from TOML text; `file` names it in messages, `dir` resolves relative

@@ -66,6 +66,8 @@ const std::vector<Feature> &geometry() {
 
 const std::vector<Feature> &distributions() { return listed<EG2D_LIST_DISTRIBUTIONS>(); }
 
+const std::vector<Feature> &set_formats() { return listed<EG2D_LIST_SET_FORMATS>(); }
+
 const std::vector<Feature> &formats() {
     static const std::vector<Feature> t = [] {
         std::vector<Feature> v = library_list(EG2D_LIST_FORMATS, [](Feature &f) {

@@ -12,7 +12,9 @@
 
 #include "failure.hpp"
 #include "features.hpp"
+#include "grid_lines.hpp"
 #include "grid_views.hpp"
+#include "view_lines.hpp"
 #include "piece_curve.hpp"
 #include "output_set.hpp"
 #include "progress.hpp"
@@ -237,7 +239,243 @@ static int write_start_grid(eg2d_grid *g, const Case &c, const RunOptions &o) {
     return EXIT_OK;
 }
 
+namespace {
+
+struct BlocksDeleter {
+    void operator()(eg2d_blocks *b) const { eg2d_blocks_destroy(b); }
+};
+using BlocksPtr = std::unique_ptr<eg2d_blocks, BlocksDeleter>;
+
+// A failed call on the set: the location in the case file and the set's message.
+// `blocks`: the blocks' names in order, added to a message that numbers them.
+void check_set(eg2d_blocks *set, int status, const Location &at, const std::string &blocks = "") {
+    if (status == EG2D_ERR_MEMORY)
+        throw Failure(EXIT_MEMORY, std::string("out of memory: the set is too large for this machine (") +
+                                       eg2d_blocks_last_error(set) + ")");
+    const std::string message = eg2d_blocks_last_error(set);
+    const bool numbered = !blocks.empty() && message.find("block ") != std::string::npos;
+    if (status != EG2D_OK)
+        throw Failure(exit_code_for_status(status),
+                      at.str() + ": " + message + (numbered ? " (blocks 0, 1, ...: " + blocks + ")" : ""));
+}
+
+// The set's files: the formats the library writes a set in (its list
+// EG2D_LIST_SET_FORMATS: one mesh, or a zone a block; eg2d_blocks_write,
+// NAME.su2, NAME_foam, NAME.cgns, ...), every other library format one file
+// per block (eg2d_write, NAME-BLOCK.vts, ...), the pictures one picture of
+// the set. In the order of [output] formats, blocks in order.
+struct SetFile {
+    std::string name;
+    int format;
+    bool directory;
+    int block;  // -1: the whole set
+    Location where;
+};
+
+std::vector<SetFile> set_files(const Case &c) {
+    std::vector<SetFile> files;
+    for (const auto &out : c.outputs) {
+        const bool whole = std::any_of(set_formats().begin(), set_formats().end(),
+                                       [&](const Feature &f) { return f.id == out.format && !out.tool; });
+        if (whole || out.tool == kGridPng || out.format == EG2D_FORMAT_SVG) {  // the set in one file; one picture
+            files.push_back({out.name, out.tool == kGridPng ? -1 : out.format, out.directory, -1, out.where});
+            continue;
+        }
+        std::string ext;
+        for (const auto &f : formats())
+            if (f.id == out.format && !f.tool) ext = f.extension;
+        const std::string stem = out.name.substr(0, out.name.size() - ext.size());
+        for (std::size_t b = 0; b < c.blocks.size(); ++b)
+            files.push_back({stem + "-" + c.blocks[b].name + ext, out.format, out.directory, static_cast<int>(b), out.where});
+    }
+    return files;
+}
+
+// The set as one picture (svg, png): every block's lines in one view of the
+// whole set, the joined stretches drawn as grid lines (each block's sides
+// are drawn by patch, and a joined side keeps its default wall patch).
+std::string set_picture(const Case &c, const std::vector<GridPtr> &grids, bool png) {
+    std::vector<GridLines> blocks;
+    GridLines all;
+    for (const auto &g : grids) {
+        blocks.push_back(grid_lines(g.get()));
+        all.x.insert(all.x.end(), blocks.back().x.begin(), blocks.back().x.end());
+        all.y.insert(all.y.end(), blocks.back().y.begin(), blocks.back().y.end());
+    }
+    for (const JoinSpec &j : c.joins)
+        for (const JoinEnd &e : {j.a, j.b}) {
+            GridLines &b = blocks[static_cast<std::size_t>(e.block)];
+            const std::size_t ni = static_cast<std::size_t>(b.ni), top = ni * static_cast<std::size_t>(b.nj - 1);
+            const int lo = std::min(e.first, e.last), hi = std::max(e.first, e.last);
+            for (LineRef &l : b.lines) {
+                if (l.kind == kGridLine) continue;
+                int side = -1;
+                std::size_t f = 0;
+                if (l.stride == 1 && l.first < ni) side = EG2D_SIDE_JMIN, f = l.first;
+                else if (l.stride == 1 && l.first >= top) side = EG2D_SIDE_JMAX, f = l.first - top;
+                else if (l.stride == ni && l.first % ni == 0) side = EG2D_SIDE_IMIN, f = l.first / ni;
+                else if (l.stride == ni && l.first % ni == ni - 1) side = EG2D_SIDE_IMAX, f = l.first / ni;
+                if (side == e.side && static_cast<int>(f) >= lo && static_cast<int>(f) + l.count - 1 <= hi) l.kind = kGridLine;
+            }
+        }
+    const View v = domain_view(all);
+    std::vector<Polyline> shown;
+    for (const GridLines &b : blocks) {
+        std::vector<Polyline> p = view_lines(b, v);
+        shown.insert(shown.end(), p.begin(), p.end());
+    }
+    // grid lines first, then boundaries, walls last (on top), as for one grid
+    std::stable_sort(shown.begin(), shown.end(), [](const Polyline &a, const Polyline &b) { return a.kind < b.kind; });
+    return png ? view_png(v, shown) : view_svg(v, shown, "eg2d " + c.title + ": the set of blocks");
+}
+
+// A case of [[blocks]]: each block a single-block grid with the case's
+// system, solver and parameters, its own sides and patches; the set joins
+// and solves them (eg2d_blocks_*), block 0's settings driving it.
+int run_block_set(const Case &c, const RunOptions &o) {
+    std::vector<GridPtr> grids;
+    for (const BlockSpec &b : c.blocks) {
+        eg2d_grid *raw = nullptr;
+        check(nullptr, eg2d_create(b.ni, b.nj, &raw), b.size_at);
+        grids.emplace_back(raw);
+        eg2d_grid *g = raw;
+        check(g, eg2d_set_system(g, c.system), c.system_at);
+        check(g, eg2d_set_solver(g, c.solver), c.solver_at);
+        std::vector<ParameterSetting> params = c.parameters;
+        std::stable_partition(params.begin(), params.end(), [](const ParameterSetting &p) { return p.value != 0.0; });
+        for (const auto &p : params) check(g, eg2d_set_parameter(g, p.id, p.value), p.where);
+        for (const auto &s : b.sides) {
+            const bool along_i = s.side == EG2D_SIDE_JMIN || s.side == EG2D_SIDE_JMAX;
+            std::vector<double> x, y;
+            side_nodes(s, along_i ? b.ni : b.nj, false, b.constants, x, y);
+            check(g, eg2d_set_side(g, s.side, x.data(), y.data()), s.where);
+        }
+        for (const auto &p : b.patches)
+            check(g, eg2d_set_patch(g, p.side, p.first, p.last, p.type, p.name.c_str()), p.where);
+    }
+    eg2d_blocks *raw_set = nullptr;
+    check_set(nullptr, eg2d_blocks_create(&raw_set), c.blocks_at);
+    BlocksPtr owner(raw_set);
+    eg2d_blocks *set = owner.get();
+    std::string names;
+    for (const BlockSpec &b : c.blocks) names += (names.empty() ? "" : ", ") + b.name;
+    for (std::size_t k = 0; k < grids.size(); ++k) {
+        int index = 0;
+        check_set(set, eg2d_blocks_add(set, grids[k].get(), &index), c.blocks[k].where);
+    }
+    for (const JoinSpec &j : c.joins)
+        check_set(set, eg2d_blocks_join(set, j.a.block, j.a.side, j.a.first, j.a.last, j.b.block, j.b.side, j.b.first,
+                                        j.b.last),
+                  j.where, names);
+    // The library names a join by its blocks' indices and sides: the case
+    // file's message names the join's key where the message is about one.
+    if (const int status = eg2d_blocks_check(set); status != EG2D_OK) {
+        static const char *const library_side[] = {"JMIN", "IMAX", "JMAX", "IMIN"};
+        const std::string message = eg2d_blocks_last_error(set);
+        Location at = c.blocks_at;
+        for (const JoinSpec &j : c.joins) {
+            char text[256];
+            std::snprintf(text, sizeof text, "join block %d side %s nodes %d..%d to block %d side %s nodes %d..%d",
+                          j.a.block, library_side[j.a.side], j.a.first, j.a.last, j.b.block, library_side[j.b.side],
+                          j.b.first, j.b.last);
+            if (message.find(text) != std::string::npos) at = j.where;
+        }
+        int block = -1;
+        if (message.find(" system ") != std::string::npos) at = c.system_at;  // the case's, every block's
+        else if (at.key == c.blocks_at.key && std::sscanf(message.c_str(), "eg2d_blocks_check: block %d", &block) == 1 &&
+                 block >= 0 && block < static_cast<int>(c.blocks.size()))
+            at = c.blocks[static_cast<std::size_t>(block)].where;  // a block no join reaches, ...
+        check_set(set, status, at, names);
+    }
+
+    double tolerance = 0;
+    eg2d_get_parameter(grids.front().get(), EG2D_PARAM_TOLERANCE, &tolerance);
+    long nodes = 0;
+    for (const BlockSpec &b : c.blocks) nodes += static_cast<long>(b.ni) * b.nj;
+    std::printf("%s: a set of %zu blocks, %zu join%s, %ld nodes, %s system, %s solver, tolerance %.3g\n", c.title.c_str(),
+                c.blocks.size(), c.joins.size(), c.joins.size() == 1 ? "" : "s", nodes, name_of(systems(), c.system),
+                eg2d_solver_name(c.solver), tolerance);
+    for (const BlockSpec &b : c.blocks) std::printf("  block %s: %d x %d\n", b.name.c_str(), b.ni, b.nj);
+    std::fflush(stdout);
+
+    const std::vector<SetFile> files = set_files(c);
+    std::vector<PlannedPath> paths;
+    for (const auto &f : files) paths.push_back({f.name, f.format, f.directory, f.where.str()});
+    check_before_solving(o.out_dir, paths);
+
+    const auto start = std::chrono::steady_clock::now();
+    const int status = eg2d_blocks_solve(set);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    int iterations = 0, unknowns = 0;
+    double residual = 0;
+    eg2d_blocks_get_run(set, &iterations, &residual, &unknowns);
+    if (status == EG2D_ERR_INTERRUPTED) {
+        std::printf("interrupted at iteration %d, residual %.3e: no files written\n", iterations, residual);
+        return EXIT_INTERRUPTED;
+    }
+    if (status == EG2D_OK)
+        std::printf("converged in %d iterations, residual %.3e, %d nodes solved for, %.2f s\n", iterations, residual,
+                    unknowns, seconds);
+    if (status != EG2D_OK && status != EG2D_ERR_DIVERGED)
+        std::printf("stopped after %d iterations, residual %.3e\n", iterations, residual);
+    if (status != EG2D_OK)
+        throw Failure(exit_code_for_status(status), c.file + ": " + eg2d_blocks_last_error(set) + " (no files written)");
+    double at_joins = 0, nearby = 0;
+    check_set(set, eg2d_blocks_get_kinks(set, &at_joins, &nearby), c.blocks_at);
+    std::printf("grid lines across the joins: turns up to %.2f deg at the joined nodes, %.2f deg one line into the "
+                "blocks\n", at_joins, nearby);
+    // the quality of the set: folded cells summed, then every block's
+    double folded = 0, fold_check = 1;
+    for (const auto &g : grids) {
+        double f = 0;
+        eg2d_get_quality(g.get(), EG2D_QUALITY_FOLDED_CELLS, &f);
+        folded += f;
+    }
+    std::printf("quality: %.0f folded cells in the set\n", folded);
+    for (std::size_t k = 0; k < grids.size(); ++k) {
+        eg2d_grid *g = grids[k].get();
+        double f = 0, lo = 0, hi = 0, skew = 0, aspect = 0;
+        eg2d_get_quality(g, EG2D_QUALITY_FOLDED_CELLS, &f);
+        eg2d_get_quality(g, EG2D_QUALITY_MIN_AREA, &lo);
+        eg2d_get_quality(g, EG2D_QUALITY_MAX_AREA, &hi);
+        eg2d_get_quality(g, EG2D_QUALITY_SKEWNESS, &skew);
+        eg2d_get_quality(g, EG2D_QUALITY_ASPECT_RATIO, &aspect);
+        std::printf("  block %s: %.0f folded cells, cell area %.4g to %.4g, skewness max %.2f deg, aspect ratio max %.3g\n",
+                    c.blocks[k].name.c_str(), f, lo, hi, skew, aspect);
+    }
+    eg2d_get_parameter(grids.front().get(), EG2D_PARAM_FOLD_CHECK, &fold_check);
+    if (folded > 0 && fold_check != 0)
+        throw Failure(EXIT_FOLDED, c.file + ": the set has " + fmt(folded) + " folded cells (no files written)");
+
+    Progress signals(false, true);  // SIGINT and SIGTERM stop the set, which removes its stage
+    if (c.svg_quality >= 0)
+        for (auto &g : grids) check(g.get(), eg2d_set_parameter(g.get(), EG2D_PARAM_SVG_QUALITY, c.svg_quality), c.svg_quality_at);
+    OutputSet out(o.out_dir);
+    for (const SetFile &f : files) {
+        if (f.block < 0 && (f.format == EG2D_FORMAT_SVG || f.format < 0)) {
+            try {
+                out.add_text(f.name, set_picture(c, grids, f.format < 0));
+            } catch (const Failure &e) {
+                throw Failure(e.exit_code(), f.where.str() + ": " + e.what());
+            }
+        } else if (f.block < 0)
+            out.add(f.name, f.directory, [set, &f](const std::string &path, bool) {
+                check_set(set, eg2d_blocks_write(set, path.c_str(), f.format), f.where);
+            });
+        else {
+            eg2d_grid *g = grids[static_cast<std::size_t>(f.block)].get();
+            out.add(f.name, f.directory,
+                    [g, &f](const std::string &path, bool) { check(g, eg2d_write(g, path.c_str(), f.format), f.where); });
+        }
+    }
+    for (const std::string &path : out.commit()) std::printf("wrote %s\n", path.c_str());
+    return EXIT_OK;
+}
+
+}  // namespace
+
 int run_case(const Case &c, const RunOptions &o) {
+    if (!c.blocks.empty()) return run_block_set(c, o);
     eg2d_grid *raw = nullptr;
     check(nullptr, eg2d_create(c.ni, c.nj, &raw), c.size_at);
     GridPtr grid(raw);
