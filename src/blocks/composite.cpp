@@ -167,16 +167,11 @@ void Composite::relax_vertices(System system) {
                 const Level L = blk.level();
                 const int ci = static_cast<int>(n.k % static_cast<std::size_t>(blk.ni + 2));
                 const int cj = static_cast<int>(n.k / static_cast<std::size_t>(blk.ni + 2));
-                for (int j = std::max(1, cj - kLocalRadius); j <= std::min(blk.nj, cj + kLocalRadius); ++j)
-                    for (int i = std::max(1, ci - kLocalRadius); i <= std::min(blk.ni, ci + kLocalRadius); ++i) {
-                        const Stencil s = blk.conn.stencil(i, j);
-                        if (blk.role[static_cast<std::size_t>(s.c)] != kUnknown) continue;
-                        const NodeEquation eq = node_equation(system, L, s);
-                        blk.x[static_cast<std::size_t>(s.c)] += eq.rx / eq.diag;
-                        blk.y[static_cast<std::size_t>(s.c)] += eq.ry / eq.diag;
-                    }
+                blk.each_unknown([&](const Stencil &st) { blk.relax(system, L, st, 1.0); }, std::max(1, ci - kLocalRadius),
+                                 std::min(blk.ni, ci + kLocalRadius), std::max(1, cj - kLocalRadius),
+                                 std::min(blk.nj, cj + kLocalRadius));
+                sync_from(static_cast<std::size_t>(n.block));  // the other blocks see the change
             }
-            sync();
             if (held) continue;
             double rx, ry;
             vertex_equation(v, rx, ry);
@@ -315,14 +310,7 @@ void Composite::sweep(System system, double omega) {
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
         Block &blk = blocks_[b];
         const Level L = blk.level();
-        for (int j = 1; j <= blk.nj; ++j)
-            for (int i = 1; i <= blk.ni; ++i) {
-                const Stencil s = blk.conn.stencil(i, j);
-                if (blk.role[static_cast<std::size_t>(s.c)] != kUnknown) continue;
-                const NodeEquation eq = node_equation(system, L, s);
-                blk.x[static_cast<std::size_t>(s.c)] += omega * eq.rx / eq.diag;
-                blk.y[static_cast<std::size_t>(s.c)] += omega * eq.ry / eq.diag;
-            }
+        blk.each_unknown([&](const Stencil &st) { blk.relax(system, L, st, omega); });
         sync_from(b);  // the blocks after this one see its new values at once (Gauss-Seidel across the set)
     }
     relax_vertices(system);
@@ -370,18 +358,13 @@ void Composite::smooth(System system) {
 void Composite::compute_residual(System system) {
     for (Block &blk : blocks_) {
         const Level L = blk.level();
-        for (int j = 1; j <= blk.nj; ++j)
-            for (int i = 1; i <= blk.ni; ++i) {
-                const Stencil s = blk.conn.stencil(i, j);
-                const std::size_t k = static_cast<std::size_t>(s.c);
-                if (blk.role[k] != kUnknown) {
-                    blk.rx[k] = blk.ry[k] = 0.0;
-                    continue;
-                }
-                const NodeEquation eq = node_equation(system, L, s);
-                blk.rx[k] = eq.rx;
-                blk.ry[k] = eq.ry;
-            }
+        std::fill(blk.rx.begin(), blk.rx.end(), 0.0);
+        std::fill(blk.ry.begin(), blk.ry.end(), 0.0);
+        blk.each_unknown([&](const Stencil &st) {
+            const NodeEquation eq = node_equation(system, L, st);
+            blk.rx[static_cast<std::size_t>(st.c)] = eq.rx;
+            blk.ry[static_cast<std::size_t>(st.c)] = eq.ry;
+        });
     }
     sync(&Block::rx, &Block::ry);
 }
@@ -477,13 +460,10 @@ double Composite::residual(System system, double extent) const {
     double worst = 0.0;
     for (const Block &blk : blocks_) {
         const Level L = blk.level();
-        for (int j = 1; j <= blk.nj; ++j)
-            for (int i = 1; i <= blk.ni; ++i) {
-                const Stencil s = blk.conn.stencil(i, j);
-                if (blk.role[static_cast<std::size_t>(s.c)] != kUnknown) continue;
-                const NodeEquation eq = node_equation(system, L, s);
-                worst = std::max(worst, std::max(std::fabs(eq.rx), std::fabs(eq.ry)) / eq.diag);
-            }
+        blk.each_unknown([&](const Stencil &st) {
+            const NodeEquation eq = node_equation(system, L, st);
+            worst = std::max(worst, std::max(std::fabs(eq.rx), std::fabs(eq.ry)) / eq.diag);
+        });
     }
     worst = std::max(worst, vertex_residual());
     return extent > 0.0 ? worst / extent : worst;

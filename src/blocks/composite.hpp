@@ -122,6 +122,22 @@ private:
             return static_cast<std::size_t>(i + 1) + static_cast<std::size_t>(ni + 2) * static_cast<std::size_t>(j + 1);
         }
         Level level() const;
+        // f(stencil) at every node this block solves within columns i0..i1
+        // and rows j0..j1 of the extended frame (default: all of them).
+        template <class F>
+        void each_unknown(F &&f, int i0 = 1, int i1 = -1, int j0 = 1, int j1 = -1) const {
+            for (int j = j0; j <= (j1 < 0 ? nj : j1); ++j)
+                for (int i = i0; i <= (i1 < 0 ? ni : i1); ++i) {
+                    const Stencil s = conn.stencil(i, j);
+                    if (role[static_cast<std::size_t>(s.c)] == kUnknown) f(s);
+                }
+        }
+        // One point Gauss-Seidel/SOR step at the node of s.
+        void relax(System system, const Level &L, const Stencil &s, double omega) {
+            const NodeEquation eq = node_equation(system, L, s);
+            x[static_cast<std::size_t>(s.c)] += omega * eq.rx / eq.diag;
+            y[static_cast<std::size_t>(s.c)] += omega * eq.ry / eq.diag;
+        }
     };
     // Node `dst` of block `to` holds node `src` of block `from`.
     struct Link {
