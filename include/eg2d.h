@@ -1155,14 +1155,20 @@ EG2D_API int eg2d_set_airfoil(eg2d_grid *grid, const eg2d_curve *section, int to
  * block's results and files are the usual calls on its grid. A grid
  * destroyed while in a set leaves the set refusing to run (EG2D_ERR_STATE).
  * In this version: single-block grids, the Laplace or Winslow system,
- * each block's control terms but the wall control (sources, source
- * arrays, parameter grid, weights, EG2D_ORTHO_MIDDLECOFF_THOMAS: each on
- * its own block; a joined node takes the terms its block gives there, or
- * where the block gives none (its boundary) those one line in), block 0's
- * solver (EG2D_SOLVER_MULTIGRID over the whole set, PSOR, LSOR or NESTED)
- * and settings (tolerance, iteration limit, stall window, relaxation,
- * multigrid cycle). A block with a wall control, interior lines or the
- * variational system, and any other solver, is refused
+ * each block's control terms (sources, source arrays, parameter grid,
+ * weights, EG2D_ORTHO_MIDDLECOFF_THOMAS: each on its own block; a joined
+ * node takes the terms its block gives there, or where the block gives
+ * none (its boundary) those one line in), block 0's solver
+ * (EG2D_SOLVER_MULTIGRID over the whole set, PSOR, LSOR or NESTED) and
+ * settings (tolerance, iteration limit, stall window, relaxation,
+ * multigrid cycle). Walls: a block side given a height by
+ * eg2d_set_wall_spacing (over its EG2D_PATCH_WALL stretches; Winslow)
+ * grades every grid line of the set that leaves it, through the joins, to
+ * that first cell, turned to the wall's normal; the lines keep the
+ * spacing the blocks' sides give them elsewhere, so the sides that meet a
+ * wall should be spaced for it (the run's events say how much the layer
+ * grows). The blocks then start from TFI. A block with interior lines or
+ * the variational system, and any other solver, is refused
  * (EG2D_ERR_UNSUPPORTED). A set and its grids belong to one thread at a
  * time.
  *===================================================================*/

@@ -28,7 +28,7 @@ Composite::Composite(const std::vector<BlockShape> &shapes, const std::vector<Jo
     : shapes_(shapes), joins_(joins) {
     blocks_.reserve(shapes.size());
     for (const BlockShape &sh : shapes) {
-        Block blk{sh.ni, sh.nj, Connectivity(sh.ni + 2, sh.nj + 2, Topology::Single), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+        Block blk{sh.ni, sh.nj, Connectivity(sh.ni + 2, sh.nj + 2, Topology::Single), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
         const std::size_t n = static_cast<std::size_t>(sh.ni + 2) * static_cast<std::size_t>(sh.nj + 2);
         for (auto *v : {&blk.x, &blk.y, &blk.rx, &blk.ry}) v->assign(n, 0.0);
         blk.role.assign(n, kHeld);
@@ -217,6 +217,7 @@ Composite Composite::of(const BlockSet &set) {
                 for (int i = 0; i < g.ni(); ++i) e[blk.at(i, j)] = f[node_index(g.ni(), i, j)];
         }
     }
+    for (Block &blk : c.blocks_) blk.given = blk.controls;
     // A joined node a block solves but computed no control at (its
     // boundary, to the control): the block's terms one line in.
     for (const Join &j : set.joins()) {
@@ -235,6 +236,95 @@ Composite Composite::of(const BlockSet &set) {
     }
     c.sync();
     return c;
+}
+
+bool Composite::moves(int b, int i, int j, bool vertices) const {
+    const Block &blk = blocks_[static_cast<std::size_t>(b)];
+    const std::size_t k = blk.at(i, j);
+    if (blk.role[k] == kUnknown || blk.role[k] == kCopy) return true;
+    if (vertices)
+        for (const Vertex &v : vertices_)
+            for (const Node &n : v.copies)
+                if (n.block == b && n.k == k) return true;
+    return false;
+}
+
+void Composite::hold_spacing(System system, bool exact) {
+    for (Block &blk : blocks_) {
+        ControlFields f = blk.given;
+        std::vector<double> &phi = f.at(Term::AXi, blk.x.size()), &psi = f.at(Term::CEta, blk.x.size());
+        Level L = blk.level();
+        L.controls = &f;
+        blk.each_unknown([&](const Stencil &s) {
+            const std::size_t c = static_cast<std::size_t>(s.c);
+            if (!exact) {
+                auto d = [&](std::ptrdiff_t a, std::ptrdiff_t b) {
+                    return std::hypot(blk.x[static_cast<std::size_t>(b)] - blk.x[static_cast<std::size_t>(a)],
+                                      blk.y[static_cast<std::size_t>(b)] - blk.y[static_cast<std::size_t>(a)]);
+                };
+                const double back = d(s.w, s.c), ahead = d(s.c, s.e), below = d(s.s, s.c), above = d(s.c, s.n);
+                phi[c] += -2.0 * (ahead - back) / (ahead + back);
+                psi[c] += -2.0 * (above - below) / (above + below);
+                return;
+            }
+            const double phi0 = phi[c], psi0 = psi[c];
+            const NodeEquation e0 = node_equation(system, L, s);
+            phi[c] = phi0 + 1.0;
+            const NodeEquation e1 = node_equation(system, L, s);
+            phi[c] = phi0;
+            psi[c] = psi0 + 1.0;
+            const NodeEquation e2 = node_equation(system, L, s);
+            // [e1 - e0, e2 - e0] (dphi, dpsi) = -e0, by Cramer's rule
+            // (its determinant a multiple of the Jacobian: nonzero unfolded).
+            const double ax = e1.rx - e0.rx, ay = e1.ry - e0.ry, bx = e2.rx - e0.rx, by = e2.ry - e0.ry;
+            const double det = ax * by - ay * bx;
+            if (!(std::fabs(det) > 0.0)) {
+                psi[c] = psi0;
+                return;
+            }
+            phi[c] = phi0 + (-e0.rx * by + e0.ry * bx) / det;
+            psi[c] = psi0 + (-ax * e0.ry + ay * e0.rx) / det;
+        });
+        blk.controls = std::move(f);
+    }
+}
+
+long Composite::folded_cells() const {
+    long folded = 0;
+    for (const Block &blk : blocks_) {
+        long positive = 0, other = 0;
+        for (int j = 0; j + 1 < blk.nj; ++j)
+            for (int i = 0; i + 1 < blk.ni; ++i) {
+                const std::size_t a = blk.at(i, j), b = blk.at(i + 1, j), c = blk.at(i + 1, j + 1), d = blk.at(i, j + 1);
+                const double area = (blk.x[c] - blk.x[a]) * (blk.y[d] - blk.y[b]) - (blk.y[c] - blk.y[a]) * (blk.x[d] - blk.x[b]);
+                (area > 0.0 ? positive : other) += 1;
+            }
+        folded += std::min(positive, other);
+    }
+    return folded;
+}
+
+double Composite::stretching() const {
+    double worst = 0.0;
+    for (const Block &blk : blocks_)
+        for (Term t : {Term::AXi, Term::CEta})
+            if (const double *v = blk.controls.data(t))
+                blk.each_unknown([&](const Stencil &s) { worst = std::max(worst, std::fabs(v[s.c])); });
+    return worst;
+}
+
+long Composite::clip_stretching(double limit) {
+    long clipped = 0;
+    for (Block &blk : blocks_)
+        for (Term t : {Term::AXi, Term::CEta}) {
+            std::vector<double> &v = blk.controls.term[static_cast<int>(t)];
+            for (double &c : v)
+                if (std::fabs(c) > limit) {
+                    c = std::copysign(limit, c);
+                    ++clipped;
+                }
+        }
+    return clipped;
 }
 
 std::string Composite::why_not_coarsenable() const {

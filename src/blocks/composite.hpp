@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "base/block_tridiagonal.hpp"  // Vec2
 #include "base/connectivity.hpp"
 #include "blocks/block_set.hpp"
 #include "operator/operator.hpp"
@@ -102,6 +103,38 @@ public:
     int longest() const;
     // The line SOR model optimum of the block whose factors are largest.
     LineOmega line_omega() const;
+    // Node by node, for what re-spaces the set's lines (set_wall_layer.hpp).
+    int size() const { return static_cast<int>(blocks_.size()); }
+    BlockShape shape(int b) const { return shapes_[static_cast<std::size_t>(b)]; }
+    Vec2 point(int b, int i, int j) const {
+        const Block &blk = blocks_[static_cast<std::size_t>(b)];
+        return {blk.x[blk.at(i, j)], blk.y[blk.at(i, j)]};
+    }
+    // Node (i, j) of block b alone: the caller puts every block's copy of
+    // the node, then syncs.
+    void put(int b, int i, int j, Vec2 p) {
+        Block &blk = blocks_[static_cast<std::size_t>(b)];
+        blk.x[blk.at(i, j)] = p.x;
+        blk.y[blk.at(i, j)] = p.y;
+    }
+    // Whether the solve moves node (i, j) of block b: one a block solves, a
+    // copy of one, or (with `vertices`) a free vertex.
+    bool moves(int b, int i, int j, bool vertices) const;
+    // Each block's controls: its static terms plus, at every node it
+    // solves, a Phi and Psi (Term::AXi, CEta) that hold the grid's spacing:
+    // the one-dimensional ones of the lines through the node (Thomas &
+    // Middlecoff 1980; a joined node's lines run on into the next block),
+    // or, `exact`, the ones that make the grid as it is an exact solution
+    // (the node's equation is affine in them: solved from three of its
+    // evaluations). Winslow's system; before the solver's levels are built.
+    void hold_spacing(System system, bool exact);
+    // Cells whose signed area (shoelace) is zero or of the other sign than
+    // most of its block's.
+    long folded_cells() const;
+    // The largest |Phi|, |Psi| (Term::AXi, CEta) at any node a block solves.
+    double stretching() const;
+    // Those past `limit` set to it, signs kept; how many.
+    long clip_stretching(double limit);
     // For a guarded sweep: keep the coordinates, put them back, and the
     // largest coordinate change since save() (inf if any is not finite).
     void save();
@@ -116,6 +149,7 @@ private:
         std::vector<double> x, y, fx, fy, rx, ry, x0, y0;  // fx, fy, x0, y0: coarse levels only
         std::vector<char> role;
         ControlFields controls;  // (ni+2) x (nj+2); empty: none
+        ControlFields given;     // the static terms of the block's own controls (of())
         IluWork ilu;
         LineWork lines;
         std::size_t at(int i, int j) const {  // block node (i, j), -1 <= i <= ni

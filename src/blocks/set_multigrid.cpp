@@ -1,5 +1,8 @@
 #include "blocks/set_multigrid.hpp"
 
+#include "base/error.hpp"
+#include "solvers/multigrid_hierarchy.hpp"
+
 namespace eg2d {
 
 namespace {
@@ -8,19 +11,33 @@ constexpr double kCoarseReduction = 1e-3;
 constexpr int kCoarseSweeps = 50;
 // A coarsest level with more nodes than this along a block's side is a
 // level the set could not halve (an odd cell count), not its natural bottom.
-constexpr int kLargeCoarsest = 17;
+constexpr int kLargeSetCoarsest = 17;
 }  // namespace
 
 SetMultigrid::SetMultigrid(const Composite &fine) {
     const Composite *c = &fine;
     while (c->coarsenable()) {
-        coarse_.push_back(c->coarsened());
+        Composite next = c->coarsened();
+        // Phi and Psi double with each halving (the wall layer's): as the
+        // single block's hierarchy (multigrid_hierarchy.hpp), a level past
+        // kMaxCoarseStretching is not built unless the one above is large;
+        // then it is, its controls clipped.
+        const double stretching = next.stretching();
+        if (stretching > kMaxCoarseStretching) {
+            if (c->longest() <= kLargeSetCoarsest) {
+                stopped_ = format("its controls (Phi, Psi up to %.3g there) would pass %g", stretching,
+                                  kMaxCoarseStretching);
+                return;
+            }
+            clipped_ += next.clip_stretching(kMaxCoarseStretching);
+        }
+        coarse_.push_back(std::move(next));
         c = &coarse_.back();
     }
     // Said when the set did not halve at all, or its coarsest level is still
     // large: a set halved down to a few nodes a side has stopped where any
     // multigrid stops.
-    if (coarse_.empty() || c->longest() > kLargeCoarsest) stopped_ = c->why_not_coarsenable();
+    if (coarse_.empty() || c->longest() > kLargeSetCoarsest) stopped_ = c->why_not_coarsenable();
 }
 
 void SetMultigrid::cycle(System system, Composite &fine, int index, int pre, int post) {

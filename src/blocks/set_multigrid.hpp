@@ -22,6 +22,8 @@ public:
     // Why there is no coarser level below the coarsest ("" when it is too
     // small to halve again is not the reason: Composite::why_not_coarsenable).
     const std::string &stopped() const { return stopped_; }
+    // Coarse control values clipped to kMaxCoarseStretching (0: none).
+    long clipped() const { return clipped_; }
     // One cycle: index 1 V, 2 W; pre and post smoothing sweeps per level.
     void cycle(System system, Composite &fine, int index, int pre, int post);
     // Full multigrid from the start the fine level holds: every level
@@ -49,6 +51,7 @@ private:
     void cycle(System system, Composite &fine, std::size_t level, int index, int pre, int post);
     std::vector<Composite> coarse_;
     std::string stopped_;
+    long clipped_ = 0;
 };
 
 }  // namespace eg2d

@@ -3,11 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "base/error.hpp"
 #include "blocks/composite.hpp"
 #include "blocks/set_multigrid.hpp"
+#include "blocks/set_wall_layer.hpp"
+#include "grid/graded_layer.hpp"
+#include "solvers/multigrid_hierarchy.hpp"
 #include "eg2d.h"
 #include "generator/generator.hpp"
 #include "generator/stall_watch.hpp"
@@ -87,99 +91,191 @@ constexpr long kCoarseSweeps = 5000;
 
 }  // namespace
 
+namespace {
+
+// Iterates a composite to the tolerance with block 0's solver (one pass of
+// the run; the wall layer's set is solved twice: set_wall_layer.hpp).
+class SetPass {
+public:
+    SetPass(const BlockSet &set, const std::function<bool(long, double)> &monitor, SetRun &run, RunReport &report)
+        : set_(set), s_(set.block(0)->settings), solver_(set.block(0)->solver_id()), system_(set.block(0)->system()),
+          monitor_(monitor), run_(run), report_(report), extent_(set.extent()) {
+        window_ = static_cast<long>(s_.stall_iterations);
+        if (window_ == 0) {  // the single-block solvers' windows (Solver::stall_window)
+            int longest = 0;
+            for (int b = 0; b < set.size(); ++b)
+                longest = std::max({longest, set.block(b)->grid().ni(), set.block(b)->grid().nj()});
+            window_ = multigrid() ? 200L
+                                  : std::max(500L, 2L * static_cast<long>(std::sqrt(static_cast<double>(run.unknowns)) + longest));
+        }
+    }
+    bool multigrid() const { return solver_ == EG2D_SOLVER_MULTIGRID; }
+
+    // The levels of this composite (built from its controls as they are now).
+    void prepare(const Composite &c) {
+        mg_.clear();
+        if (multigrid() || solver_ == EG2D_SOLVER_NESTED) mg_.emplace_back(c);
+        sor_ = std::make_unique<SetSor>(s_, c, solver_ == EG2D_SOLVER_LSOR);
+    }
+    int levels() const { return mg_.empty() ? 1 : mg_[0].levels(); }
+    const std::string &stopped() const {
+        static const std::string none;
+        return mg_.empty() ? none : mg_[0].stopped();
+    }
+    double omega() const { return multigrid() ? 1.0 : sor_->factor(); }
+    long clipped() const { return mg_.empty() ? 0 : mg_[0].clipped(); }
+
+    void converge(Composite &c) {
+        const bool nested = solver_ == EG2D_SOLVER_NESTED;
+        const long limit = static_cast<long>(s_.max_iterations);
+        StallWatch watch(window_);
+        const long first = run_.iterations;
+        run_.residual = c.residual(system_, extent_);
+        double best = run_.residual;
+        while (run_.residual > s_.tolerance) {
+            if (run_.iterations >= limit) {
+                write_back(set_, c, run_.iterations, report_);
+                fail(Failure::NotConverged, format("the set reached the iteration limit (%ld) at residual %.3g "
+                                                   "(tolerance %.3g)", limit, run_.residual, s_.tolerance));
+            }
+            if (multigrid() && run_.iterations == first && s_.mg_fmg != 0.0)
+                mg_[0].fmg(system_, c, static_cast<int>(s_.mg_cycle), static_cast<int>(s_.mg_pre_smooth),
+                           static_cast<int>(s_.mg_post_smooth));
+            else if (multigrid())
+                mg_[0].cycle(system_, c, static_cast<int>(s_.mg_cycle), static_cast<int>(s_.mg_pre_smooth),
+                             static_cast<int>(s_.mg_post_smooth));
+            else {
+                if (nested && run_.iterations == first)
+                    mg_[0].coarse_to_fine(c, [&](Composite &level) {
+                        SetSor level_sor(s_, level, false);
+                        StallWatch level_watch(window_);
+                        const double goal = std::max(s_.tolerance, kCoarseTolerance);
+                        double r = level.residual(system_, extent_);
+                        for (long k = 0; k < kCoarseSweeps && r > goal && !level_watch.stalled(k, r, 0.0); ++k) {
+                            level_sor.iterate(system_, level);
+                            r = level.residual(system_, extent_);
+                            if (!std::isfinite(r)) break;
+                        }
+                    });
+                sor_->iterate(system_, c);
+            }
+            ++run_.iterations;
+            run_.residual = c.residual(system_, extent_);
+            if (!std::isfinite(run_.residual) || !c.finite() ||
+                (run_.residual > s_.divergence_factor * best && run_.residual > 1e-2))  // the generator's floor
+                fail(Failure::Diverged, format("the set diverged at iteration %ld (residual %.3g, best %.3g; %s): the "
+                                               "blocks are unchanged", run_.iterations, run_.residual, best,
+                                               multigrid() ? "multigrid" : format("SOR factor %.4g", sor_->factor()).c_str()));
+            best = std::min(best, run_.residual);
+            if (watch.stalled(run_.iterations - first, run_.residual, 0.0)) {
+                write_back(set_, c, run_.iterations, report_);
+                fail(Failure::NotConverged, format("the set made no progress in %ld iterations (residual %.3g, best "
+                                                   "%.3g, tolerance %.3g)", watch.window(), run_.residual,
+                                                   watch.best_residual(), s_.tolerance));
+            }
+            if (monitor_ && monitor_(run_.iterations, run_.residual)) {
+                write_back(set_, c, run_.iterations, report_);
+                fail(Failure::Interrupted, format("the monitor stopped the set's run at iteration %ld", run_.iterations));
+            }
+        }
+    }
+
+private:
+    const BlockSet &set_;
+    const Settings &s_;
+    int solver_;
+    System system_;
+    const std::function<bool(long, double)> &monitor_;
+    SetRun &run_;
+    RunReport &report_;
+    double extent_;
+    long window_ = 0;
+    std::vector<SetMultigrid> mg_;  // the levels: multigrid's and the nested iteration's
+    std::unique_ptr<SetSor> sor_;
+};
+
+}  // namespace
+
 void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, SetRun &run) {
     set.check();
-    const Settings &s = set.block(0)->settings;
     const int solver = set.block(0)->solver_id();
     if (solver != EG2D_SOLVER_MULTIGRID && solver != EG2D_SOLVER_PSOR && solver != EG2D_SOLVER_LSOR &&
         solver != EG2D_SOLVER_NESTED)
         fail(Failure::Unsupported, format("block 0's solver is \"%s\": a set of blocks is solved by multigrid, point SOR, "
                                           "line SOR or the nested iteration (EG2D_SOLVER_MULTIGRID, _PSOR, _LSOR, "
                                           "_NESTED) in this version", set.block(0)->solver_name()));
+    // A block's own wall layer (its start re-spaced and its sides moved on
+    // their own) is not the set's: with walls, the blocks start from TFI.
+    bool walls = false;
     for (int b = 0; b < set.size(); ++b)
-        if (!set.block(b)->grid().initialized()) set.block(b)->initialize(EG2D_INIT_TFI);
+        if (const Control *w = set.block(b)->controls().find(ControlKind::Orthogonality))
+            for (double h : w->wall_heights()) walls = walls || h > 0.0;
+    for (int b = 0; b < set.size(); ++b) {
+        Generator &g = *set.block(b);
+        const WallLayerShape &own = g.layer();
+        if (!g.grid().initialized() || (walls && (own.graded || own.hybrid || own.rows > 0 || own.moved_sides)))
+            g.initialize(EG2D_INIT_TFI, !walls);
+    }
     const System system = set.block(0)->system();
     Composite c = Composite::of(set);
+    const SetWallLayer layer(set, c);
     run = SetRun{};
     run.unknowns = c.unknowns();
-    const bool multigrid = solver == EG2D_SOLVER_MULTIGRID, nested = solver == EG2D_SOLVER_NESTED;
-    SetSor sor(s, c, solver == EG2D_SOLVER_LSOR);
-    std::vector<SetMultigrid> mg;  // the levels: multigrid's and the nested iteration's
-    if (multigrid || nested) mg.emplace_back(c);
-    run.omega = multigrid ? 1.0 : sor.factor();
     // What the set's run is, on every block's eg2d_get_run_info and _event.
     RunReport report;
     report.solver = solver;
-    report.levels = report.levels_built = mg.empty() ? 1 : mg[0].levels();
     report.iteration = 1;
+    SetPass pass(set, monitor, run, report);
+    pass.prepare(c);
+    run.omega = pass.omega();
+    report.levels = report.levels_built = pass.levels();
     report.note(format("set of %d blocks solved as one grid: %ld unknowns, %d inner vertex(es) at their neighbours' "
                        "mean, %d vertex(es) on the boundary held; %s on %d level(s)", set.size(), run.unknowns,
                        c.free_vertices(), c.held_vertices(), set.block(0)->solver_name(), report.levels));
-    if (!mg.empty() && !mg[0].stopped().empty())
+    if (!pass.stopped().empty())
         report.note(format("%s: no coarser level below %d: %s%s", set.block(0)->solver_name(), report.levels,
-                           mg[0].stopped().c_str(),
-                           report.levels == 1 ? "; the smoother alone converges slowly" : ""));
-    const double extent = set.extent();
-    const long limit = static_cast<long>(s.max_iterations);
-    long window = static_cast<long>(s.stall_iterations);
-    if (window == 0) {  // the single-block solvers' windows (Solver::stall_window)
-        int longest = 0;
-        for (int b = 0; b < set.size(); ++b)
-            longest = std::max({longest, set.block(b)->grid().ni(), set.block(b)->grid().nj()});
-        window = multigrid ? 200L
-                           : std::max(500L, 2L * static_cast<long>(std::sqrt(static_cast<double>(run.unknowns)) + longest));
+                           pass.stopped().c_str(), report.levels == 1 ? "; the smoother alone converges slowly" : ""));
+    if (!layer.empty()) {
+        // A folded start (TFI over a bump) is solved as it is first: its
+        // lines cannot be re-spaced (the single block's untangling,
+        // Generator::shape_start).
+        const long folded = c.folded_cells();
+        if (folded > 0) {
+            pass.converge(c);
+            report.note(format("wall layer (graded, set of blocks): the blocks' start has %ld folded cell(s); the "
+                               "layer is made on the set's grid without its controls (%ld iteration(s))", folded,
+                               run.iterations));
+        }
+        const std::string sides = layer.kept_sides(c);
+        if (!sides.empty()) report.note(sides);
+        layer.respace(c, true);
+        c.hold_spacing(system, false);
+        pass.prepare(c);
     }
-    StallWatch watch(window);
-    run.residual = c.residual(system, extent);
-    double best = run.residual;
-    while (run.residual > s.tolerance) {
-        if (run.iterations >= limit) {
-            write_back(set, c, run.iterations, report);
-            fail(Failure::NotConverged, format("the set reached the iteration limit (%ld) at residual %.3g (tolerance %.3g)",
-                                               limit, run.residual, s.tolerance));
-        }
-        if (multigrid && run.iterations == 0 && s.mg_fmg != 0.0)
-            mg[0].fmg(system, c, static_cast<int>(s.mg_cycle), static_cast<int>(s.mg_pre_smooth),
-                      static_cast<int>(s.mg_post_smooth));
-        else if (multigrid)
-            mg[0].cycle(system, c, static_cast<int>(s.mg_cycle), static_cast<int>(s.mg_pre_smooth),
-                        static_cast<int>(s.mg_post_smooth));
-        else {
-            if (nested && run.iterations == 0)
-                mg[0].coarse_to_fine(c, [&](Composite &level) {
-                    SetSor level_sor(s, level, false);
-                    StallWatch level_watch(window);
-                    const double goal = std::max(s.tolerance, kCoarseTolerance);
-                    double r = level.residual(system, extent);
-                    for (long k = 0; k < kCoarseSweeps && r > goal && !level_watch.stalled(k, r, 0.0); ++k) {
-                        level_sor.iterate(system, level);
-                        r = level.residual(system, extent);
-                        if (!std::isfinite(r)) break;
-                    }
-                });
-            sor.iterate(system, c);
-        }
-        ++run.iterations;
-        run.residual = c.residual(system, extent);
-        if (!std::isfinite(run.residual) || !c.finite() ||
-            (run.residual > s.divergence_factor * best && run.residual > 1e-2))  // the generator's floor
-            fail(Failure::Diverged, format("the set diverged at iteration %ld (residual %.3g, best %.3g; %s): the "
-                                           "blocks are unchanged", run.iterations, run.residual, best,
-                                           multigrid ? "multigrid" : format("SOR factor %.4g", sor.factor()).c_str()));
-        best = std::min(best, run.residual);
-        if (watch.stalled(run.iterations, run.residual, 0.0)) {
-            write_back(set, c, run.iterations, report);
-            fail(Failure::NotConverged, format("the set made no progress in %ld iterations (residual %.3g, best %.3g, "
-                                               "tolerance %.3g)", watch.window(), run.residual,
-                                               watch.best_residual(), s.tolerance));
-        }
-        if (monitor && monitor(run.iterations, run.residual)) {
-            write_back(set, c, run.iterations, report);
-            fail(Failure::Interrupted, format("the monitor stopped the set's run at iteration %ld", run.iterations));
-        }
+    pass.converge(c);
+    if (!layer.empty()) {
+        // The second pass: the first cells back to their heights where the
+        // solve made them drift, the grid then held exactly.
+        layer.respace(c, false);
+        layer.turn_to_normals(c);
+        c.hold_spacing(system, true);
+        pass.prepare(c);
+        if (pass.clipped() > 0)
+            report.note(format("%s: %ld control value(s) of its coarse levels clipped to %g (the wall layer's "
+                               "stretching doubles with each level)", set.block(0)->solver_name(), pass.clipped(),
+                               kMaxCoarseStretching));
+        pass.converge(c);
+        run.layer = layer.measure(c);
+        report.note(format("wall layer (graded, set of blocks): %d line(s) graded from the walls across the blocks, "
+                           "first cells within %.2g%% of their heights, growth at most %.4g within %d cells of a wall%s",
+                           run.layer.lines, 100.0 * run.layer.first_off, run.layer.growth, kGradedRows,
+                           run.layer.growth > kGradedGrowth
+                               ? format(" (more than %g: give the blocks more nodes across the walls, or larger "
+                                        "first cells)", kGradedGrowth).c_str()
+                               : ""));
     }
     write_back(set, c, run.iterations, report);
-    run.levels = mg.empty() ? 1 : mg[0].levels();
+    run.levels = pass.levels();
     run.note = format("set of %d blocks: %ld unknowns, %s on %d level(s), %ld iteration(s), residual %.3g", set.size(),
                       run.unknowns, set.block(0)->solver_name(), run.levels, run.iterations, run.residual);
 }

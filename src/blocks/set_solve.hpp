@@ -8,6 +8,7 @@
 #include <string>
 
 #include "blocks/block_set.hpp"
+#include "blocks/set_wall_layer.hpp"
 
 namespace eg2d {
 
@@ -18,6 +19,7 @@ struct SetRun {
     double omega = 0.0;  // point SOR's factor at the start (multigrid: 1)
     int levels = 1;      // multigrid's levels over the set
     std::string note;  // how the run ended, for the API's events
+    SetLayerFigures layer;  // the graded wall layer (lines 0: none)
 };
 
 // Checks the set (BlockSet::check), starts each block not yet initialised

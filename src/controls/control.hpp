@@ -2,6 +2,7 @@
 // share to the ControlFields the operator reads. Adding one is adding a file
 // with a Control subclass and the API call that creates it.
 #pragma once
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -88,6 +89,10 @@ public:
     // the fields it set, whatever the run's solver, before shape_after_cycle
     // finishes it on the grid that cycle made (the graded layer's start not
     // kept: grid/graded_layer.hpp's reshape_graded_layer).
+    // The first-cell height asked of each side (EG2D_SIDE_* order): > 0 a
+    // wall with that height, 0 the angle alone, < 0 none (a set of blocks
+    // grades its lines across the blocks from these: blocks/set_wall_layer.hpp).
+    virtual std::array<double, 4> wall_heights() const { return {-1.0, -1.0, -1.0, -1.0}; }
     virtual bool shapes_after_cycle() const { return false; }
     virtual void shape_after_cycle(Grid &) {}
 };

@@ -179,6 +179,7 @@ public:
         layer_growth_ = shape.rows > 0 ? shape.growth : 0.0;
         return shape;
     }
+    std::array<double, 4> wall_heights() const override { return height_; }
     bool shapes_after_cycle() const override { return !graded_.families.empty() && !graded_.frozen; }
     void shape_after_cycle(Grid &g) override {
         reshape_graded_layer(g, graded_);

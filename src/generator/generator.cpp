@@ -209,7 +209,7 @@ void Generator::take_solution(const std::vector<double> &x, const std::vector<do
     fresh_start_ = false;
 }
 
-void Generator::initialize(int method) {
+void Generator::initialize(int method, bool shape) {
     const InitMethod *m = find_init_method(method);
     if (!m) fail(Failure::Argument, format("initialisation method %d: no such method", method));
     if (m->marches && !grid_.side_set(Side::JMin))
@@ -244,7 +244,11 @@ void Generator::initialize(int method) {
     for (const auto &mo : motions_) mo->restart();
     changed_start();
     fresh_start_ = true;
-    shape_start(true, true);
+    if (shape) shape_start(true, true);
+    else {
+        layer_ = WallLayerShape{};
+        shape_pending_ = boundary_changed_ = false;
+    }
     controls_.invalidate();
 }
 

@@ -86,7 +86,10 @@ public:
     // The boundary patches only name and type the boundary for the writers:
     // no effect on the generation.
     void set_patches(std::vector<Patch> patches) { grid_.patches = std::move(patches); }
-    void initialize(int method);
+    // `shape`: the controls shape the start (a wall layer's, shape_start);
+    // a set of blocks shapes its blocks' starts together instead
+    // (blocks/set_wall_layer.hpp).
+    void initialize(int method, bool shape = true);
     void set_system(System s);
     System system() const { return system_; }
     void set_solver(int id);

@@ -51,7 +51,9 @@ constexpr double kKeepFirst = 1.1;
 // degrees of non-orthogonality in cells 2e4 times longer than high.
 constexpr int kCornerBlend = 8;
 
-std::vector<double> node_heights(const Grid &g, Side s, const std::array<double, 4> &height) {
+}  // namespace
+
+std::vector<double> wall_node_heights(const Grid &g, Side s, const std::array<double, 4> &height) {
     const double h = height[static_cast<std::size_t>(s)];
     const int n = g.side_length(s);
     const bool ring = g.topology() == Topology::O;
@@ -112,6 +114,8 @@ std::vector<double> node_heights(const Grid &g, Side s, const std::array<double,
 // Between two walls: geometric from both ends at one ratio r, each cell the
 // smaller of the two series, r such that they fill the line; the log-
 // quadratic graded_cells where even r = 1 overfills it.
+namespace {
+
 std::vector<double> two_sided_cells(int cells, double first, double last, double length) {
     // In logs, so that no power overflows (the FP flags stay clear): cell k
     // is exp(min(ln first + k ln r, ln last + (cells-1-k) ln r)); a sum past
@@ -141,7 +145,9 @@ std::vector<double> two_sided_cells(int cells, double first, double last, double
     return c;
 }
 
-std::vector<double> layer_cells(int cells, double first, double last, double length) {
+}  // namespace
+
+std::vector<double> graded_line_cells(int cells, double first, double last, double length) {
     if (first > 0.0 && last > 0.0) return two_sided_cells(cells, first, last, length);
     const double h = first > 0.0 ? first : last;
     // Growing cells at whatever ratio reaches the length, so that the first
@@ -161,8 +167,7 @@ std::vector<double> layer_cells(int cells, double first, double last, double len
     return c;
 }
 
-// Largest ratio of consecutive cells within kGradedRows of each walled end.
-double end_growth(const std::vector<double> &c, bool from_start, bool from_end) {
+double graded_end_growth(const std::vector<double> &c, bool from_start, bool from_end) {
     const int n = static_cast<int>(c.size());
     double worst = 1.0;
     auto ratio = [&](int k) {
@@ -176,12 +181,14 @@ double end_growth(const std::vector<double> &c, bool from_start, bool from_end) 
     return worst;
 }
 
+namespace {
+
 // The smallest node count at which a line of this length keeps its cells
 // within kGradedGrowth at its wall ends (a growth falls as nodes are added).
 int nodes_needed(double first, double last, double length, int nodes, bool from_lo, bool from_hi) {
     auto meets = [&](int n) {
         try {
-            return end_growth(layer_cells(n - 1, first, last, length), from_lo, from_hi) <= kGradedGrowth;
+            return graded_end_growth(graded_line_cells(n - 1, first, last, length), from_lo, from_hi) <= kGradedGrowth;
         } catch (const Error &) {
             return false;
         }
@@ -224,7 +231,7 @@ bool follows(const std::vector<double> &actual, const std::vector<double> &targe
     auto close = [](double a, double t) { return a > 0.0 && std::fabs(std::log(a / t)) <= std::log(kKeepFirst); };
     if (from_start && !close(actual.front(), target.front())) return false;
     if (from_end && !close(actual.back(), target.back())) return false;
-    return end_growth(actual, from_start, from_end) <= kGradedGrowth;
+    return graded_end_growth(actual, from_start, from_end) <= kGradedGrowth;
 }
 
 // Cells times a shape factor (none: unchanged), fitted to the length
@@ -266,9 +273,9 @@ std::vector<std::vector<double>> blend_sides(std::vector<Line> &lines, bool lo, 
     auto adopts = [&](const Line &moved, const Line &kept, const std::vector<double> &r) {
         std::vector<double> f(r.size());
         for (std::size_t k = 0; k < r.size(); ++k) f[k] = std::exp(r[k]);
-        const double grows = end_growth(shaped(moved.cells, f, moved.arc.back(), lo, hi), lo, hi);
+        const double grows = graded_end_growth(shaped(moved.cells, f, moved.arc.back(), lo, hi), lo, hi);
         // (to round-off: alike sides of a square grow alike)
-        return grows <= std::max(kGradedGrowth, end_growth(actual_cells(kept.arc), lo, hi)) * (1.0 + 1e-9);
+        return grows <= std::max(kGradedGrowth, graded_end_growth(actual_cells(kept.arc), lo, hi)) * (1.0 + 1e-9);
     };
     if (!lines.front().kept && adopts(lines.front(), lines.back(), rn)) r0 = rn;
     if (!lines.back().kept && adopts(lines.back(), lines.front(), r0)) rn = r0;
@@ -305,7 +312,7 @@ void grade_family(Grid &g, bool columns, GradedLayer &out, std::string &moved, s
             const double pa = l > 0 && !lo.empty() ? lo[static_cast<std::size_t>(l - 1)] : 0.0;
             const double pb = l > 0 && !hi.empty() ? hi[static_cast<std::size_t>(l - 1)] : 0.0;
             L.cells = prev && pa == a && pb == b && prev->arc.back() == L.arc.back() ? prev->cells
-                                                                                   : layer_cells(nodes - 1, a, b, L.arc.back());
+                                                                                   : graded_line_cells(nodes - 1, a, b, L.arc.back());
         } catch (const Error &e) {
             fail(Failure::Argument, format("graded wall layer: the %s %d (length %.6g) cannot take first cells %.6g "
                                            "and %.6g in %d cells: %s", columns ? "column" : "row", l, L.arc.back(),
@@ -315,7 +322,7 @@ void grade_family(Grid &g, bool columns, GradedLayer &out, std::string &moved, s
         // more than the family's worst so far (a search per line took most of
         // the set-up of a bend 257x65).
         int &needed = columns ? out.shape.needed_nj : out.shape.needed_ni;
-        if (end_growth(L.cells, a > 0.0, b > 0.0) > kGradedGrowth)
+        if (graded_end_growth(L.cells, a > 0.0, b > 0.0) > kGradedGrowth)
             needed = std::max(needed, nodes_needed(a, b, L.arc.back(), std::max(nodes, needed), a > 0.0, b > 0.0));
         if (ring || (l != 0 && l != lines - 1)) continue;
         const Side side = across[l == 0 ? 0 : 1];
@@ -330,7 +337,7 @@ void grade_family(Grid &g, bool columns, GradedLayer &out, std::string &moved, s
     // beside it; no node count of the layer's own would mend that.
     for (int end = 0; end < 2 && !ring; ++end) {
         const Line &L = all[end == 0 ? 0 : all.size() - 1];
-        const double grows = end_growth(actual_cells(L.arc), !lo.empty(), !hi.empty());
+        const double grows = graded_end_growth(actual_cells(L.arc), !lo.empty(), !hi.empty());
         if (L.kept && grows > kGradedGrowth)
             shaped_by += format("%sthe points of %s (kept as given) grow by %.3g within %d cells of the wall, and so "
                                 "do the lines beside them: space them as the layer or give more nodes",
@@ -341,7 +348,7 @@ void grade_family(Grid &g, bool columns, GradedLayer &out, std::string &moved, s
         const Line &L = all[static_cast<std::size_t>(l)];
         const double a = lo.empty() ? 0.0 : lo[static_cast<std::size_t>(l)];
         const double b = hi.empty() ? 0.0 : hi[static_cast<std::size_t>(l)];
-        out.shape.growth = std::max(out.shape.growth, end_growth(L.kept ? actual_cells(L.arc) : L.cells, a > 0.0, b > 0.0));
+        out.shape.growth = std::max(out.shape.growth, graded_end_growth(L.kept ? actual_cells(L.arc) : L.cells, a > 0.0, b > 0.0));
         if (L.kept) continue;
         std::vector<double> want(static_cast<std::size_t>(nodes), 0.0);
         for (int k = 1; k < nodes; ++k)
@@ -456,7 +463,7 @@ GradedLayer shape_graded_layer(Grid &g, const std::array<double, 4> &height) {
     std::array<std::vector<double>, 4> &h = out.heights;
     for (int s = 0; s < 4; ++s)
         if (height[static_cast<std::size_t>(s)] > 0.0 && g.has_side(static_cast<Side>(s)))
-            h[static_cast<std::size_t>(s)] = node_heights(g, static_cast<Side>(s), height);
+            h[static_cast<std::size_t>(s)] = wall_node_heights(g, static_cast<Side>(s), height);
     const std::string corners = corner_notes(g, height);
     std::string moved, shaped_by;
     for (bool columns : {true, false})
@@ -496,7 +503,7 @@ std::vector<double> graded_target_cells(const GradedLayer &layer, const GradedFa
     const std::vector<double> &lo = layer.heights[f.columns ? 0 : 3], &hi = layer.heights[f.columns ? 2 : 1];
     const std::size_t k = static_cast<std::size_t>(l);
     const double a = lo.empty() ? 0.0 : lo[k], b = hi.empty() ? 0.0 : hi[k];
-    return shaped(layer_cells(cells, a, b, length), f.factor[k], length, !lo.empty(), !hi.empty());
+    return shaped(graded_line_cells(cells, a, b, length), f.factor[k], length, !lo.empty(), !hi.empty());
 }
 
 }  // namespace eg2d

@@ -52,6 +52,20 @@ struct GradedLayer {
     bool kept = false;    // the re-spaced start is kept (its controls inverted from it; frozen)
 };
 
+// The first-cell height at each node of side s of g (empty: no height
+// there): height[s] on its stretches of type wall (all of it when it has
+// none), blended in the log toward a corner's own spacing on the rest.
+std::vector<double> wall_node_heights(const Grid &g, Side s, const std::array<double, 4> &height);
+
+// The cells of a line of `cells` cells and length `length` off a wall at
+// its start (first > 0), its end (last > 0) or both: geometric from one
+// wall; from two, each cell the smaller of two geometric series of one
+// ratio (march_schedule.hpp's graded_cells where even ratio 1 overfills).
+std::vector<double> graded_line_cells(int cells, double first, double last, double length);
+
+// The largest ratio of consecutive cells within kGradedRows of each walled end.
+double graded_end_growth(const std::vector<double> &cells, bool from_start, bool from_end);
+
 // height[side] > 0 makes a side a wall (0 or less: not graded). The grid
 // must be initialised; its lines are re-spaced in place and the sides that
 // meet a wall may move along themselves. Single blocks and O-grids.

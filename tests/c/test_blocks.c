@@ -1,7 +1,8 @@
 /* Sets of blocks (eg2d_blocks_*): a set that covers a single block's domain
  * solves to that block's grid, whichever way its blocks are turned; the
  * set's errors name the thing; a backward-facing step in three blocks
- * (block_domains.h) solves without folds and without kinks at its joins. */
+ * (block_domains.h) solves without folds and without kinks at its joins;
+ * walls across blocks get their first cells, normal lines and no folds. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -298,8 +299,12 @@ static void test_errors(void **state) {
     expect(eg2d_blocks_check(set), EG2D_ERR_STATE, set, "block 1 solves the Laplace system, block 0 the Winslow");
     assert_int_equal(eg2d_set_system(right, EG2D_SYSTEM_WINSLOW), EG2D_OK);
     assert_int_equal(eg2d_set_wall_spacing(right, EG2D_SIDE_JMIN, 1e-3), EG2D_OK);
-    expect(eg2d_blocks_solve(set), EG2D_ERR_UNSUPPORTED, set, "block 1 has a wall control");
+    assert_int_equal(eg2d_set_system(right, EG2D_SYSTEM_LAPLACE), EG2D_OK);
+    assert_int_equal(eg2d_set_system(left, EG2D_SYSTEM_LAPLACE), EG2D_OK);
+    expect(eg2d_blocks_solve(set), EG2D_ERR_STATE, set, "block 1 has control terms but the system is Laplace");
     expect(eg2d_blocks_get_run(set, NULL, NULL, NULL), EG2D_ERR_STATE, set, "has not run");
+    assert_int_equal(eg2d_set_system(right, EG2D_SYSTEM_WINSLOW), EG2D_OK);
+    assert_int_equal(eg2d_set_system(left, EG2D_SYSTEM_WINSLOW), EG2D_OK);
     assert_int_equal(eg2d_set_orthogonality(right, EG2D_ORTHO_NONE), EG2D_OK);
     assert_int_equal(eg2d_set_solver(left, EG2D_SOLVER_AF), EG2D_OK);
     expect(eg2d_blocks_solve(set), EG2D_ERR_UNSUPPORTED, set, "block 0's solver is \"af\": a set of blocks is solved by");
@@ -339,6 +344,118 @@ static void test_backward_facing_step(void **state) {
     eg2d_destroy(up), eg2d_destroy(above), eg2d_destroy(below);
 }
 
+/* The wall layer of side `side` of g: its first cells within 0.5% of h and
+ * its lines within half a degree of the normal. */
+static void expect_wall(eg2d_grid *g, int side, double h, const char *name) {
+    double lo, hi, angle, nodes;
+    assert_int_equal(eg2d_get_wall_layer(g, side, EG2D_WALL_NODES, &nodes), EG2D_OK);
+    assert_int_equal(eg2d_get_wall_layer(g, side, EG2D_WALL_FIRST_MIN, &lo), EG2D_OK);
+    assert_int_equal(eg2d_get_wall_layer(g, side, EG2D_WALL_FIRST_MAX, &hi), EG2D_OK);
+    assert_int_equal(eg2d_get_wall_layer(g, side, EG2D_WALL_ANGLE, &angle), EG2D_OK);
+    printf("%-12s first cells %.5g..%.5g (asked %.3g), %.3f degrees off the normal, %g nodes\n", name, lo, hi, h, angle,
+           nodes);
+    assert_true(nodes > 0.0);
+    assert_true(fabs(lo / h - 1.0) < 5e-3 && fabs(hi / h - 1.0) < 5e-3);
+    assert_true(angle < 0.5);
+}
+
+struct wall {
+    int block, side;
+    double h;
+    const char *name;
+};
+static void expect_walls(eg2d_grid *const *grids, const struct wall *walls, int count) {
+    for (int k = 0; k < count; ++k) expect_wall(grids[walls[k].block], walls[k].side, walls[k].h, walls[k].name);
+}
+
+static int has_event(eg2d_grid *g, const char *words) {
+    int n = 0, it;
+    char text[1024];
+    assert_int_equal(eg2d_get_run_info(g, EG2D_RUN_EVENTS, &n), EG2D_OK);
+    for (int k = 0; k < n; ++k) {
+        assert_int_equal(eg2d_get_run_event(g, k, &it, text, (int)sizeof text), EG2D_OK);
+        if (strstr(text, words)) return 1;
+    }
+    return 0;
+}
+
+static void expect_no_folds(eg2d_grid *const *grids, int count) {
+    for (int k = 0; k < count; ++k) {
+        double folded;
+        assert_int_equal(eg2d_get_quality(grids[k], EG2D_QUALITY_FOLDED_CELLS, &folded), EG2D_OK);
+        assert_true(folded == 0.0);
+    }
+}
+
+/* The bump in two blocks, walls at its floor (1e-5) and top (1e-3): the
+ * columns run from one block's floor to its top, the join a column too;
+ * its TFI start folds over the bump. The first cells and normals as the
+ * single block's graded layer gives them, the joins without kinks, and the
+ * growth the bump's own spacing forces (its rows grow by 3 at the floor)
+ * said in the run's events. */
+static void test_walls_across_blocks(void **state) {
+    (void)state;
+    enum { BI = 129, BJ = 65 };
+    eg2d_grid *grids[2];
+    eg2d_blocks *set;
+    double at, near;
+    assert_int_equal(bump_halves(BI, BJ, (BI - 1) / 2, grids, &set), EG2D_OK);
+    for (int b = 0; b < 2; ++b) {
+        assert_int_equal(eg2d_set_system(grids[b], EG2D_SYSTEM_WINSLOW), EG2D_OK);
+        assert_int_equal(eg2d_set_wall_spacing(grids[b], EG2D_SIDE_JMIN, 1e-5), EG2D_OK);
+        assert_int_equal(eg2d_set_wall_spacing(grids[b], EG2D_SIDE_JMAX, 1e-3), EG2D_OK);
+    }
+    assert_int_equal(eg2d_blocks_solve(set), EG2D_OK);
+    expect_no_folds(grids, 2);
+    const struct wall walls[] = {{0, EG2D_SIDE_JMIN, 1e-5, "left floor"},
+                                 {1, EG2D_SIDE_JMIN, 1e-5, "right floor"},
+                                 {0, EG2D_SIDE_JMAX, 1e-3, "left top"},
+                                 {1, EG2D_SIDE_JMAX, 1e-3, "right top"}};
+    expect_walls(grids, walls, 4);
+    assert_int_equal(eg2d_blocks_get_kinks(set, &at, &near), EG2D_OK);
+    printf("bump with walls: turns at the join %.3g, nearby %.3g degrees\n", at, near);
+    assert_true(at <= near);
+    for (int b = 0; b < 2; ++b) {
+        assert_true(has_event(grids[b], "wall layer (graded, set of blocks): 127 line(s)"));
+        assert_true(has_event(grids[b], "folded cell(s); the layer is made on the set's grid"));
+        assert_true(has_event(grids[b], "(more than 1.2: give the blocks more nodes across the walls"));
+        /* the inlet's and outlet's points, 2.4e-4 off the floor */
+        assert_true(has_event(grids[b], "line(s) of the boundary leave a wall with a first cell more than 2 times off"));
+    }
+    eg2d_blocks_destroy(set);
+    eg2d_destroy(grids[0]), eg2d_destroy(grids[1]);
+}
+
+/* The step in three blocks with walls of 1e-5 at its floors, top and face
+ * (block_domains.h's walled_step_blocks): the floor's lines continue
+ * through the join at the step's height to the top, the row that continues
+ * the upstream floor leaves the step's face; by multigrid and line SOR. */
+static void test_walled_step(void **state) {
+    (void)state;
+    const int solvers[] = {EG2D_SOLVER_MULTIGRID, EG2D_SOLVER_LSOR};
+    for (int k = 0; k < 2; ++k) {
+        eg2d_grid *g[3];
+        eg2d_blocks *set;
+        double at, near;
+        assert_int_equal(walled_step_blocks(1e-5, 33, 129, 97, 49, g, &set), EG2D_OK);
+        assert_int_equal(eg2d_set_solver(g[0], solvers[k]), EG2D_OK);
+        assert_int_equal(eg2d_blocks_solve(set), EG2D_OK);
+        expect_no_folds(g, 3);
+        const struct wall walls[] = {{0, EG2D_SIDE_JMIN, 1e-5, "upstream floor"},
+                                     {0, EG2D_SIDE_JMAX, 1e-5, "upstream top"},
+                                     {1, EG2D_SIDE_JMAX, 1e-5, "top"},
+                                     {2, EG2D_SIDE_JMIN, 1e-5, "floor"},
+                                     {2, EG2D_SIDE_IMIN, 1e-5, "step's face"}};
+        expect_walls(g, walls, 5);
+        assert_int_equal(eg2d_blocks_get_kinks(set, &at, &near), EG2D_OK);
+        assert_true(at <= near + 1e-9);
+        assert_true(has_event(g[2], "wall layer (graded, set of blocks)"));
+        assert_false(has_event(g[2], "line(s) of the boundary leave a wall"));
+        eg2d_blocks_destroy(set);
+        eg2d_destroy(g[0]), eg2d_destroy(g[1]), eg2d_destroy(g[2]);
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_set_is_the_single_block),
@@ -347,6 +464,8 @@ int main(void) {
         cmocka_unit_test(test_run_events),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_backward_facing_step),
+        cmocka_unit_test(test_walls_across_blocks),
+        cmocka_unit_test(test_walled_step),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

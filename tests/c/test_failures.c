@@ -492,6 +492,8 @@ static int r_blocks_unconnected(eg2d_grid *g) {
 static int r_blocks_controls(eg2d_grid *g) {
     eg2d_blocks *set = square_pair(g, 1.0);
     eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, 8, 1, EG2D_SIDE_IMIN, 0, 8);
+    eg2d_set_system(g, EG2D_SYSTEM_LAPLACE);
+    eg2d_set_system(second, EG2D_SYSTEM_LAPLACE);
     eg2d_set_wall_spacing(second, EG2D_SIDE_JMIN, 1e-3);
     return set_done(set, eg2d_blocks_solve(set));
 }
@@ -833,10 +835,10 @@ static const bad_input rows[] = {
      0},
     {"a set whose blocks are not joined", "eg2d_blocks_solve(set)", S_SQUARE, r_blocks_unconnected, EG2D_ERR_STATE,
      "eg2d_blocks_solve: the set is not connected: no chain of joins from block 0 to block 1", 0},
-    {"a block of a set with a wall control", "eg2d_blocks_solve(set)", S_SQUARE, r_blocks_controls,
-     EG2D_ERR_UNSUPPORTED,
-     "eg2d_blocks_solve: block 1 has a wall control (eg2d_set_wall_spacing, EG2D_ORTHO_WALL): not available on a set "
-     "of blocks yet",
+    {"a set of Laplace blocks with a wall control", "eg2d_blocks_solve(set)", S_SQUARE, r_blocks_controls,
+     EG2D_ERR_STATE,
+     "eg2d_blocks_solve: block 1 has control terms but the system is Laplace: controls need EG2D_SYSTEM_WINSLOW (or "
+     "clear the controls)",
      0},
     {"a block destroyed while in a set", "eg2d_blocks_solve(set)", S_SQUARE, r_blocks_destroyed, EG2D_ERR_STATE,
      "eg2d_blocks_solve: block 1 was destroyed", 0},

@@ -13,6 +13,16 @@
  * the first failing status. */
 int step_blocks(int ni_up, int ni_down, int nj_upper, int nj_lower, eg2d_grid *grids[3], eg2d_blocks **set);
 
+/* The same step's blocks with every wall a wall of first cell h (h <= 0:
+ * none asked; the Winslow system either way): the upstream floor and top
+ * (block 0's JMIN, JMAX), the top downstream (block 1's JMAX), the floor
+ * and the step's face (block 2's JMIN, IMIN). The blocks' sides are
+ * spaced as a wall layer needs them (Vinokur 1983): x from h at the step's
+ * face downstream, and towards x = 0 upstream; y from h at every wall and at the
+ * step's height (its shear layer; 0.6/(nj_lower-1) there when h <= 0). */
+int walled_step_blocks(double h, int ni_up, int ni_down, int nj_upper, int nj_lower, eg2d_grid *grids[3],
+                       eg2d_blocks **set);
+
 /* A rectangle ni x nj over [x0, x1] x [y0, y1] with those clusterings:
  * cluster_x 1 towards x1, -1 towards x0, 0 none; cluster_y towards both ends. */
 int block_rectangle(int ni, int nj, double x0, double x1, double y0, double y1, int cluster_x, int cluster_y,

@@ -1,0 +1,345 @@
+#include "blocks/set_wall_layer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include "base/error.hpp"
+#include "base/polyline.hpp"
+#include "controls/control.hpp"
+#include "generator/generator.hpp"
+#include "grid/graded_layer.hpp"
+
+namespace eg2d {
+
+namespace {
+
+// A boundary line's first cell off a wall more than this factor from the
+// wall's height is said (the single block's corner_notes use 2 too).
+constexpr double kSidesOff = 2.0;
+
+// Where a walk along a line is: a block's node and the direction it goes.
+struct Walker {
+    int b, i, j, di, dj;
+};
+
+Side exit_side(const Walker &w) {
+    return w.di > 0 ? Side::IMax : w.di < 0 ? Side::IMin : w.dj > 0 ? Side::JMax : Side::JMin;
+}
+
+// A wall's share of a line's cells: 1 at the wall, a smoothstep down to 0
+// at 2R cells, R = kGradedRows or a quarter of the line if shorter, so that
+// the two walls of a line leave it room between them (the single block's
+// wall_shares, 1 over kGradedRows cells, left none on a bump 65 nodes
+// high: all its cells were scaled alike and its first cells 70x too tall).
+std::vector<double> fade(int cells, bool lo, bool hi) {
+    const double span = 2.0 * std::max(1, std::min(kGradedRows, cells / 4));
+    std::vector<double> v(static_cast<std::size_t>(cells), 0.0);
+    auto share = [&](int k) {
+        const double t = std::min(1.0, k / span);
+        return 1.0 - t * t * (3.0 - 2.0 * t);
+    };
+    for (int k = 0; k < cells; ++k)
+        v[static_cast<std::size_t>(k)] = std::max(lo ? share(k) : 0.0, hi ? share(cells - 1 - k) : 0.0);
+    return v;
+}
+
+}  // namespace
+
+SetWallLayer::SetWallLayer(const BlockSet &set, const Composite &c) {
+    const int blocks = c.size();
+    for (int b = 0; b < blocks; ++b) {
+        ni_.push_back(c.shape(b).ni);
+        nj_.push_back(c.shape(b).nj);
+    }
+    // The walls: each block's heights over its sides' wall patches.
+    heights_.resize(static_cast<std::size_t>(blocks));
+    for (int b = 0; b < blocks; ++b) {
+        Generator *g = set.block(b);
+        const Control *wall = g->controls().find(ControlKind::Orthogonality);
+        if (!wall) continue;
+        const std::array<double, 4> h = wall->wall_heights();
+        for (int s = 0; s < 4; ++s)
+            if (h[static_cast<std::size_t>(s)] > 0.0) {
+                heights_[static_cast<std::size_t>(b)][static_cast<std::size_t>(s)] =
+                    wall_node_heights(g->grid(), static_cast<Side>(s), h);
+                ++walls_;
+            }
+    }
+    if (walls_ == 0) return;
+    // The set's nodes: the blocks' nodes, those a join pairs made one.
+    std::vector<std::size_t> first(static_cast<std::size_t>(blocks) + 1, 0);
+    for (int b = 0; b < blocks; ++b)
+        first[static_cast<std::size_t>(b) + 1] =
+            first[static_cast<std::size_t>(b)] + static_cast<std::size_t>(ni_[static_cast<std::size_t>(b)]) *
+                                                     static_cast<std::size_t>(nj_[static_cast<std::size_t>(b)]);
+    std::vector<std::size_t> parent(first.back());
+    for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = k;
+    auto root = [&](std::size_t k) {
+        while (parent[k] != k) k = parent[k] = parent[parent[k]];
+        return k;
+    };
+    auto flat = [&](const SideRange &r, int t) {
+        const std::size_t b = static_cast<std::size_t>(r.block);
+        return first[b] + side_node(ni_[b], nj_[b], r.side, r.at(t));
+    };
+    // Where a walk leaving a block through a joined node goes on.
+    std::map<std::tuple<int, int, int>, std::tuple<int, int, int>> across;
+    for (const Join &jn : set.joins())
+        for (int t = 0; t < jn.a.count(); ++t) {
+            const std::size_t a = root(flat(jn.a, t)), b = root(flat(jn.b, t));
+            parent[std::max(a, b)] = std::min(a, b);
+            across[{jn.a.block, static_cast<int>(jn.a.side), jn.a.at(t)}] = {jn.b.block, static_cast<int>(jn.b.side), jn.b.at(t)};
+            across[{jn.b.block, static_cast<int>(jn.b.side), jn.b.at(t)}] = {jn.a.block, static_cast<int>(jn.a.side), jn.a.at(t)};
+        }
+    std::map<std::size_t, int> number;
+    ids_.resize(static_cast<std::size_t>(blocks));
+    for (int b = 0; b < blocks; ++b) {
+        const std::size_t n = first[static_cast<std::size_t>(b) + 1] - first[static_cast<std::size_t>(b)];
+        ids_[static_cast<std::size_t>(b)].resize(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::size_t r = root(first[static_cast<std::size_t>(b)] + k);
+            const auto it = number.emplace(r, static_cast<int>(copies_.size())).first;
+            if (it->second == static_cast<int>(copies_.size())) copies_.emplace_back();
+            const int ni = ni_[static_cast<std::size_t>(b)];
+            copies_[static_cast<std::size_t>(it->second)].push_back(
+                NodeRef{b, static_cast<int>(k % static_cast<std::size_t>(ni)), static_cast<int>(k / static_cast<std::size_t>(ni))});
+            ids_[static_cast<std::size_t>(b)][k] = it->second;
+        }
+    }
+    // One step along a line: within the block, or across the join of the
+    // side it leaves by, into the other block's line off that side.
+    auto step = [&](Walker &w) {
+        const int ni = ni_[static_cast<std::size_t>(w.b)], nj = nj_[static_cast<std::size_t>(w.b)];
+        const int i = w.i + w.di, j = w.j + w.dj;
+        if (i >= 0 && j >= 0 && i < ni && j < nj) {
+            w.i = i;
+            w.j = j;
+            return true;
+        }
+        const Side s = exit_side(w);
+        const int p = s == Side::JMin || s == Side::JMax ? w.i : w.j;
+        const auto it = across.find({w.b, static_cast<int>(s), p});
+        if (it == across.end()) return false;
+        const int b = std::get<0>(it->second);
+        const Side t = static_cast<Side>(std::get<1>(it->second));
+        const NodeIJ at = side_ij(ni_[static_cast<std::size_t>(b)], nj_[static_cast<std::size_t>(b)], t, std::get<2>(it->second));
+        const NodeIJ in = side_ij(ni_[static_cast<std::size_t>(b)], nj_[static_cast<std::size_t>(b)], t, std::get<2>(it->second), 1);
+        w = Walker{b, in.i, in.j, in.i - at.i, in.j - at.j};
+        return true;
+    };
+    // The set's lines: from each block line not yet walked, back to the
+    // line's end, then forward to its other end. A line along a joined
+    // side is walked from one of the two blocks (the join's first).
+    std::vector<std::array<std::vector<char>, 2>> walked(static_cast<std::size_t>(blocks));
+    for (int b = 0; b < blocks; ++b) {
+        walked[static_cast<std::size_t>(b)][0].assign(static_cast<std::size_t>(ni_[static_cast<std::size_t>(b)]), 0);
+        walked[static_cast<std::size_t>(b)][1].assign(static_cast<std::size_t>(nj_[static_cast<std::size_t>(b)]), 0);
+    }
+    for (const Join &jn : set.joins()) {
+        const std::size_t b = static_cast<std::size_t>(jn.b.block);
+        const bool columns = jn.b.side == Side::IMin || jn.b.side == Side::IMax;
+        const NodeIJ n = side_ij(ni_[b], nj_[b], jn.b.side, 0);
+        walked[b][columns ? 0 : 1][static_cast<std::size_t>(columns ? n.i : n.j)] = 1;
+    }
+    const std::size_t most = copies_.size() + 1;  // a line longer than the set's nodes is a ring
+    for (int b = 0; b < blocks; ++b)
+        for (int family = 0; family < 2; ++family)
+            for (int l = 0; l < (family == 0 ? ni_[static_cast<std::size_t>(b)] : nj_[static_cast<std::size_t>(b)]); ++l) {
+                if (walked[static_cast<std::size_t>(b)][static_cast<std::size_t>(family)][static_cast<std::size_t>(l)]) continue;
+                Walker w = family == 0 ? Walker{b, l, 0, 0, -1} : Walker{b, 0, l, -1, 0};
+                std::size_t guard = 0;
+                while (step(w) && ++guard < most) {
+                }
+                if (guard >= most) continue;
+                w.di = -w.di;
+                w.dj = -w.dj;
+                std::vector<int> line{id(w.b, w.i, w.j)};
+                for (;;) {
+                    walked[static_cast<std::size_t>(w.b)][w.di == 0 ? 0 : 1][static_cast<std::size_t>(w.di == 0 ? w.i : w.j)] = 1;
+                    if (!step(w) || line.size() > most) break;
+                    line.push_back(id(w.b, w.i, w.j));
+                }
+                if (line.size() <= most && line.size() >= 3) lines_.push_back(std::move(line));
+            }
+}
+
+// The first cell asked where a line leaves node `at` toward node `next`:
+// the least height of a wall side through `at` whose block's line off the
+// side is that line (0: none).
+double SetWallLayer::height_leaving(const Composite &c, int at, int next, Vec2 &normal) const {
+    double h = 0.0;
+    for (const NodeRef &n : copies_[static_cast<std::size_t>(at)]) {
+        const std::size_t b = static_cast<std::size_t>(n.b);
+        for (int s = 0; s < 4; ++s) {
+            const std::vector<double> &v = heights_[b][static_cast<std::size_t>(s)];
+            if (v.empty()) continue;
+            const Side side = static_cast<Side>(s);
+            const bool along_i = side == Side::JMin || side == Side::JMax;
+            const int p = along_i ? n.i : n.j;
+            const NodeIJ on = side_ij(ni_[b], nj_[b], side, p);
+            if (on.i != n.i || on.j != n.j || !(v[static_cast<std::size_t>(p)] > 0.0)) continue;
+            const NodeIJ in = side_ij(ni_[b], nj_[b], side, p, 1);
+            if (id(n.b, in.i, in.j) != next) continue;
+            const double hs = v[static_cast<std::size_t>(p)];
+            if (h > 0.0 && h <= hs) continue;
+            h = hs;
+            // The normal: perpendicular to the side's central difference
+            // (one-sided at its ends), toward the node one line in.
+            const int length = along_i ? ni_[b] : nj_[b];
+            const NodeIJ lo = side_ij(ni_[b], nj_[b], side, std::max(0, p - 1));
+            const NodeIJ hi = side_ij(ni_[b], nj_[b], side, std::min(length - 1, p + 1));
+            const Vec2 a = c.point(n.b, lo.i, lo.j), z = c.point(n.b, hi.i, hi.j), o = c.point(n.b, n.i, n.j);
+            const Vec2 inward = c.point(n.b, in.i, in.j);
+            const double tx = z.x - a.x, ty = z.y - a.y, t = std::hypot(tx, ty);
+            normal = Vec2{-ty / t, tx / t};
+            if (normal.x * (inward.x - o.x) + normal.y * (inward.y - o.y) < 0.0) normal = Vec2{-normal.x, -normal.y};
+        }
+    }
+    return h;
+}
+
+std::vector<SetWallLayer::Stretch> SetWallLayer::stretches(const Composite &c, bool vertices) const {
+    std::vector<Stretch> out;
+    auto held = [&](int id) {
+        const NodeRef &n = copies_[static_cast<std::size_t>(id)][0];
+        return !c.moves(n.b, n.i, n.j, vertices);
+    };
+    for (const std::vector<int> &line : lines_) {
+        std::size_t a = 0;
+        while (a < line.size() && !held(line[a])) ++a;
+        for (std::size_t z = a + 1; z < line.size(); ++z) {
+            if (!held(line[z])) continue;
+            if (z - a >= 2) {
+                Stretch s;
+                s.ids.assign(line.begin() + static_cast<std::ptrdiff_t>(a), line.begin() + static_cast<std::ptrdiff_t>(z) + 1);
+                s.first = height_leaving(c, line[a], line[a + 1], s.first_normal);
+                s.last = height_leaving(c, line[z], line[z - 1], s.last_normal);
+                if (s.first > 0.0 || s.last > 0.0) out.push_back(std::move(s));
+            }
+            a = z;
+        }
+    }
+    return out;
+}
+
+void SetWallLayer::respace(Composite &c, bool vertices) const {
+    for (const Stretch &s : stretches(c, vertices)) {
+        std::vector<Vec2> points;
+        for (int id : s.ids) {
+            const NodeRef &n = copies_[static_cast<std::size_t>(id)][0];
+            points.push_back(c.point(n.b, n.i, n.j));
+        }
+        const std::vector<double> arc = arc_lengths(points);
+        const int cells = static_cast<int>(points.size()) - 1;
+        std::vector<double> mixed(static_cast<std::size_t>(cells));
+        for (std::size_t q = 0; q < mixed.size(); ++q) mixed[q] = arc[q + 1] - arc[q];
+        if (!(mixed.front() > 0.0) || !(mixed.back() > 0.0)) continue;
+        // Each wall's first cell scaled to its height, the scale fading out
+        // (fade): the line keeps the shape its blocks' sides gave it (a set's lines run between sides the solve
+        // holds; a target of the layer's own, geometric, beside a side
+        // spaced otherwise sheared the cells at a step's face by 80
+        // degrees).
+        const std::vector<double> lo = fade(cells, s.first > 0.0, false), hi = fade(cells, false, s.last > 0.0);
+        const double a = s.first > 0.0 ? std::log(s.first / mixed.front()) : 0.0;
+        const double z = s.last > 0.0 ? std::log(s.last / mixed.back()) : 0.0;
+        std::vector<double> share(mixed.size());
+        for (std::size_t q = 0; q < mixed.size(); ++q) {
+            mixed[q] *= std::exp(lo[q] * a + hi[q] * z);
+            share[q] = std::max(lo[q], hi[q]);
+        }
+        mixed = fit_length(std::move(mixed), share, arc.back());
+        std::vector<double> want(points.size(), 0.0);
+        for (std::size_t k = 1; k < want.size(); ++k) want[k] = want[k - 1] + mixed[k - 1];
+        want.back() = arc.back();
+        const std::vector<Vec2> p = points_along(points, arc, want);
+        for (std::size_t k = 1; k + 1 < p.size(); ++k)
+            for (const NodeRef &n : copies_[static_cast<std::size_t>(s.ids[k])]) c.put(n.b, n.i, n.j, p[k]);
+    }
+    c.sync();
+}
+
+void SetWallLayer::turn_to_normals(Composite &c) const {
+    for (const Stretch &s : stretches(c, false)) {
+        const int cells = static_cast<int>(s.ids.size()) - 1;
+        auto at = [&](std::size_t k) {
+            const NodeRef &n = copies_[static_cast<std::size_t>(s.ids[k])][0];
+            return c.point(n.b, n.i, n.j);
+        };
+        std::vector<Vec2> p(s.ids.size());
+        for (std::size_t k = 0; k < p.size(); ++k) p[k] = at(k);
+        const std::vector<double> arc = arc_lengths(p);
+        std::vector<Vec2> q = p;
+        for (int end = 0; end < 2; ++end) {
+            const double h = end == 0 ? s.first : s.last;
+            if (!(h > 0.0)) continue;
+            const Vec2 n = end == 0 ? s.first_normal : s.last_normal;
+            const std::vector<double> w = fade(cells, end == 0, end == 1);
+            const Vec2 o = end == 0 ? p.front() : p.back();
+            for (int k = 1; k < cells; ++k) {
+                const std::size_t m = static_cast<std::size_t>(k);
+                const double share = end == 0 ? w[m] : w[m - 1], d = end == 0 ? arc[m] : arc.back() - arc[m];
+                if (share <= 0.0) continue;
+                q[m].x += share * (o.x + n.x * d - p[m].x);
+                q[m].y += share * (o.y + n.y * d - p[m].y);
+            }
+        }
+        for (std::size_t k = 1; k + 1 < q.size(); ++k)
+            for (const NodeRef &n : copies_[static_cast<std::size_t>(s.ids[k])]) c.put(n.b, n.i, n.j, q[k]);
+    }
+    c.sync();
+}
+
+std::string SetWallLayer::kept_sides(const Composite &c) const {
+    int count = 0;
+    double worst = 1.0, cell = 0.0, height = 0.0;
+    NodeRef where{0, 0, 0};
+    auto held = [&](int id) {
+        const NodeRef &n = copies_[static_cast<std::size_t>(id)][0];
+        return !c.moves(n.b, n.i, n.j, true);
+    };
+    for (const std::vector<int> &line : lines_)
+        for (int end = 0; end < 2; ++end) {
+            const int at = end == 0 ? line.front() : line.back(), next = line[end == 0 ? 1 : line.size() - 2];
+            if (!held(at) || !held(next)) continue;
+            Vec2 normal;
+            const double h = height_leaving(c, at, next, normal);
+            if (!(h > 0.0)) continue;
+            const NodeRef &a = copies_[static_cast<std::size_t>(at)][0], &b = copies_[static_cast<std::size_t>(next)][0];
+            const Vec2 p = c.point(a.b, a.i, a.j), q = c.point(b.b, b.i, b.j);
+            const double d = std::hypot(q.x - p.x, q.y - p.y), off = std::max(d / h, h / d);
+            if (!(off > kSidesOff)) continue;
+            ++count;
+            if (off > worst) {
+                worst = off;
+                cell = d;
+                height = h;
+                where = a;
+            }
+        }
+    if (count == 0) return "";
+    return format("wall layer (graded, set of blocks): %d line(s) of the boundary leave a wall with a first cell more "
+                  "than %g times off its height, the worst from block %d's node (%d, %d): %.3g where the wall asks "
+                  "%.3g; the set keeps the boundary's points and the lines beside them follow them: space those "
+                  "sides for the wall", count, kSidesOff, where.b, where.i, where.j, cell, height);
+}
+
+SetLayerFigures SetWallLayer::measure(const Composite &c) const {
+    SetLayerFigures f;
+    for (const Stretch &s : stretches(c, false)) {
+        std::vector<double> cells;
+        for (std::size_t k = 0; k + 1 < s.ids.size(); ++k) {
+            const NodeRef &a = copies_[static_cast<std::size_t>(s.ids[k])][0], &b = copies_[static_cast<std::size_t>(s.ids[k + 1])][0];
+            const Vec2 p = c.point(a.b, a.i, a.j), q = c.point(b.b, b.i, b.j);
+            cells.push_back(std::hypot(q.x - p.x, q.y - p.y));
+        }
+        ++f.lines;
+        f.growth = std::max(f.growth, graded_end_growth(cells, s.first > 0.0, s.last > 0.0));
+        if (s.first > 0.0) f.first_off = std::max(f.first_off, std::fabs(cells.front() / s.first - 1.0));
+        if (s.last > 0.0) f.first_off = std::max(f.first_off, std::fabs(cells.back() / s.last - 1.0));
+    }
+    return f;
+}
+
+}  // namespace eg2d
