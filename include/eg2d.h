@@ -1213,7 +1213,10 @@ EG2D_API int eg2d_blocks_check(eg2d_blocks *set);
  * any block describe the set's run (its solver, the levels multigrid had
  * over the set, what was solved, and a set that could not be halved:
  * multigrid over a set needs an even number of cells each way in every
- * block and joins that end at even nodes). EG2D_ERR_NOT_CONVERGED (the iteration limit or the
+ * block and joins that end at even nodes). Block 0's monitor
+ * (eg2d_set_monitor) is called after every iteration with the set's
+ * iteration count and residual; a nonzero return stops the run with
+ * EG2D_ERR_INTERRUPTED. EG2D_ERR_NOT_CONVERGED (the iteration limit or the
  * stall window) and EG2D_ERR_INTERRUPTED leave the last iterate in the
  * blocks; EG2D_ERR_DIVERGED leaves them as they were. */
 EG2D_API int eg2d_blocks_solve(eg2d_blocks *set);

@@ -1,5 +1,6 @@
 // Sets of blocks: create, join, check, solve, query.
 #include <algorithm>
+#include <functional>
 
 #include "api/blocks_handle.hpp"
 #include "blocks/join_kinks.hpp"
@@ -89,7 +90,14 @@ EG2D_API int eg2d_blocks_solve(eg2d_blocks *set) {
             eg2d_blocks *s;
             ~Ran() { s->ran = s->run.iterations > 0 || s->run.unknowns > 0; }
         } ran{set};
-        solve_set(set->set, nullptr, set->run);
+        set->set.check();  // (block 0 exists)
+        const std::function<bool(int, double)> &monitor = set->set.block(0)->monitor;
+        solve_set(set->set,
+                  monitor ? std::function<bool(long, double)>([&](long it, double r) {
+                      return monitor(static_cast<int>(std::min<long>(it, 2147483647L)), r);
+                  })
+                          : std::function<bool(long, double)>(),
+                  set->run);
     });
 }
 

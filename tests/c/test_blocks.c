@@ -456,6 +456,36 @@ static void test_walled_step(void **state) {
     }
 }
 
+/* Block 0's monitor follows the set's run and can stop it. */
+static int calls, stop_at;
+static int count_and_stop(void *user, int iteration, double residual) {
+    (void)user;
+    assert_int_equal(iteration, calls + 1);
+    assert_true(residual > 0.0);
+    ++calls;
+    return iteration == stop_at;
+}
+static void test_monitor(void **state) {
+    (void)state;
+    eg2d_grid *grids[3];
+    eg2d_blocks *set;
+    int iterations;
+    assert_int_equal(step_blocks(25, 81, 41, 17, grids, &set), EG2D_OK);
+    assert_int_equal(eg2d_set_monitor(grids[0], count_and_stop, NULL), EG2D_OK);
+    calls = 0, stop_at = -1;
+    assert_int_equal(eg2d_blocks_solve(set), EG2D_OK);
+    assert_int_equal(eg2d_blocks_get_run(set, &iterations, NULL, NULL), EG2D_OK);
+    assert_int_equal(calls, iterations);
+    calls = 0, stop_at = 2;
+    for (int k = 0; k < 3; ++k) assert_int_equal(eg2d_initialize(grids[k], EG2D_INIT_TFI), EG2D_OK);
+    expect(eg2d_blocks_solve(set), EG2D_ERR_INTERRUPTED, set, "the monitor stopped the set's run at iteration 2");
+    assert_int_equal(eg2d_blocks_get_run(set, &iterations, NULL, NULL), EG2D_OK);
+    assert_int_equal(iterations, 2);
+    assert_int_equal(calls, 2);
+    eg2d_blocks_destroy(set);
+    eg2d_destroy(grids[0]), eg2d_destroy(grids[1]), eg2d_destroy(grids[2]);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_set_is_the_single_block),
@@ -466,6 +496,7 @@ int main(void) {
         cmocka_unit_test(test_backward_facing_step),
         cmocka_unit_test(test_walls_across_blocks),
         cmocka_unit_test(test_walled_step),
+        cmocka_unit_test(test_monitor),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
