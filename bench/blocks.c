@@ -6,6 +6,10 @@
  *   step  the backward-facing step in three blocks (block_domains.h), and
  *         a rectangle over its extent with as many nodes in one block (no
  *         step: an easier problem with the same unknowns per cycle).
+ * Sizes: the halving ones (2^k + 1), then sizes users pick (odd cell
+ * counts, the set coarsened on its any-size axes). The last rows: the bump
+ * with walls of 1e-5 (floor) and 1e-3 (top), the set's graded layer
+ * against the single block's.
  * Point SOR rows at the smallest size only (thousands of sweeps above). The
  * last column: the largest turn of a grid line at the joins against the
  * largest one node into either block. */
@@ -20,7 +24,7 @@ static int by_value(const void *a, const void *b) {
     return x < y ? -1 : x > y;
 }
 
-typedef enum { BUMP_SET, BUMP_ONE, STEP_SET, STEP_RECTANGLE } shape;
+typedef enum { BUMP_SET, BUMP_ONE, STEP_SET, STEP_RECTANGLE, BUMP_SET_WALLS, BUMP_ONE_WALLS } shape;
 
 typedef struct {
     int iterations;
@@ -37,12 +41,20 @@ static int run_once(shape s, const int *z, int solver, outcome *o) {
     int rc, n = 0;
     o->at = o->near = -1.0;
     switch (s) {
-    case BUMP_SET: rc = bump_halves(z[0], z[1], (z[0] - 1) / 2, grids, &set), n = 2; break;
+    case BUMP_SET:
+    case BUMP_SET_WALLS: rc = bump_halves(z[0], z[1], (z[0] - 1) / 2, grids, &set), n = 2; break;
     case STEP_SET: rc = step_blocks(z[0], z[1], z[2], z[3], grids, &set), n = 3; break;
-    case BUMP_ONE: rc = bump_block(z[0], z[1], z[0], z[1], identity, NULL, &one); break;
+    case BUMP_ONE:
+    case BUMP_ONE_WALLS: rc = bump_block(z[0], z[1], z[0], z[1], identity, NULL, &one); break;
     default: rc = block_rectangle(z[0] + z[1] - 1, z[2] + z[3] - 1, -4.0, 20.0, 0.0, 9.0, 0, 1, &one); break;
     }
     eg2d_grid *first = set ? grids[0] : one;
+    /* walls: 1e-5 at the bump's floor, 1e-3 at the top, every block */
+    for (int k = 0; !rc && (s == BUMP_SET_WALLS || s == BUMP_ONE_WALLS) && k < (set ? n : 1); ++k) {
+        eg2d_grid *g = set ? grids[k] : one;
+        if (!(rc = eg2d_set_system(g, EG2D_SYSTEM_WINSLOW)) && !(rc = eg2d_set_wall_spacing(g, EG2D_SIDE_JMIN, 1e-5)))
+            rc = eg2d_set_wall_spacing(g, EG2D_SIDE_JMAX, 1e-3);
+    }
     if (!rc) rc = eg2d_set_tolerance(first, 1e-10);
     if (!rc) rc = eg2d_set_solver(first, solver);
     const double t0 = bench_cpu();
@@ -84,16 +96,21 @@ static void row(const char *name, const outcome *o, const outcome *ref) {
     if (o->at >= 0) snprintf(turns, sizeof turns, "%.2f / %.2f", o->at, o->near);
     const double per = o->cpu / ((double)o->nodes * (o->iterations > 0 ? o->iterations : 1));
     const double per_ref = ref->cpu / ((double)ref->nodes * (ref->iterations > 0 ? ref->iterations : 1));
-    printf("| %ld | %s | %d | %.2f | %.3f | %.2f | %s |\n", o->nodes, name, o->iterations,
-           (double)o->iterations / ref->iterations, o->cpu, per / per_ref, turns);
+    char ratio[32] = "-", per_ratio[32] = "-";  /* none against a run of no iteration (a start kept exactly) */
+    if (ref->iterations > 0) {
+        snprintf(ratio, sizeof ratio, "%.2f", (double)o->iterations / ref->iterations);
+        snprintf(per_ratio, sizeof per_ratio, "%.2f", per / per_ref);
+    }
+    printf("| %ld | %s | %d | %s | %.3f | %s | %s |\n", o->nodes, name, o->iterations, ratio, o->cpu, per_ratio, turns);
 }
 
 void bench_blocks(void) {
-    static const int bumps[][2] = {{129, 65}, {257, 129}, {513, 257}};
-    static const int steps[][4] = {{25, 81, 41, 17}, {49, 161, 81, 33}, {97, 321, 161, 65}};
+    /* the halving sizes, then sizes users pick (odd cell counts) */
+    static const int bumps[][2] = {{129, 65}, {257, 129}, {513, 257}, {250, 100}, {385, 129}};
+    static const int steps[][4] = {{25, 81, 41, 17}, {49, 161, 81, 33}, {97, 321, 161, 65}, {61, 361, 90, 37}};
     printf("| nodes | grid | iterations | / one block's | CPU s | CPU per node and iteration / one block's | turn at joins / nearby (deg) |\n");
     printf("|---:|---|---:|---:|---:|---:|---|\n");
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < 5; ++k) {
         const outcome one = median(BUMP_ONE, bumps[k], EG2D_SOLVER_MULTIGRID);
         const outcome set = median(BUMP_SET, bumps[k], EG2D_SOLVER_MULTIGRID);
         row("bump, one block, multigrid", &one, &one);
@@ -105,7 +122,7 @@ void bench_blocks(void) {
             row("bump, two blocks, point SOR", &sor2, &sor1);
         }
     }
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < 4; ++k) {
         const outcome one = median(STEP_RECTANGLE, steps[k], EG2D_SOLVER_MULTIGRID);
         const outcome set = median(STEP_SET, steps[k], EG2D_SOLVER_MULTIGRID);
         row("rectangle, one block, multigrid", &one, &one);
@@ -114,5 +131,12 @@ void bench_blocks(void) {
             const outcome sor = median(STEP_SET, steps[k], EG2D_SOLVER_PSOR);
             row("step, three blocks, point SOR", &sor, &one);
         }
+    }
+    /* The graded wall layer: the set's (set_wall_layer) against the single block's. */
+    for (int k = 1; k < 5; k += 2) {
+        const outcome one = median(BUMP_ONE_WALLS, bumps[k], EG2D_SOLVER_MULTIGRID);
+        const outcome set = median(BUMP_SET_WALLS, bumps[k], EG2D_SOLVER_MULTIGRID);
+        row("bump, walls 1e-5 and 1e-3, one block, multigrid", &one, &one);
+        row("bump, walls 1e-5 and 1e-3, two blocks, multigrid", &set, &one);
     }
 }

@@ -1211,9 +1211,9 @@ EG2D_API int eg2d_blocks_check(eg2d_blocks *set);
  * the set, on the extent of the whole set). EG2D_OK: every block holds its
  * part of the solution, and eg2d_get_run_info and eg2d_get_run_event on
  * any block describe the set's run (its solver, the levels multigrid had
- * over the set, what was solved, and a set that could not be halved:
- * multigrid over a set needs an even number of cells each way in every
- * block and joins that end at even nodes). Block 0's monitor
+ * over the set, what was solved, and a set that could not be coarsened:
+ * multigrid over a set coarsens while every block has at least 4 cells
+ * each way, whatever their counts). Block 0's monitor
  * (eg2d_set_monitor) is called after every iteration with the set's
  * iteration count and residual; a nonzero return stops the run with
  * EG2D_ERR_INTERRUPTED. EG2D_ERR_NOT_CONVERGED (the iteration limit or the

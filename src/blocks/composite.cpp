@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 #include <utility>
 
 #include "base/error.hpp"
@@ -28,7 +29,7 @@ Composite::Composite(const std::vector<BlockShape> &shapes, const std::vector<Jo
     : shapes_(shapes), joins_(joins) {
     blocks_.reserve(shapes.size());
     for (const BlockShape &sh : shapes) {
-        Block blk{sh.ni, sh.nj, Connectivity(sh.ni + 2, sh.nj + 2, Topology::Single), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+        Block blk{sh.ni, sh.nj, Connectivity(sh.ni + 2, sh.nj + 2, Topology::Single), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
         const std::size_t n = static_cast<std::size_t>(sh.ni + 2) * static_cast<std::size_t>(sh.nj + 2);
         for (auto *v : {&blk.x, &blk.y, &blk.rx, &blk.ry}) v->assign(n, 0.0);
         blk.role.assign(n, kHeld);
@@ -327,30 +328,91 @@ long Composite::clip_stretching(double limit) {
     return clipped;
 }
 
-std::string Composite::why_not_coarsenable() const {
-    for (std::size_t b = 0; b < shapes_.size(); ++b) {
-        const BlockShape &s = shapes_[b];
-        if ((s.ni - 1) % 2 != 0 || (s.nj - 1) % 2 != 0 || s.ni < 5 || s.nj < 5)
-            return format("block %zu has %d x %d cells (the set halves with an even number of cells, at least 4, "
-                          "each way in every block)", b, s.ni - 1, s.nj - 1);
+namespace {
+// The axis a side runs along: 0 for JMIN, JMAX (i), 1 for IMIN, IMAX (j).
+int axis_of(Side s) { return s == Side::JMin || s == Side::JMax ? 0 : 1; }
+
+// Coarse node I's full-weighting hat over the finer indices: the transpose
+// of the interpolation (linear between the coarse nodes, mirrored past an
+// end, where the halo holds the next block's node), weights summing to 1.
+std::vector<std::pair<int, double>> hat(const CoarseAxis &a, int I) {
+    const double c = a.pos[static_cast<std::size_t>(I)];
+    const double l = I > 0 ? a.pos[static_cast<std::size_t>(I) - 1] : -a.pos[1];
+    const double r = I < a.nc - 1 ? a.pos[static_cast<std::size_t>(I) + 1] : 2.0 * c - a.pos[static_cast<std::size_t>(a.nc) - 2];
+    std::vector<std::pair<int, double>> w;
+    double sum = 0.0;
+    for (int i = static_cast<int>(std::floor(l)) + 1; i < r; ++i) {
+        if (i <= l || i < -1 || i > a.nf) continue;
+        const double v = i <= c ? (i - l) / (c - l) : (r - i) / (r - c);
+        w.emplace_back(i, v);
+        sum += v;
     }
+    for (auto &p : w) p.second /= sum;
+    return w;
+}
+}  // namespace
+
+std::string Composite::coarse_anchors(std::vector<std::array<std::vector<int>, 2>> &anchors) const {
+    for (std::size_t b = 0; b < shapes_.size(); ++b)
+        if (shapes_[b].ni < 5 || shapes_[b].nj < 5)
+            return format("block %zu has %d x %d cells (the set coarsens while every block has at least 4 cells each "
+                          "way)", b, shapes_[b].ni - 1, shapes_[b].nj - 1);
+    std::vector<std::array<std::set<int>, 2>> sets(blocks_.size());
     for (const Join &j : joins_)
-        for (const SideRange &r : {j.a, j.b})
-            if (r.first % 2 != 0 || r.last % 2 != 0)
-                return format("the join of %s ends at an odd node", describe(r).c_str());
+        for (const SideRange *r : {&j.a, &j.b}) {
+            std::set<int> &a = sets[static_cast<std::size_t>(r->block)][static_cast<std::size_t>(axis_of(r->side))];
+            a.insert(r->first);
+            a.insert(r->last);
+        }
+    for (bool added = true; added;) {
+        added = false;
+        for (const Join &j : joins_)
+            for (int d = 0; d < 2; ++d) {
+                const SideRange &from = d == 0 ? j.a : j.b, &to = d == 0 ? j.b : j.a;
+                const std::set<int> known = sets[static_cast<std::size_t>(from.block)][static_cast<std::size_t>(axis_of(from.side))];
+                std::set<int> &into = sets[static_cast<std::size_t>(to.block)][static_cast<std::size_t>(axis_of(to.side))];
+                for (int p : known)
+                    if ((p - from.first) * from.step() >= 0 && (p - from.first) * from.step() < from.count())
+                        added = into.insert(to.at((p - from.first) * from.step())).second || added;
+            }
+    }
+    anchors.assign(blocks_.size(), {});
+    for (std::size_t b = 0; b < blocks_.size(); ++b)
+        for (int d = 0; d < 2; ++d) anchors[b][static_cast<std::size_t>(d)].assign(sets[b][static_cast<std::size_t>(d)].begin(), sets[b][static_cast<std::size_t>(d)].end());
     return "";
 }
 
+std::string Composite::why_not_coarsenable() const {
+    std::vector<std::array<std::vector<int>, 2>> anchors;
+    return coarse_anchors(anchors);
+}
+
 Composite Composite::coarsened() const {
+    std::vector<std::array<std::vector<int>, 2>> anchors;
+    const std::string why = coarse_anchors(anchors);
+    if (!why.empty()) fail(Failure::State, "the set does not coarsen: " + why);
+    std::vector<std::array<CoarseAxis, 2>> axes(shapes_.size());
     std::vector<BlockShape> shapes;
-    for (const BlockShape &s : shapes_) shapes.push_back({(s.ni - 1) / 2 + 1, (s.nj - 1) / 2 + 1});
+    for (std::size_t b = 0; b < shapes_.size(); ++b) {
+        axes[b][0] = make_axis(shapes_[b].ni, false, anchors[b][0], true);
+        axes[b][1] = make_axis(shapes_[b].nj, false, anchors[b][1], true);
+        shapes.push_back({axes[b][0].nc, axes[b][1].nc});
+    }
     std::vector<Join> joins = joins_;
     for (Join &j : joins)
         for (SideRange *r : {&j.a, &j.b}) {
-            r->first /= 2;
-            r->last /= 2;
+            const CoarseAxis &a = axes[static_cast<std::size_t>(r->block)][static_cast<std::size_t>(axis_of(r->side))];
+            r->first = a.nearest(r->first);  // anchors: exact coarse nodes
+            r->last = a.nearest(r->last);
         }
     Composite c(shapes, joins);
+    for (std::size_t b = 0; b < blocks_.size(); ++b) {
+        Block &blk = c.blocks_[b];
+        blk.ai = std::move(axes[b][0]);
+        blk.aj = std::move(axes[b][1]);
+        for (int I = 0; I < blk.ni; ++I) blk.hat_i.push_back(hat(blk.ai, I));
+        for (int J = 0; J < blk.nj; ++J) blk.hat_j.push_back(hat(blk.aj, J));
+    }
     c.sample(*this);
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
         const Block &f = blocks_[b];
@@ -358,14 +420,24 @@ Composite Composite::coarsened() const {
         for (int t = 0; t < kTermCount; ++t) {
             const double *src = f.controls.data(static_cast<Term>(t));
             if (!src) continue;
-            const Term term = static_cast<Term>(t);
-            const double scale = (term == Term::DXi || term == Term::DEta) ? 0.5 : 2.0;
-            std::vector<double> &e = blk.controls.at(term, blk.x.size());
-            for (int j = 0; j < blk.nj; ++j)
-                for (int i = 0; i < blk.ni; ++i) e[blk.at(i, j)] = scale * src[f.at(2 * i, 2 * j)];
+            std::vector<double> &e = blk.controls.at(static_cast<Term>(t), blk.x.size());
+            for (int J = 0; J < blk.nj; ++J)
+                for (int I = 0; I < blk.ni; ++I) {
+                    const double si = blk.ai.h[static_cast<std::size_t>(I)], sj = blk.aj.h[static_cast<std::size_t>(J)];
+                    const double scale[kTermCount] = {si, sj, sj * sj / si, 1.0 / si, si * si / sj, si, sj, 1.0 / sj};
+                    e[blk.at(I, J)] = scale[t] * blk.sampled(f, src, I, J);
+                }
         }
     }
     return c;
+}
+
+double Composite::Block::sampled(const Block &fine, const double *v, int I, int J) const {
+    const std::size_t si = static_cast<std::size_t>(I), sj = static_cast<std::size_t>(J);
+    const int i0 = ai.dn_lo[si], j0 = aj.dn_lo[sj];
+    const double ti = ai.dn_t[si], tj = aj.dn_t[sj];
+    return (1 - tj) * ((1 - ti) * v[fine.at(i0, j0)] + ti * v[fine.at(i0 + 1, j0)]) +
+           tj * ((1 - ti) * v[fine.at(i0, j0 + 1)] + ti * v[fine.at(i0 + 1, j0 + 1)]);
 }
 
 void Composite::sample(const Composite &fine) {
@@ -374,8 +446,8 @@ void Composite::sample(const Composite &fine) {
         const Block &f = fine.blocks_[b];
         for (int j = 0; j < blk.nj; ++j)
             for (int i = 0; i < blk.ni; ++i) {
-                blk.x[blk.at(i, j)] = f.x[f.at(2 * i, 2 * j)];
-                blk.y[blk.at(i, j)] = f.y[f.at(2 * i, 2 * j)];
+                blk.x[blk.at(i, j)] = blk.sampled(f, f.x.data(), i, j);
+                blk.y[blk.at(i, j)] = blk.sampled(f, f.y.data(), i, j);
             }
     }
     sync();
@@ -460,9 +532,7 @@ void Composite::compute_residual(System system) {
 }
 
 void Composite::restrict_from(System system, const Composite &fine) {
-    // Full weighting over the fine node's 3x3 neighbours (halos included).
-    static constexpr double w[3] = {0.25, 0.5, 0.25};
-    const double scale = system == System::Winslow ? 16.0 : 4.0;
+    // Full weighting over each coarse node's hats (halos included).
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
         Block &blk = blocks_[b];
         const Block &f = fine.blocks_[b];
@@ -477,15 +547,16 @@ void Composite::restrict_from(System system, const Composite &fine) {
                 const std::size_t k = blk.at(I, J);
                 if (blk.role[k] != kUnknown) continue;
                 double sx = 0.0, sy = 0.0;
-                for (int dj = -1; dj <= 1; ++dj)
-                    for (int di = -1; di <= 1; ++di) {
-                        const std::size_t kf = f.at(2 * I + di, 2 * J + dj);
-                        sx += w[di + 1] * w[dj + 1] * f.rx[kf];
-                        sy += w[di + 1] * w[dj + 1] * f.ry[kf];
+                for (const auto &wj : blk.hat_j[static_cast<std::size_t>(J)])
+                    for (const auto &wi : blk.hat_i[static_cast<std::size_t>(I)]) {
+                        const std::size_t kf = f.at(wi.first, wj.first);
+                        sx += wi.second * wj.second * f.rx[kf];
+                        sy += wi.second * wj.second * f.ry[kf];
                     }
                 const NodeEquation eq = node_equation(system, L, blk.conn.stencil(I + 1, J + 1));
-                blk.fx[k] = eq.rx - scale * sx;
-                blk.fy[k] = eq.ry - scale * sy;
+                const double s = blk.scale(system, I, J);
+                blk.fx[k] = eq.rx - s * sx;
+                blk.fy[k] = eq.ry - s * sy;
             }
     }
     // The vertices (the same nodes on every level, in the same order),
@@ -497,8 +568,13 @@ void Composite::restrict_from(System system, const Composite &fine) {
         fine.vertex_equation(fine.vertices_[v], fine_rx, fine_ry);
         c.fx = c.fy = 0.0;
         vertex_equation(c, rx, ry);
-        c.fx = rx - 4.0 * fine_rx;
-        c.fy = ry - 4.0 * fine_ry;
+        // (the Laplacian's scale where the vertex is)
+        const Block &home = blocks_[static_cast<std::size_t>(c.copies[0].block)];
+        const int I = static_cast<int>(c.copies[0].k % static_cast<std::size_t>(home.ni + 2)) - 1;
+        const int J = static_cast<int>(c.copies[0].k / static_cast<std::size_t>(home.ni + 2)) - 1;
+        const double s = home.scale(System::Laplace, I, J);
+        c.fx = rx - s * fine_rx;
+        c.fy = ry - s * fine_ry;
         c.x0 = blocks_[static_cast<std::size_t>(c.copies[0].block)].x[c.copies[0].k];
         c.y0 = blocks_[static_cast<std::size_t>(c.copies[0].block)].y[c.copies[0].k];
     }
@@ -514,9 +590,10 @@ void Composite::prolong_to(Composite &fine) const {
             for (int i = 0; i < f.ni; ++i) {
                 const std::size_t k = f.at(i, j);
                 if (f.role[k] != kUnknown) continue;
-                const int I0 = i / 2, J0 = j / 2, I1 = I0 + (i % 2), J1 = J0 + (j % 2);
-                f.x[k] += 0.25 * (dx(I0, J0) + dx(I1, J0) + dx(I0, J1) + dx(I1, J1));
-                f.y[k] += 0.25 * (dy(I0, J0) + dy(I1, J0) + dy(I0, J1) + dy(I1, J1));
+                const int I = blk.ai.up_lo[static_cast<std::size_t>(i)], J = blk.aj.up_lo[static_cast<std::size_t>(j)];
+                const double ti = blk.ai.up_t[static_cast<std::size_t>(i)], tj = blk.aj.up_t[static_cast<std::size_t>(j)];
+                f.x[k] += (1 - tj) * ((1 - ti) * dx(I, J) + ti * dx(I + 1, J)) + tj * ((1 - ti) * dx(I, J + 1) + ti * dx(I + 1, J + 1));
+                f.y[k] += (1 - tj) * ((1 - ti) * dy(I, J) + ti * dy(I + 1, J)) + tj * ((1 - ti) * dy(I, J + 1) + ti * dy(I + 1, J + 1));
             }
     }
     for (std::size_t v = 0; v < vertices_.size(); ++v) {

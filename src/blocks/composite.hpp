@@ -19,8 +19,10 @@
 // blocks meet), after every sweep of every level, its equation restricted
 // and corrected with the rest in multigrid.
 #pragma once
+#include <array>
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "base/block_tridiagonal.hpp"  // Vec2
@@ -28,6 +30,7 @@
 #include "blocks/block_set.hpp"
 #include "operator/operator.hpp"
 #include "operator/system.hpp"
+#include "solvers/coarse_axis.hpp"
 #include "solvers/line_relax.hpp"
 #include "solvers/multigrid_ilu.hpp"
 
@@ -46,13 +49,20 @@ public:
     // computes none, those one line into the block).
     static Composite of(const BlockSet &set);
 
-    // Every block has an even number of cells each way (at least 4) and
-    // every join's ends are even nodes: the set coarsens by two.
+    // Every block has at least 4 cells each way: the set coarsens, any
+    // size (the single block's coarse axes, solvers/coarse_axis.hpp: a
+    // stretch of L cells between anchors becomes ceil(L/2) equal cells, every
+    // other node where L is even). The anchors of a block's axis are its
+    // joins' ends and, carried across each join until none is added, the
+    // anchors of the axes it is joined to, so a join's two sides keep the
+    // same coarse nodes.
     bool coarsenable() const { return why_not_coarsenable().empty(); }
-    // What keeps it from coarsening ("block 1 has 249 x 99 cells"), or "".
+    // What keeps it from coarsening ("block 1 has 3 x 40 cells"), or "".
     std::string why_not_coarsenable() const;
-    // Every other node of each block, the joins halved; coordinates and
-    // control fields sampled (a, b, c doubled and d halved: control_fields.hpp).
+    // The coarse level: each block on its coarse axes, the joins' ends their
+    // coarse nodes; coordinates and control fields sampled (a, b, c times
+    // the local coarsening factor and d over it: multigrid_hierarchy.cpp's
+    // restrict_controls).
     Composite coarsened() const;
     // Coordinates sampled from `fine` (of which this is coarsened()), halos synced.
     void sample(const Composite &fine);
@@ -143,6 +153,9 @@ public:
 
 private:
     enum Role : char { kHeld = 0, kUnknown = 1, kCopy = 2, kHalo = 3 };
+    // Each block's axes' anchors (i, j) for the next coarser level, or why
+    // the set does not coarsen.
+    std::string coarse_anchors(std::vector<std::array<std::vector<int>, 2>> &anchors) const;
     struct Block {
         int ni, nj;
         Connectivity conn;  // (ni+2) x (nj+2), single block, every node not solved here held
@@ -150,12 +163,26 @@ private:
         std::vector<char> role;
         ControlFields controls;  // (ni+2) x (nj+2); empty: none
         ControlFields given;     // the static terms of the block's own controls (of())
+        // Coarse levels: the axes from the finer level's block, and each
+        // coarse node's full-weighting hat over the finer indices -1..n (the
+        // halo included, so it reads across a join).
+        CoarseAxis ai, aj;
+        std::vector<std::vector<std::pair<int, double>>> hat_i, hat_j;
         IluWork ilu;
         LineWork lines;
         std::size_t at(int i, int j) const {  // block node (i, j), -1 <= i <= ni
             return static_cast<std::size_t>(i + 1) + static_cast<std::size_t>(ni + 2) * static_cast<std::size_t>(j + 1);
         }
         Level level() const;
+        // Coarse levels: v (a field of `fine`, of which this is the coarse
+        // block) interpolated at coarse node (I, J).
+        double sampled(const Block &fine, const double *v, int I, int J) const;
+        // The operator's scale under this coarsening at (I, J) (the single
+        // block's operator_scale): (si sj)^2 for Winslow, si sj for Laplace.
+        double scale(System system, int I, int J) const {
+            const double s = ai.h[static_cast<std::size_t>(I)] * aj.h[static_cast<std::size_t>(J)];
+            return system == System::Winslow ? s * s : s;
+        }
         // f(stencil) at every node this block solves within columns i0..i1
         // and rows j0..j1 of the extended frame (default: all of them).
         template <class F>

@@ -125,14 +125,16 @@ public:
     double omega() const { return multigrid() ? 1.0 : sor_->factor(); }
     long clipped() const { return mg_.empty() ? 0 : mg_[0].clipped(); }
 
-    void converge(Composite &c) {
+    // To `goal` (block 0's tolerance when 0).
+    void converge(Composite &c, double goal = 0.0) {
+        if (!(goal > s_.tolerance)) goal = s_.tolerance;
         const bool nested = solver_ == EG2D_SOLVER_NESTED;
         const long limit = static_cast<long>(s_.max_iterations);
         StallWatch watch(window_);
         const long first = run_.iterations;
         run_.residual = c.residual(system_, extent_);
         double best = run_.residual;
-        while (run_.residual > s_.tolerance) {
+        while (run_.residual > goal) {
             if (run_.iterations >= limit) {
                 write_back(set_, c, run_.iterations, report_);
                 fail(Failure::NotConverged, format("the set reached the iteration limit (%ld) at residual %.3g "
@@ -149,9 +151,9 @@ public:
                     mg_[0].coarse_to_fine(c, [&](Composite &level) {
                         SetSor level_sor(s_, level, false);
                         StallWatch level_watch(window_);
-                        const double goal = std::max(s_.tolerance, kCoarseTolerance);
+                        const double level_goal = std::max(s_.tolerance, kCoarseTolerance);
                         double r = level.residual(system_, extent_);
-                        for (long k = 0; k < kCoarseSweeps && r > goal && !level_watch.stalled(k, r, 0.0); ++k) {
+                        for (long k = 0; k < kCoarseSweeps && r > level_goal && !level_watch.stalled(k, r, 0.0); ++k) {
                             level_sor.iterate(system_, level);
                             r = level.residual(system_, extent_);
                             if (!std::isfinite(r)) break;
@@ -241,7 +243,7 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
         // Generator::shape_start).
         const long folded = c.folded_cells();
         if (folded > 0) {
-            pass.converge(c);
+            pass.converge(c, kShapeTolerance);
             report.note(format("wall layer (graded, set of blocks): the blocks' start has %ld folded cell(s); the "
                                "layer is made on the set's grid without its controls (%ld iteration(s))", folded,
                                run.iterations));
@@ -251,8 +253,13 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
         layer.respace(c, true);
         c.hold_spacing(system, false);
         pass.prepare(c);
+        // Only the shape of the lines is taken from this pass (to the
+        // single block's kShapeTolerance): the second holds the grid it
+        // leaves exactly.
+        pass.converge(c, kShapeTolerance);
+    } else {
+        pass.converge(c);
     }
-    pass.converge(c);
     if (!layer.empty()) {
         // The second pass: the first cells back to their heights where the
         // solve made them drift, the grid then held exactly.

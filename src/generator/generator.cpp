@@ -57,11 +57,6 @@ constexpr double kMinAreaShare = 1e-12;
 // iteration (ControlPace; measured in the loop of run()).
 constexpr double kCyclePaceRelaxation = 3.0;
 constexpr double kCyclePaceStep = 5.0;
-// A folded start under a graded wall layer is solved without controls to
-// this residual only: the layer re-spaces its lines and keeps their shape,
-// which a rounder residual does not change (S-shaped diffuser 177x81: 1
-// cycle against 3 to 1e-10).
-constexpr double kShapeTolerance = 1e-6;
 // Winslow cycles at most for a folded variational start (untangle_start).
 constexpr int kUntangleCycles = 50;
 
