@@ -40,10 +40,8 @@ void write_back(const BlockSet &set, const Composite &c, long iterations, RunRep
 }
 
 // Point or line SOR over the set. Automatic factor: the point solvers'
-// guarded ramp (solvers/auto_relaxation.hpp) from Gauss-Seidel to the
-// target over its ramp, a sweep that moves the grid more than kJump times
-// the last one undone and redone with half the over-relaxation: a fixed
-// factor near 2 blows up on a TFI start (the 49x161 step diverged).
+// guarded ramp (solvers/auto_relaxation.hpp) on the set's coordinates: a
+// fixed factor near 2 blows up on a TFI start (the 49x161 step diverged).
 class SetSor {
 public:
     SetSor(const Settings &s, const Composite &c, bool lines) : lines_(lines), automatic_(!(s.relaxation > 0.0)) {
@@ -53,23 +51,10 @@ public:
         ramp_ = automatic_ ? AutoRelaxation::ramp_for(std::max(target_.xi, target_.eta)) : 0;
     }
     void iterate(System system, Composite &c) {
-        c.save();
-        sweep(system, c);
-        double m = c.move();
-        if (automatic_ && !(m <= kJump * last_move_) && sweeps_ > 0) {
-            c.restore();
-            share_ *= 0.5;
-            sweep(system, c);
-            m = c.move();
-        }
-        last_move_ = m;
-        ++sweeps_;
+        if (automatic_) auto_.sweep_guarded(c, ramp_, [&] { sweep(system, c); });
+        else sweep(system, c);
     }
-    double factor(double target) const {
-        if (!automatic_) return target;
-        const double r = ramp_ > 0 ? std::min(1.0, static_cast<double>(sweeps_ + 1) / static_cast<double>(ramp_)) : 1.0;
-        return 1.0 + share_ * r * (target - 1.0);
-    }
+    double factor(double target) const { return automatic_ ? auto_.omega(target) : target; }
     double factor() const { return factor(target_.xi); }
 
 private:
@@ -77,11 +62,10 @@ private:
         if (lines_) c.sweep_lines(system, factor(target_.xi), factor(target_.eta));
         else c.sweep(system, factor(target_.xi));
     }
-    static constexpr double kJump = 3.0;
     bool lines_, automatic_;
     LineOmega target_{1.0, 1.0};
-    long ramp_ = 0, sweeps_ = 0;
-    double share_ = 1.0, last_move_ = std::numeric_limits<double>::infinity();
+    long ramp_ = 0;
+    AutoRelaxation auto_;
 };
 
 // The nested iteration's coarse levels are converged to this at most:

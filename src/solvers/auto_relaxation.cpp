@@ -15,24 +15,24 @@ double AutoRelaxation::omega(double target) const {
     return 1.0 + share_ * ramp * (target - 1.0);
 }
 
-void AutoRelaxation::save(const Level &L) {
-    prev_x_.assign(L.x, L.x + nodes(L));  // capacity kept: no allocation after the first sweep
-    prev_y_.assign(L.y, L.y + nodes(L));
+void AutoRelaxation::LevelGuard::save() {
+    prev_x.assign(L.x, L.x + nodes(L));
+    prev_y.assign(L.y, L.y + nodes(L));
 }
 
-double AutoRelaxation::move(const Level &L) const {
+double AutoRelaxation::LevelGuard::move() const {
     double m = 0.0;
-    for (std::size_t k = 0; k < prev_x_.size(); ++k) {
-        const double dx = std::fabs(L.x[k] - prev_x_[k]), dy = std::fabs(L.y[k] - prev_y_[k]);
+    for (std::size_t k = 0; k < prev_x.size(); ++k) {
+        const double dx = std::fabs(L.x[k] - prev_x[k]), dy = std::fabs(L.y[k] - prev_y[k]);
         if (!std::isfinite(dx + dy)) return std::numeric_limits<double>::infinity();  // std::max drops NaN
         m = std::max(m, std::max(dx, dy));
     }
     return m;
 }
 
-void AutoRelaxation::restore(const Level &L) const {
-    std::copy(prev_x_.begin(), prev_x_.end(), L.x);
-    std::copy(prev_y_.begin(), prev_y_.end(), L.y);
+void AutoRelaxation::LevelGuard::restore() const {
+    std::copy(prev_x.begin(), prev_x.end(), L.x);
+    std::copy(prev_y.begin(), prev_y.end(), L.y);
 }
 
 bool AutoRelaxation::jumped(double m) {

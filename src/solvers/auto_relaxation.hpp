@@ -43,14 +43,23 @@ public:
     // is already near the solution (coarse-to-fine), no ramp.
     template <class Sweep>
     void sweep(const Level &L, long ramp, Sweep &&sweep) {
+        LevelGuard guard{L, prev_x_, prev_y_};
+        sweep_guarded(guard, ramp, sweep);
+    }
+    // The same on any coordinates a sweep moves: `guarded` keeps them
+    // (save()), puts them back (restore()) and gives the largest change
+    // since (move(), infinite if any is not finite): a set of blocks
+    // (blocks/composite.hpp) as well as a grid level.
+    template <class Guarded, class Sweep>
+    void sweep_guarded(Guarded &guarded, long ramp, Sweep &&sweep) {
         ramp_ = ramp;
-        save(L);
+        guarded.save();
         sweep();
-        double m = move(L);
+        double m = guarded.move();
         if (jumped(m)) {
-            restore(L);
+            guarded.restore();
             sweep();
-            m = move(L);
+            m = guarded.move();
         }
         settle(m);
     }
@@ -65,9 +74,15 @@ public:
 private:
     static constexpr double kJump = 3.0;
     static constexpr double kCreep = 10.0;
-    void save(const Level &L);
-    void restore(const Level &L) const;
-    double move(const Level &L) const;  // the largest coordinate change since save(); inf if not finite
+    // A grid level's coordinates, kept in the class's arrays (their
+    // capacity kept: no allocation after the first sweep).
+    struct LevelGuard {
+        const Level &L;
+        std::vector<double> &prev_x, &prev_y;
+        void save();
+        void restore() const;
+        double move() const;
+    };
     bool jumped(double move);           // backs off if so
     void settle(double move);
 
