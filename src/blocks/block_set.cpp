@@ -114,7 +114,7 @@ void BlockSet::check() const {
             fail(Failure::Unsupported, format("block %d: the variational system on a set of blocks is not available "
                                               "yet (EG2D_SYSTEM_LAPLACE or EG2D_SYSTEM_WINSLOW)", b));
         // (a wall control is the graded layer across the set: set_wall_layer.hpp)
-        ControlSet &controls = const_cast<Generator *>(g)->controls();
+        const ControlSet &controls = g->controls();
         if (!controls.empty() && g->system() != System::Winslow)
             fail(Failure::State, format("block %d has control terms but the system is %s: controls need "
                                         "EG2D_SYSTEM_WINSLOW (or clear the controls)", b, system_name(g->system())));

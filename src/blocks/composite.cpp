@@ -26,7 +26,7 @@ Level Composite::Block::level() const {
 }
 
 Composite::Composite(const std::vector<BlockShape> &shapes, const std::vector<Join> &joins)
-    : shapes_(shapes), joins_(joins) {
+    : joins_(joins) {
     blocks_.reserve(shapes.size());
     for (const BlockShape &sh : shapes) {
         Block blk{sh.ni, sh.nj, Connectivity(sh.ni + 2, sh.nj + 2, Topology::Single), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
@@ -353,10 +353,10 @@ std::vector<std::pair<int, double>> hat(const CoarseAxis &a, int I) {
 }  // namespace
 
 std::string Composite::coarse_anchors(std::vector<std::array<std::vector<int>, 2>> &anchors) const {
-    for (std::size_t b = 0; b < shapes_.size(); ++b)
-        if (shapes_[b].ni < 5 || shapes_[b].nj < 5)
+    for (std::size_t b = 0; b < blocks_.size(); ++b)
+        if (blocks_[b].ni < 5 || blocks_[b].nj < 5)
             return format("block %zu has %d x %d cells (the set coarsens while every block has at least 4 cells each "
-                          "way)", b, shapes_[b].ni - 1, shapes_[b].nj - 1);
+                          "way)", b, blocks_[b].ni - 1, blocks_[b].nj - 1);
     std::vector<std::array<std::set<int>, 2>> sets(blocks_.size());
     for (const Join &j : joins_)
         for (const SideRange *r : {&j.a, &j.b}) {
@@ -391,11 +391,11 @@ Composite Composite::coarsened() const {
     std::vector<std::array<std::vector<int>, 2>> anchors;
     const std::string why = coarse_anchors(anchors);
     if (!why.empty()) fail(Failure::State, "the set does not coarsen: " + why);
-    std::vector<std::array<CoarseAxis, 2>> axes(shapes_.size());
+    std::vector<std::array<CoarseAxis, 2>> axes(blocks_.size());
     std::vector<BlockShape> shapes;
-    for (std::size_t b = 0; b < shapes_.size(); ++b) {
-        axes[b][0] = make_axis(shapes_[b].ni, false, anchors[b][0], true);
-        axes[b][1] = make_axis(shapes_[b].nj, false, anchors[b][1], true);
+    for (std::size_t b = 0; b < blocks_.size(); ++b) {
+        axes[b][0] = make_axis(blocks_[b].ni, false, anchors[b][0], true);
+        axes[b][1] = make_axis(blocks_[b].nj, false, anchors[b][1], true);
         shapes.push_back({axes[b][0].nc, axes[b][1].nc});
     }
     std::vector<Join> joins = joins_;
@@ -492,7 +492,7 @@ void Composite::sweep_lines(System system, double omega_xi, double omega_eta) {
 
 int Composite::longest() const {
     int n = 0;
-    for (const BlockShape &s : shapes_) n = std::max({n, s.ni, s.nj});
+    for (const Block &blk : blocks_) n = std::max({n, blk.ni, blk.nj});
     return n;
 }
 
@@ -638,7 +638,7 @@ double Composite::residual(System system, double extent) const {
 
 long Composite::nodes() const {
     long n = 0;
-    for (const BlockShape &s : shapes_) n += static_cast<long>(s.ni) * s.nj;
+    for (const Block &blk : blocks_) n += static_cast<long>(blk.ni) * blk.nj;
     return n;
 }
 

@@ -115,7 +115,9 @@ public:
     LineOmega line_omega() const;
     // Node by node, for what re-spaces the set's lines (set_wall_layer.hpp).
     int size() const { return static_cast<int>(blocks_.size()); }
-    BlockShape shape(int b) const { return shapes_[static_cast<std::size_t>(b)]; }
+    BlockShape shape(int b) const {
+        return {blocks_[static_cast<std::size_t>(b)].ni, blocks_[static_cast<std::size_t>(b)].nj};
+    }
     Vec2 point(int b, int i, int j) const {
         const Block &blk = blocks_[static_cast<std::size_t>(b)];
         return {blk.x[blk.at(i, j)], blk.y[blk.at(i, j)]};
@@ -214,7 +216,6 @@ private:
     void sync(Field a, Field b);
     // After block b moved: its copies, then the halos that read it or a copy.
     void sync_from(std::size_t b);
-    std::vector<BlockShape> shapes_;
     std::vector<Join> joins_;
     std::vector<Block> blocks_;
     std::vector<Link> copies_, halos_;  // copies first: a halo may read a copy

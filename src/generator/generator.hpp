@@ -104,6 +104,7 @@ public:
     const char *solver_name() const { return solver_info_->name; }
 
     ControlSet &controls() { return controls_; }
+    const ControlSet &controls() const { return controls_; }
     // Call after changing controls().
     void changed_controls();
 
