@@ -206,7 +206,8 @@ def mesh_eg2d(build, toml, work):
     m = re.search(r"quality: (\d+) folded cells", r.stdout)
     folds = int(m[1]) if m else None
     if r.returncode:
-        return None, folds, r.stdout.strip().splitlines()[-1]
+        last = (r.stdout.strip().splitlines() or ["exit %d" % r.returncode])[-1]
+        return None, folds, last.replace("eg2d: %s: " % toml, "")  # the message, not the path
     case = [os.path.join(out, d) for d in os.listdir(out) if d.endswith("_foam")][0]
     for name in SYSTEM:  # eg2d writes its own; blockMesh's case gets the same as this script's
         foam_file(os.path.join(case, "system", name), name)
