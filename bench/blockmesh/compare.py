@@ -4,7 +4,10 @@ node counts (issue 39): for each geometry of bench/blockmesh, blockMesh meshes
 its system/blockMeshDict and eg2d its case file, checkMesh checks both, and
 this script measures both polyMeshes the same way. Prints a Markdown table.
 
-  bench/blockmesh/compare.py BUILD_DIR [GEOMETRY...]   (default: pitzDaily bfs)
+  bench/blockmesh/compare.py BUILD_DIR [--walls] [GEOMETRY...]   (default: pitzDaily bfs)
+
+--walls runs eg2d on the case files whose blocks give their walls blockMesh's
+first cells (wall_spacing; *-walls.toml, make_cases.py writes them).
 
 Needs blockMesh and checkMesh (Debian's openfoam package; WM_PROJECT_DIR is
 set to /usr/share/openfoam when unset) and numpy.
@@ -207,7 +210,7 @@ def mesh_eg2d(build, toml, work):
     folds = int(m[1]) if m else None
     if r.returncode:
         last = (r.stdout.strip().splitlines() or ["exit %d" % r.returncode])[-1]
-        return None, folds, last.replace("eg2d: %s: " % toml, "")  # the message, not the path
+        return None, folds, re.sub(r"^eg2d: " + re.escape(toml) + r"(:\d+:\d+)?: ", "", last)  # not the path
     case = [os.path.join(out, d) for d in os.listdir(out) if d.endswith("_foam")][0]
     for name in SYSTEM:  # eg2d writes its own; blockMesh's case gets the same as this script's
         foam_file(os.path.join(case, "system", name), name)
@@ -221,8 +224,9 @@ def fmt(v, spec):
 def main():
     if len(sys.argv) < 2:
         sys.exit(__doc__)
-    build = sys.argv[1]
-    names = sys.argv[2:] or list(GEOMETRIES)
+    build, args = sys.argv[1], sys.argv[2:]
+    walls = "--walls" in args
+    names = [a for a in args if a != "--walls"] or list(GEOMETRIES)
     os.environ.setdefault("WM_PROJECT_DIR", "/usr/share/openfoam")
     print("| geometry | generator | cells | checkMesh | non-orthogonality max (deg) | skewness max "
           "| neighbour size ratio max | interface kink max (deg) | interior kink nearby max (deg) | folds |")
@@ -230,6 +234,8 @@ def main():
     notes = []
     for name in names:
         dict_dir, toml, sizes = GEOMETRIES[name]
+        if walls:
+            toml = toml.replace(".toml", "-walls.toml")
         with tempfile.TemporaryDirectory() as work:
             rows = {}
             bm = mesh_blockmesh(os.path.join(HERE, dict_dir), work)

@@ -59,7 +59,30 @@ def side(key, p, q, grading, n):
     return lines
 
 
-def toml(title, comment, verts, blocks, joins, patches, scale=1.0):
+def end_cells(p, q, grading, n):
+    """The first and the last cell of blockMesh's graded edge p->q."""
+    secs = sections(grading, n)
+    length = ((q[0] - p[0]) ** 2 + (q[1] - p[1]) ** 2) ** 0.5
+
+    def first(l, m, e):
+        r = e ** (1 / (m - 1)) if m > 1 else 1.0
+        return l * length / m if abs(r - 1) < 1e-15 else l * length * (r - 1) / (r ** m - 1)
+    return first(*secs[0]), first(*secs[-1]) * secs[-1][2]
+
+
+def wall_spacing(v, hexa, ni, nj, g, walls):
+    """The block's wall_spacing: each wall side's first cell as blockMesh makes
+    it, from the edges that leave the wall (the smaller where the two differ)."""
+    a, b, c, d = hexa
+    (gbot, gtop), (glef, grig) = g
+    lef, rig = end_cells(v[a], v[d], glef, nj), end_cells(v[b], v[c], grig, nj)
+    bot, top = end_cells(v[a], v[b], gbot, ni), end_cells(v[d], v[c], gtop, ni)
+    first = {"bottom": min(lef[0], rig[0]), "top": min(lef[1], rig[1]),
+             "left": min(bot[0], top[0]), "right": min(bot[1], top[1])}
+    return "wall_spacing = { " + ", ".join(f"{s} = {first[s]:.6g}" for s in walls) + " }"
+
+
+def toml(title, comment, verts, blocks, joins, patches, scale=1.0, walls=False):
     v = {k: (x * scale, y * scale) for k, (x, y) in verts.items()}
     out = [f"# {line}" if line else "#" for line in comment] + [
         f'title = "{title}"', 'system = "winslow"', "", "[output]", 'formats = ["openfoam", "vts"]', ""]
@@ -69,6 +92,9 @@ def toml(title, comment, verts, blocks, joins, patches, scale=1.0):
         gbot, gtop = (gx, gx) if not isinstance(gx, tuple) else gx
         glef, grig = (gy, gy) if not isinstance(gy, tuple) else gy
         out += ["[[blocks]]", f'name = "{name}"', f"size = [{ni + 1}, {nj + 1}]"]
+        wall_sides = [s for s, t, _ in patches.get(name, []) if t == "wall"]
+        if walls and wall_sides:  # the walls' first cells: for the graded wall layer on sets
+            out.append(wall_spacing(v, (a, b, c, d), ni, nj, ((gbot, gtop), (glef, grig)), wall_sides))
         out += side("bottom", v[a], v[b], gbot, ni) + side("right", v[b], v[c], grig, nj)
         out += side("top", v[d], v[c], gtop, ni) + side("left", v[a], v[d], glef, nj)
         for s, t, pname in patches.get(name, []):
@@ -196,6 +222,15 @@ if __name__ == "__main__":
                  "Backward-facing step, Driver & Seegmiller's proportions (NASA TMR 2DBFS)", BFS_COMMENT,
                  bfs_verts, bfs_blocks, bfs_joins, bfs_patches) + "\n",
              "bfs/system/blockMeshDict": block_mesh_dict(bfs_verts, bfs_blocks, bfs_patches)}
+    # the same with each block's walls given blockMesh's first cells (compare.py --walls)
+    for name, (title, comment, verts, blocks, joins, patches, scale) in {
+            "pitzDaily/pitz-daily-walls.toml": ("pitzDaily, first cells at the walls", PITZ_COMMENT, pitz_verts,
+                                                pitz_blocks, pitz_joins, pitz_patches, 0.001),
+            "bfs/backward-facing-step-tmr-walls.toml": ("Backward-facing step (TMR 2DBFS), first cells at the walls",
+                                                        BFS_COMMENT, bfs_verts, bfs_blocks, bfs_joins, bfs_patches,
+                                                        1.0)}.items():
+        files[name] = toml(title, comment + ["The walls' first cells are blockMesh's (wall_spacing of each block)."],
+                           verts, blocks, joins, patches, scale, walls=True) + "\n"
     for name, text in files.items():
         with open(os.path.join(HERE, name), "w") as f:
             f.write(text)
