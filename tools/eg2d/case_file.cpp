@@ -108,11 +108,12 @@ std::vector<SideSpec> read_side_table(const Fields &parent, int topology, const 
 
 void read_sides(const Fields &top, Case &c) { c.sides = read_side_table(top, c.topology, c.dir, c.constants); }
 
-// [controls] wall_spacing: a first-cell height per wall side, or a table
-// {yplus, reynolds, chord} turned into one by eg2d_first_cell_height.
-void read_wall_spacing(const Fields &f, Case &c) {
+// wall_spacing (of [controls], or of a block of a set): a first-cell height
+// per wall side, or a table {yplus, reynolds, chord} turned into one by
+// eg2d_first_cell_height.
+void read_wall_spacing(const Fields &f, int topology, const Constants &constants, std::vector<WallSpacing> &spacings) {
     if (!f.has("wall_spacing")) return;
-    const auto &valid = side_names(c.topology);
+    const auto &valid = side_names(topology);
     std::vector<std::string> side_keys;
     for (const auto &s : valid) side_keys.push_back(s.first);
     Fields w(f.table("wall_spacing"), f.at("wall_spacing"), side_keys);
@@ -123,16 +124,20 @@ void read_wall_spacing(const Fields &f, Case &c) {
         if (w.node(s.first)->is_table()) {  // from a target y+ (eg2d_first_cell_height)
             Fields y(w.table(s.first), w.at(s.first), {"yplus", "reynolds", "chord"});
             y.finish();
-            const int status = eg2d_first_cell_height(y.number("yplus", c.constants), y.number("reynolds", c.constants),
-                                                      y.number("chord", 1, c.constants), &h);
+            const int status = eg2d_first_cell_height(y.number("yplus", constants), y.number("reynolds", constants),
+                                                      y.number("chord", 1, constants), &h);
             if (status != EG2D_OK)
                 throw Failure(EXIT_GEOMETRY, w.at(s.first).str() + ": " + eg2d_last_error(nullptr));
         } else {
-            h = w.number(s.first, c.constants);
+            h = w.number(s.first, constants);
         }
         if (h < 0) throw Failure(EXIT_CASE, w.at(s.first).str() + ": must be >= 0 (0 = orthogonality only)");
-        c.wall_spacings.push_back({s.second, h, w.at(s.first)});
+        spacings.push_back({s.second, h, w.at(s.first)});
     }
+}
+
+void read_wall_controls(const Fields &f, Case &c) {
+    read_wall_spacing(f, c.topology, c.constants, c.wall_spacings);
     if (f.has("wall_growth_limit")) {
         c.wall_growth_limit = f.number("wall_growth_limit", c.constants);
         if (!(c.wall_growth_limit >= 1))
@@ -224,7 +229,7 @@ void read_controls(const Fields &top, Case &c) {
         c.orthogonality = pick_key(f, "orthogonality", "none", orthogonality()).id;
         c.orthogonality_at = f.at("orthogonality");
     }
-    read_wall_spacing(f, c);
+    read_wall_controls(f, c);
     read_sources(f, c);
     read_weight(f, c);
     read_parameter_grid(f, c);
@@ -275,8 +280,9 @@ bool good_block_name(const std::string &n) {
     return true;
 }
 
-// [[blocks]]: name, size, sides (as a single-block case's [sides]) and
-// [[blocks.patches]]; each block's formulas see its own ni, nj.
+// [[blocks]]: name, size, sides (as a single-block case's [sides]),
+// [[blocks.patches]] and wall_spacing (as [controls] wall_spacing, for this
+// block's sides); each block's formulas see its own ni, nj.
 void read_blocks(const Fields &top, Case &c) {
     c.blocks_at = top.at("blocks");
     const toml::array &a = top.array("blocks");
@@ -284,7 +290,7 @@ void read_blocks(const Fields &top, Case &c) {
     for (std::size_t k = 0; k < a.size(); ++k) {
         const Location l = locate(top.where(), "blocks[" + std::to_string(k) + "]", *a.get(k));
         if (!a.get(k)->is_table()) throw Failure(EXIT_CASE, l.str() + ": expected a table, found " + type_name(*a.get(k)));
-        Fields f(*a.get(k)->as_table(), l, {"name", "size", "sides", "patches"});
+        Fields f(*a.get(k)->as_table(), l, {"name", "size", "sides", "patches", "wall_spacing"});
         f.finish();
         BlockSpec b;
         b.where = l;
@@ -312,6 +318,7 @@ void read_blocks(const Fields &top, Case &c) {
             for (const SidePiece &p : sd.pieces)
                 if (p.sliding) throw Failure(EXIT_CASE, p.where.str() + ": a block's side does not slide (sets of blocks)");
         read_patch_array(f, EG2D_TOPO_SINGLE, b.ni, b.nj, b.constants, b.patches);
+        read_wall_spacing(f, EG2D_TOPO_SINGLE, b.constants, b.wall_spacings);
         c.blocks.push_back(std::move(b));
     }
 }

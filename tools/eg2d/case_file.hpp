@@ -69,6 +69,7 @@ struct BlockSpec {  // one block: a single-block grid of its own
     Constants constants;  // the case's, with this block's ni, nj
     std::vector<SideSpec> sides;
     std::vector<PatchSetting> patches;
+    std::vector<WallSpacing> wall_spacings;  // wall_spacing: this block's walls
 };
 
 struct JoinEnd {  // one side of a join: nodes first..last of a block's side

@@ -70,9 +70,15 @@ void preflight(const Case &c, const RunOptions &o) {
     check_before_solving(o.out_dir, paths);
 }
 
+// The walls' first cells: a height >= 0 turns EG2D_ORTHO_WALL on (eg2d.h), so
+// a single block's wall_spacing and a block's of a set need nothing more.
+void apply_wall_spacings(eg2d_grid *g, const std::vector<WallSpacing> &spacings) {
+    for (const auto &w : spacings) check(g, eg2d_set_wall_spacing(g, w.side, w.height), w.where);
+}
+
 void apply_controls(eg2d_grid *g, const Case &c) {
     if (c.orthogonality >= 0) check(g, eg2d_set_orthogonality(g, c.orthogonality), c.orthogonality_at);
-    for (const auto &w : c.wall_spacings) check(g, eg2d_set_wall_spacing(g, w.side, w.height), w.where);
+    apply_wall_spacings(g, c.wall_spacings);
     for (const auto &s : c.line_sources)
         check(g, eg2d_add_line_source(g, s.direction, s.line, s.amplitude, s.decay), s.where);
     for (const auto &s : c.point_sources)
@@ -352,6 +358,7 @@ int run_block_set(const Case &c, const RunOptions &o) {
         }
         for (const auto &p : b.patches)
             check(g, eg2d_set_patch(g, p.side, p.first, p.last, p.type, p.name.c_str()), p.where);
+        apply_wall_spacings(g, b.wall_spacings);
     }
     eg2d_blocks *raw_set = nullptr;
     check_set(nullptr, eg2d_blocks_create(&raw_set), c.blocks_at);
