@@ -2239,6 +2239,25 @@ class BlockSets(unittest.TestCase):
                 table = {k: int(v) for k, v in re.findall(r"^\s{4}(\w+)\s+(\d+)\s+\d+\s+ok", log, re.M)}
                 self.assertEqual(table, dict(self.PATCHES, frontAndBack=2 * self.CELLS))
 
+    def test_step_as_vtk_multiblock(self):
+        # vtm: the set's .vtm and its block directory, staged and put in place together
+        with tempfile.TemporaryDirectory() as d:
+            path = case_from_example(d, self.STEP, ('formats = ["su2", "openfoam", "vts", "svg"]', 'formats = ["vtm"]'))
+            out, name = os.path.join(d, "out"), "case"  # named by the case file
+            for _ in range(2):  # again over the first: the block directory is there
+                code, stdout, stderr = run("run", path, "-o", out)
+                self.assertEqual(code, 0, stdout + stderr)
+                self.assertEqual(sorted(os.listdir(out)), [name, name + ".vtm"])  # no stage left
+                files = [f"{name}_{k}.vts" for k in range(3)]
+                self.assertEqual(sorted(os.listdir(os.path.join(out, name))), files)
+                for f in files:
+                    self.assertIn("wrote " + os.path.join(out, name, f), stdout)
+                with open(os.path.join(out, name + ".vtm")) as f:
+                    text = f.read()
+                self.assertEqual(re.findall(r'file="([^"]+)"', text), [name + "/" + f for f in files])
+            with open(os.path.join(out, name, files[2])) as f:
+                self.assertIn('WholeExtent="0 80 0 16 0 0"', f.read())
+
     def test_demo_runs_the_step(self):
         with tempfile.TemporaryDirectory() as d:
             code, stdout, stderr = run("demo", self.STEP, "-o", d, "--quiet")

@@ -7,12 +7,18 @@
  * DIR/step.su2, the OpenFOAM case DIR/step_foam, the three blocks as zones
  * of the one-cell-thick ASCII Plot3D DIR/step.p3d, a zone a block with
  * its boundary conditions and the joins as 1-to-1 connections in
- * DIR/step.cgns (unless no-cgns), and DIR/step.txt:
- * "cells points wall inlet outlet", the counts worked out here from the
- * blocks. Then refuses EG2D_FORMAT_VTS for a set (EG2D_ERR_UNSUPPORTED). */
+ * DIR/step.cgns (unless no-cgns), VTK's multiblock DIR/step.vtm (its
+ * blocks in DIR/step/), DIR/step.txt: "cells points wall inlet outlet",
+ * the counts worked out here from the blocks, and DIR/step_nodes.txt:
+ * each block's "ni nj" line, then its nodes "x y" (eg2d_get_coordinates,
+ * i fastest), and each block's grid as eg2d_write's vts DIR/step-K.vts
+ * (what the .vtm's block files must equal). Block 0's grid alone as DIR/one.vtm. Then refuses
+ * EG2D_FORMAT_VTS for a set (EG2D_ERR_UNSUPPORTED) and a .vtm path without
+ * an extension (EG2D_ERR_ARGUMENT, nothing written). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "block_domains.h"
 #include "eg2d.h"
@@ -22,6 +28,23 @@ static void check(int status, const char *what, const char *message) {
         fprintf(stderr, "%s: %s\n", what, message);
         exit(1);
     }
+}
+
+/* Each block's size and nodes, for the VTK multiblock check. */
+static void write_nodes(const char *path, eg2d_grid *const *g, int n) {
+    FILE *f = fopen(path, "w");
+    if (!f) exit(1);
+    for (int b = 0; b < n; ++b) {
+        int ni, nj;
+        check(eg2d_get_size(g[b], &ni, &nj), "eg2d_get_size", eg2d_last_error(g[b]));
+        double *x = malloc(sizeof(double) * (size_t)ni * (size_t)nj), *y = malloc(sizeof(double) * (size_t)ni * (size_t)nj);
+        if (!x || !y) exit(1);
+        check(eg2d_get_coordinates(g[b], x, y), "eg2d_get_coordinates", eg2d_last_error(g[b]));
+        fprintf(f, "%d %d\n", ni, nj);
+        for (long k = 0; k < (long)ni * nj; ++k) fprintf(f, "%.17g %.17g\n", x[k], y[k]);
+        free(x), free(y);
+    }
+    if (fclose(f)) exit(1);
 }
 
 static void left_half(int i, int j, int *I, int *J, const int *p) { (void)p, *I = i, *J = j; }
@@ -62,11 +85,29 @@ int main(int argc, char **argv) {
         snprintf(path, sizeof path, "%s/step.cgns", argv[1]);
         check(eg2d_blocks_write(set, path, EG2D_FORMAT_CGNS), path, eg2d_blocks_last_error(set));
     }
+    snprintf(path, sizeof path, "%s/step.vtm", argv[1]);
+    check(eg2d_blocks_write(set, path, EG2D_FORMAT_VTM), path, eg2d_blocks_last_error(set));
+    snprintf(path, sizeof path, "%s/step_nodes.txt", argv[1]);
+    write_nodes(path, g, 3);
+    for (int b = 0; b < 3; ++b) {
+        snprintf(path, sizeof path, "%s/step-%d.vts", argv[1], b);
+        check(eg2d_write(g[b], path, EG2D_FORMAT_VTS), path, eg2d_last_error(g[b]));
+    }
+    snprintf(path, sizeof path, "%s/one.vtm", argv[1]);
+    check(eg2d_write(g[0], path, EG2D_FORMAT_VTM), path, eg2d_last_error(g[0]));
     snprintf(path, sizeof path, "%s/step.vts", argv[1]);
     if (eg2d_blocks_write(set, path, EG2D_FORMAT_VTS) != EG2D_ERR_UNSUPPORTED ||
         !strstr(eg2d_blocks_last_error(set),
-                "the vts format cannot hold a set of blocks (plot3d, plot3d-ascii, cgns, su2, openfoam can")) {
+                "the vts format cannot hold a set of blocks (plot3d, plot3d-ascii, cgns, su2, openfoam, vtm can")) {
         fprintf(stderr, "VTS for a set: \"%s\"\n", eg2d_blocks_last_error(set));
+        return 1;
+    }
+    struct stat st;
+    snprintf(path, sizeof path, "%s/bare", argv[1]);
+    if (eg2d_blocks_write(set, path, EG2D_FORMAT_VTM) != EG2D_ERR_ARGUMENT ||
+        !strstr(eg2d_blocks_last_error(set), "/bare: a VTK multiblock file needs an extension (NAME.vtm)") ||
+        stat(path, &st) == 0) {
+        fprintf(stderr, "a .vtm path without an extension: \"%s\"\n", eg2d_blocks_last_error(set));
         return 1;
     }
     /* The bump in two blocks, the right one turned by 90 degrees (its JMIN
