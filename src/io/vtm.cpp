@@ -6,11 +6,16 @@
 // vtkXMLMultiBlockDataReader read it as one data set of the blocks.
 // All or nothing: the block directory is made if missing (and removed again
 // on failure), every file is written to its temporary first, then the blocks
-// are put in place and the .vtm last. Block files of an earlier, larger set
+// are put in place and the .vtm last; should the .vtm still fail there (a
+// FIFO with no reader), the block files that were new are removed again
+// (those that replaced an earlier set's stay replaced). Block files of an earlier, larger set
 // in the directory are left as they are; the .vtm names only the set's own.
-#include <string>
+#include <cstdio>
 #include <memory>
+#include <string>
 #include <vector>
+
+#include <sys/stat.h>
 
 #include "base/error.hpp"
 #include "io/formats.hpp"
@@ -54,13 +59,16 @@ void write_vtm(const BlocksRequest &r, const std::string &path) {
     MadeDirectories made;
     made.make(directory);
     std::vector<std::unique_ptr<OutputFile>> blocks;
+    std::vector<std::string> new_files;  // removed again if the .vtm cannot be put in place
     vtm.print("<?xml version=\"1.0\"?>\n"
               "<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" byte_order=\"LittleEndian\" "
               "header_type=\"UInt32\">\n"
               "  <vtkMultiBlockDataSet>\n");
     for (std::size_t k = 0; k < r.grids.size(); ++k) {
-        const std::string file = format("%s_%zu.vts", name.c_str(), k);
-        blocks.push_back(std::make_unique<OutputFile>(directory + "/" + file));
+        const std::string file = format("%s_%zu.vts", name.c_str(), k), file_path = directory + "/" + file;
+        struct stat st;
+        if (lstat(file_path.c_str(), &st) != 0) new_files.push_back(file_path);
+        blocks.push_back(std::make_unique<OutputFile>(file_path));
         write_vts(WriteRequest{*r.grids[k], r.settings, 0, nullptr}, *blocks.back());
         vtm.print("    <DataSet index=\"%zu\" name=\"block%zu\" file=\"%s\"/>\n", k, k,
                   xml_attribute(name + "/" + file).c_str());
@@ -68,8 +76,13 @@ void write_vtm(const BlocksRequest &r, const std::string &path) {
     vtm.print("  </vtkMultiBlockDataSet>\n"
               "</VTKFile>\n");
     // Everything is written: now put it in place, the file that names the blocks last.
-    for (auto &b : blocks) b->commit();
-    vtm.commit();
+    try {
+        for (auto &b : blocks) b->commit();
+        vtm.commit();
+    } catch (...) {
+        for (const std::string &f : new_files) std::remove(f.c_str());
+        throw;
+    }
     made.keep();
 }
 

@@ -14,10 +14,15 @@
  * i fastest), and each block's grid as eg2d_write's vts DIR/step-K.vts
  * (what the .vtm's block files must equal). Block 0's grid alone as DIR/one.vtm. Then refuses
  * EG2D_FORMAT_VTS for a set (EG2D_ERR_UNSUPPORTED) and a .vtm path without
- * an extension (EG2D_ERR_ARGUMENT, nothing written). */
+ * an extension (EG2D_ERR_ARGUMENT, nothing written), and fails as a whole
+ * (EG2D_ERR_IO naming the file, no .vtm, no block file, no temporary left):
+ * a file where the blocks' directory goes, a directory where a block file
+ * goes, a .vtm that is a FIFO with no reader (the blocks' directory, made
+ * for it, removed again). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <dirent.h>
 #include <sys/stat.h>
 
 #include "block_domains.h"
@@ -45,6 +50,43 @@ static void write_nodes(const char *path, eg2d_grid *const *g, int n) {
         free(x), free(y);
     }
     if (fclose(f)) exit(1);
+}
+
+static int exists(const char *dir, const char *name) {
+    char path[4096];
+    struct stat st;
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    return lstat(path, &st) == 0;
+}
+
+/* A temporary (".eg2d-tmp-") left in dir (none where dir is no directory). */
+static int temporary_left(const char *dir) {
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    int found = 0;
+    if (!d) return 0;
+    while ((e = readdir(d)) != NULL) found |= strstr(e->d_name, ".eg2d-tmp-") != NULL;
+    closedir(d);
+    return found;
+}
+
+/* The set written as DIR/NAME.vtm fails with EG2D_ERR_IO naming `what`,
+ * and leaves no .vtm, no block 0 and no temporary behind. */
+static int vtm_fails(eg2d_blocks *set, const char *dir, const char *name, const char *what) {
+    char path[4096], blocks[4096], block0[4096];
+    snprintf(path, sizeof path, "%s/%s.vtm", dir, name);
+    snprintf(blocks, sizeof blocks, "%s/%s", dir, name);
+    snprintf(block0, sizeof block0, "%s_0.vts", name);
+    struct stat st;
+    const int is_fifo = stat(path, &st) == 0 && S_ISFIFO(st.st_mode);
+    if (eg2d_blocks_write(set, path, EG2D_FORMAT_VTM) != EG2D_ERR_IO || !strstr(eg2d_blocks_last_error(set), what) ||
+        (!is_fifo && exists(dir, strrchr(path, '/') + 1)) || exists(blocks, block0) || temporary_left(dir) ||
+        temporary_left(blocks)) {
+        fprintf(stderr, "%s.vtm: \"%s\": a half set left, or not the error expected (%s)\n", name,
+                eg2d_blocks_last_error(set), what);
+        return 0;
+    }
+    return 1;
 }
 
 static void left_half(int i, int j, int *I, int *J, const int *p) { (void)p, *I = i, *J = j; }
@@ -110,6 +152,19 @@ int main(int argc, char **argv) {
         fprintf(stderr, "a .vtm path without an extension: \"%s\"\n", eg2d_blocks_last_error(set));
         return 1;
     }
+    char held[4096];
+    snprintf(path, sizeof path, "%s/clash", argv[1]);
+    FILE *clash = fopen(path, "w");
+    snprintf(held, sizeof held, "%s/held", argv[1]);
+    mkdir(held, 0777);
+    snprintf(held, sizeof held, "%s/held/held_1.vts", argv[1]);
+    mkdir(held, 0777);
+    snprintf(path, sizeof path, "%s/pipe.vtm", argv[1]);
+    if (!clash || fclose(clash) || mkfifo(path, 0666) ||
+        !vtm_fails(set, argv[1], "clash", "/clash: cannot make the directory: a file that is not a directory is in the way") ||
+        !vtm_fails(set, argv[1], "held", "/held/held_1.vts: is a directory: not written, and not replaced") ||
+        !vtm_fails(set, argv[1], "pipe", "/pipe.vtm: a FIFO with no reader: not written") || exists(argv[1], "pipe"))
+        return 1;
     /* The bump in two blocks, the right one turned by 90 degrees (its JMIN
      * joined to the left one's IMAX the other way round): a 1-to-1
      * connection with the transform [2, -1] (block_domains.h). */
