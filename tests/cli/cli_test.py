@@ -1720,6 +1720,19 @@ class Channel(unittest.TestCase):
                     self.assertIn("Mesh OK.", out)
                     self.assertIn("Total volume = 4.", out)
 
+    def test_vtk_multiblock_of_each_level(self):
+        """vtm: each level's NAME.vtm with its block file in NAME/, staged and put in place with it."""
+        with tempfile.TemporaryDirectory() as d:
+            self.channel(d, *self.STRAIGHT, "--size", "129x65", "--first-cell", "1e-3", "--levels", "2", "--format", "vtm")
+            for ni, nj in ((129, 65), (65, 33)):
+                name = f"channel-{ni}x{nj}"
+                self.assertEqual(os.listdir(os.path.join(d, name)), [name + "_0.vts"])
+                with open(os.path.join(d, name + ".vtm")) as f:
+                    self.assertIn(f'<DataSet index="0" name="block0" file="{name}/{name}_0.vts"/>', f.read())
+                with open(os.path.join(d, name, name + "_0.vts")) as f:
+                    self.assertIn(f'WholeExtent="0 {ni - 1} 0 {nj - 1} 0 0"', f.read())
+            self.assertFalse([n for n in os.listdir(d) if n.startswith(".eg2d-set-")])  # no stage left
+
     def check_su2_meshio(self, path, ni, nj):
         """meshio reads PATH (where installed): ni nj points, the quadrilaterals, every boundary edge once."""
         try:

@@ -149,8 +149,10 @@ std::set<std::string> names_in(const std::string &dir) {
 void move_into_place(const std::string &from, const std::string &to, std::vector<std::string> &written) {
     struct stat st;
     if (lstat(from.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
-        if (mkdir(to.c_str(), 0777) != 0 && errno != EEXIST)
-            throw Failure(EXIT_IO, to + ": cannot make the directory: " + std::strerror(errno));
+        struct stat there;
+        if (mkdir(to.c_str(), 0777) != 0 && !(errno == EEXIST && stat(to.c_str(), &there) == 0 && S_ISDIR(there.st_mode)))
+            throw Failure(EXIT_IO, to + ": cannot make the directory: " +
+                                       (errno == EEXIST ? "a file that is not a directory is in the way" : std::strerror(errno)));
         for (const std::string &n : names_in(from)) move_into_place(from + "/" + n, to + "/" + n, written);
         return;
     }
