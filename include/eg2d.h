@@ -981,7 +981,9 @@ EG2D_API int eg2d_get_wall_layer(const eg2d_grid *grid, int side, int what, doub
  *                it); the grid is its one block. The directory NAME (the
  *                path less its extension; a path with none is
  *                EG2D_ERR_ARGUMENT) is made if missing; the .vtm is put
- *                in place after its blocks. Takes no flags.
+ *                in place after its blocks, and a failure leaves no new
+ *                block file (eg2d_format_info: EG2D_WRITES_FILE, the .vtm;
+ *                its directory goes with it). Takes no flags.
  * Every format's layout: docs/methods.md, "Files". */
 EG2D_API int eg2d_write(const eg2d_grid *grid, const char *path, int format);
 
