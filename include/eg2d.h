@@ -225,7 +225,7 @@ EG2D_API void eg2d_version(int *major, int *minor, int *patch);
 #define EG2D_LIST_ORTHOGONALITY  6
 #define EG2D_LIST_TOPOLOGIES     7
 #define EG2D_LIST_DISTRIBUTIONS  8
-#define EG2D_LIST_SET_FORMATS    9  /* the formats that hold a set of blocks in one file (eg2d_blocks_write) */
+#define EG2D_LIST_SET_FORMATS    9  /* the formats that hold a set of blocks (eg2d_blocks_write) */
 
 /* The number of entries of `list`. EG2D_ERR_ARGUMENT: an unknown list, NULL. */
 EG2D_API int eg2d_list_count(int list, int *count);
@@ -482,6 +482,7 @@ EG2D_API const char *eg2d_quality_cell_field(int metric);
 #define EG2D_FORMAT_OPENFOAM     8  /* an OpenFOAM case directory (polyMesh) */
 #define EG2D_FORMAT_REPORT       9  /* the grid's report as text */
 #define EG2D_FORMAT_REPORT_JSON 10  /* the same as one JSON object */
+#define EG2D_FORMAT_VTM         11  /* VTK XML multiblock: NAME.vtm naming a .vts a block in NAME/ */
 /* Plot3D variants: flags OR-ed into EG2D_FORMAT_PLOT3D or _PLOT3D_ASCII. */
 #define EG2D_PLOT3D_3D         0x100   /* the 3D form with one k-plane, z = 0 */
 #define EG2D_PLOT3D_MULTI      0x200   /* the multi-grid header (a grid count of 1) */
@@ -974,6 +975,15 @@ EG2D_API int eg2d_get_wall_layer(const eg2d_grid *grid, int side, int what, doub
  *                exist), one layer of cells EG2D_PARAM_SPAN thick; takes no
  *                flags.
  *  REPORT, REPORT_JSON  sizes, the last run, the wall layer and the quality.
+ *  VTM           VTK's multiblock form, as VTK's own writer lays it out:
+ *                `path` (NAME.vtm, a vtkMultiBlockDataSet) names the
+ *                blocks' files NAME/NAME_0.vts, ... (each as VTS writes
+ *                it); the grid is its one block. The directory NAME (the
+ *                path less its extension; a path with none is
+ *                EG2D_ERR_ARGUMENT) is made if missing; the .vtm is put
+ *                in place after its blocks, and a failure leaves no new
+ *                block file (eg2d_format_info: EG2D_WRITES_FILE, the .vtm;
+ *                its directory goes with it). Takes no flags.
  * Every format's layout: docs/methods.md, "Files". */
 EG2D_API int eg2d_write(const eg2d_grid *grid, const char *path, int format);
 
@@ -1244,7 +1254,9 @@ EG2D_API int eg2d_blocks_get_kinks(const eg2d_blocks *set, double *at_joins, dou
  * and _PLOT3D_ASCII (with their flags) hold a zone a block, in block
  * order, in a multi-grid file; EG2D_FORMAT_CGNS a zone a block ("block0",
  * ...) with its boundary conditions less the joined edges and each join
- * as a 1-to-1 connection from both zones. Any other format: EG2D_ERR_UNSUPPORTED
+ * as a 1-to-1 connection from both zones; EG2D_FORMAT_VTM a .vts a block
+ * ("block0", ...) named by the .vtm (see eg2d_write), which ParaView and
+ * VTK's vtkXMLMultiBlockDataReader read as the set. Any other format: EG2D_ERR_UNSUPPORTED
  * naming those (write each block's grid with eg2d_write). EG2D_ERR_STATE
  * unless the set checks and every block is initialised; EG2D_ERR_IO as
  * eg2d_write. All or nothing, as eg2d_write. */

@@ -11,6 +11,7 @@ void write_plot3d_ascii(const WriteRequest &r, OutputFile &out);
 void write_plot3d_blocks(const BlocksRequest &r, OutputFile &out);
 void write_plot3d_ascii_blocks(const BlocksRequest &r, OutputFile &out);
 void write_vts(const WriteRequest &r, OutputFile &out);           // vts.cpp
+void write_vtm(const BlocksRequest &r, const std::string &path);  // vtm.cpp
 void write_cgns(const WriteRequest &r, OutputFile &out);          // cgns_loader.cpp
 void write_cgns_blocks(const BlocksRequest &r, OutputFile &out);
 void write_gmv(const WriteRequest &r, OutputFile &out);           // gmv.cpp
@@ -31,6 +32,15 @@ constexpr int kPlot3dFlags = EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI | EG2D_PLOT3D_SI
 // In id order; a format that is a directory of files (an OpenFOAM case) has
 // write_directory instead of write; one written from the unstructured mesh
 // has its mesh writer too (sets of blocks).
+//
+// VTK's multiblock form is a row of its own (vtm), not a set writer on the
+// vts row as Plot3D's and CGNS's zones are on theirs: a set writer writes
+// the row's own kind of file (a .cgns of zones is a .cgns), where a .vtm is
+// another kind (a vtkMultiBlockDataSet naming one .vts a block, in a
+// directory beside it) with a suffix of its own, which ParaView and VTK's
+// readers go by. Under the vts id, eg2d_blocks_write would put a .vtm where
+// the command and the user name a .vts. Its one writer serves a grid too
+// (a set of one block), so that eg2d_write takes every listed format.
 const FileFormat kFormats[] = {
     {EG2D_FORMAT_PLOT3D, "plot3d", ".xyz", kPlot3dFlags, write_plot3d, nullptr, nullptr, nullptr, write_plot3d_blocks},
     {EG2D_FORMAT_PLOT3D_ASCII, "plot3d-ascii", ".p3d", EG2D_PLOT3D_3D | EG2D_PLOT3D_MULTI | EG2D_PLOT3D_EXTRUDED,
@@ -44,6 +54,7 @@ const FileFormat kFormats[] = {
     {EG2D_FORMAT_OPENFOAM, "openfoam", "_foam", 0, nullptr, write_openfoam, nullptr, write_openfoam_mesh},
     {EG2D_FORMAT_REPORT, "report", ".report.txt", 0, write_report},
     {EG2D_FORMAT_REPORT_JSON, "report-json", ".report.json", 0, write_report_json},
+    {EG2D_FORMAT_VTM, "vtm", ".vtm", 0, nullptr, nullptr, nullptr, nullptr, nullptr, write_vtm},
 };
 }  // namespace
 
@@ -54,7 +65,7 @@ const FileFormat *find_format(int id) { return format_table().find(id); }
 std::vector<FileFormat> set_formats() {
     std::vector<FileFormat> out;
     for (const FileFormat &k : format_table())
-        if (k.write_mesh || k.write_mesh_directory || k.write_blocks) out.push_back(k);
+        if (k.write_mesh || k.write_mesh_directory || k.write_blocks || k.write_blocks_files) out.push_back(k);
     return out;
 }
 
@@ -62,7 +73,7 @@ SetWriting set_writing(int id) {
     const FileFormat *f = id >= 0 ? find_format(id & kFormatMask) : nullptr;
     if (!f) fail(Failure::Argument, format("format = %d: no such file format", id));
     if (f->write_mesh || f->write_mesh_directory) return SetWriting::Mesh;
-    if (f->write_blocks) return SetWriting::Zones;
+    if (f->write_blocks || f->write_blocks_files) return SetWriting::Zones;
     std::string can;
     for (const FileFormat &k : set_formats()) can += std::string(can.empty() ? "" : ", ") + k.name;
     fail(Failure::Unsupported, format("the %s format cannot hold a set of blocks (%s can; or write each block's grid)",
@@ -91,8 +102,14 @@ void write_blocks(const std::vector<const Grid *> &grids, const std::vector<Zone
     if (flags & ~f->allowed_flags)
         fail(Failure::Argument, format("format = %#x: flags %#x do not apply to the %s format", id,
                                        flags & ~f->allowed_flags, f->name));
+    const BlocksRequest r{grids, settings, flags, joins};
+    if (f->write_blocks_files) {
+        if (!*path) fail(Failure::Argument, "path is empty");
+        f->write_blocks_files(r, path);
+        return;
+    }
     OutputFile out(path);
-    f->write_blocks(BlocksRequest{grids, settings, flags, joins}, out);
+    f->write_blocks(r, out);
     out.commit();
 }
 
@@ -110,6 +127,11 @@ void write_grid(const Grid &grid, const Settings &settings, const char *path, in
     if (flags & ~f->allowed_flags)
         fail(Failure::Argument, format("format = %#x: flags %#x do not apply to the %s format", id,
                                              flags & ~f->allowed_flags, f->name));
+    if (f->write_blocks_files) {  // a set of one block
+        if (!*path) fail(Failure::Argument, "path is empty");
+        f->write_blocks_files(BlocksRequest{{&grid}, settings, flags}, path);
+        return;
+    }
     OutputFile out(path);
     f->write(WriteRequest{grid, settings, flags, run}, out);
     out.commit();

@@ -71,6 +71,11 @@ struct FileFormat {
     void (*write_mesh_directory)(const MeshRequest &request, const std::string &directory) = nullptr;
     // A format with several zones in one file writes a set of blocks one zone a block.
     void (*write_blocks)(const BlocksRequest &request, OutputFile &out) = nullptr;
+    // A format of a file a block and a file that names them (a VTK
+    // multiblock .vtm): the writer is given the path and writes each file
+    // through an OutputFile, committing them together (the file at the path
+    // last); a grid is written as a set of one block.
+    void (*write_blocks_files)(const BlocksRequest &request, const std::string &path) = nullptr;
 };
 
 Table<FileFormat> format_table();  // in increasing id order
@@ -78,16 +83,16 @@ Table<FileFormat> format_table();  // in increasing id order
 const FileFormat *find_format(int id);
 
 // A set of blocks: whether the format writes them as one merged mesh
-// (write_mesh) or a zone a block (write_blocks); Failure::Argument for no
+// (write_mesh) or a zone a block (write_blocks, write_blocks_files); Failure::Argument for no
 // such format, Unsupported naming the formats that hold a set for one that
 // does neither.
 enum class SetWriting { Mesh, Zones };
 SetWriting set_writing(int id);
-// The formats that hold a set (a mesh or a zone writer), in id order.
+// The formats that hold a set (a mesh, zone or block-files writer), in id order.
 std::vector<FileFormat> set_formats();
 // Writes a merged mesh (a set of blocks) to path in the format id.
 void write_mesh(const UnstructuredMesh &mesh, const Settings &settings, const std::string &title, const char *path, int id);
-// Writes the blocks a zone each to path in the format (id | flags).
+// Writes the blocks a zone (or a file) each to path in the format (id | flags).
 void write_blocks(const std::vector<const Grid *> &grids, const std::vector<ZoneJoin> &joins, const Settings &settings,
                   const char *path, int id);
 

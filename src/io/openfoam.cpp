@@ -10,14 +10,11 @@
 // pointing out of the domain. system/ gets a minimal controlDict, fvSchemes
 // and fvSolution, which checkMesh and the other utilities need to run, but
 // only where the case has none: a case the user has set up keeps its own.
-#include <cerrno>
-#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include "base/error.hpp"
 #include "eg2d.h"
@@ -44,32 +41,6 @@ const char *foam_type(PatchType t) {
     default: return "patch";
     }
 }
-
-// Directories this call made, removed again (when still empty) on failure,
-// so that a failed write leaves the file system as it was.
-class MadeDirectories {
-public:
-    ~MadeDirectories() {
-        if (keep_) return;
-        for (auto it = made_.rbegin(); it != made_.rend(); ++it) rmdir(it->c_str());
-    }
-    void make(const std::string &path) {
-        if (mkdir(path.c_str(), 0777) == 0) {
-            made_.push_back(path);
-            return;
-        }
-        const int err = errno;
-        struct stat st;
-        if (err == EEXIST && stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) return;
-        fail(Failure::Io, format("%s: cannot make the directory: %s", path.c_str(),
-                                 err == EEXIST ? "a file that is not a directory is in the way" : std::strerror(err)));
-    }
-    void keep() { keep_ = true; }
-
-private:
-    std::vector<std::string> made_;
-    bool keep_ = false;
-};
 
 bool exists(const std::string &path) {
     struct stat st;

@@ -188,4 +188,21 @@ void OutputFile::commit() {
     committed_ = true;
 }
 
+MadeDirectories::~MadeDirectories() {
+    if (keep_) return;
+    for (auto it = made_.rbegin(); it != made_.rend(); ++it) rmdir(it->c_str());
+}
+
+void MadeDirectories::make(const std::string &path) {
+    if (mkdir(path.c_str(), 0777) == 0) {
+        made_.push_back(path);
+        return;
+    }
+    const int err = errno;
+    struct stat st;
+    if (err == EEXIST && stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) return;
+    fail(Failure::Io, format("%s: cannot make the directory: %s", path.c_str(),
+                             err == EEXIST ? "a file that is not a directory is in the way" : std::strerror(err)));
+}
+
 }  // namespace eg2d

@@ -15,6 +15,7 @@
 #pragma once
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace eg2d {
 
@@ -56,6 +57,27 @@ private:
         unsigned mode = 0;
         long uid = -1, gid = -1;
     } old_;
+};
+
+// Directories a writer of several files made (an OpenFOAM case, a VTK
+// multiblock's block directory), removed again (when still empty) unless
+// keep() is called, so that a failed write leaves the file system as it was:
+// with every file an OutputFile, a writer makes its directories, writes
+// every file, commits them, then keeps the directories.
+class MadeDirectories {
+public:
+    MadeDirectories() = default;
+    ~MadeDirectories();
+    MadeDirectories(const MadeDirectories &) = delete;
+    MadeDirectories &operator=(const MadeDirectories &) = delete;
+    // Makes the directory unless it is one already (its parent must exist);
+    // Failure::Io naming it when it cannot, or a file is in the way.
+    void make(const std::string &path);
+    void keep() { keep_ = true; }
+
+private:
+    std::vector<std::string> made_;
+    bool keep_ = false;
 };
 
 }  // namespace eg2d

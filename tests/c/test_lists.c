@@ -69,6 +69,7 @@ static void names_are_the_ids(void **state) {
         {EG2D_LIST_DISTRIBUTIONS, "tanh2", EG2D_DIST_TANH_TWO},
         {EG2D_LIST_SET_FORMATS, "cgns", EG2D_FORMAT_CGNS},
         {EG2D_LIST_SET_FORMATS, "openfoam", EG2D_FORMAT_OPENFOAM},
+        {EG2D_LIST_SET_FORMATS, "vtm", EG2D_FORMAT_VTM},
     };
     size_t k;
     (void)state;
@@ -127,6 +128,9 @@ static void formats_and_metrics_are_described(void **state) {
     assert_int_equal(eg2d_format_info(EG2D_FORMAT_OPENFOAM, &kind, &suffix), EG2D_OK);
     assert_int_equal(kind, EG2D_WRITES_DIRECTORY);
     assert_string_equal(suffix, "_foam");
+    assert_int_equal(eg2d_format_info(EG2D_FORMAT_VTM, &kind, &suffix), EG2D_OK);  /* names its blocks' directory */
+    assert_int_equal(kind, EG2D_WRITES_FILE);
+    assert_string_equal(suffix, ".vtm");
     assert_int_equal(eg2d_format_info(77, &kind, &suffix), EG2D_ERR_ARGUMENT);
     assert_non_null(strstr(eg2d_last_error(NULL), "format = 77"));
     assert_string_equal(eg2d_quality_cell_field(EG2D_QUALITY_MIN_AREA), "area");

@@ -38,6 +38,7 @@ static const struct { const char *name; int format; } kFiles[] = {
     {"report.txt", EG2D_FORMAT_REPORT},
     {"report.json", EG2D_FORMAT_REPORT_JSON},
     {"case", EG2D_FORMAT_OPENFOAM},
+    {"grid.vtm", EG2D_FORMAT_VTM},
 };
 /* The OpenFOAM case's files (eg2d.h). */
 static const char *const kCaseFiles[] = {

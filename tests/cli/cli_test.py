@@ -1720,6 +1720,19 @@ class Channel(unittest.TestCase):
                     self.assertIn("Mesh OK.", out)
                     self.assertIn("Total volume = 4.", out)
 
+    def test_vtk_multiblock_of_each_level(self):
+        """vtm: each level's NAME.vtm with its block file in NAME/, staged and put in place with it."""
+        with tempfile.TemporaryDirectory() as d:
+            self.channel(d, *self.STRAIGHT, "--size", "129x65", "--first-cell", "1e-3", "--levels", "2", "--format", "vtm")
+            for ni, nj in ((129, 65), (65, 33)):
+                name = f"channel-{ni}x{nj}"
+                self.assertEqual(os.listdir(os.path.join(d, name)), [name + "_0.vts"])
+                with open(os.path.join(d, name + ".vtm")) as f:
+                    self.assertIn(f'<DataSet index="0" name="block0" file="{name}/{name}_0.vts"/>', f.read())
+                with open(os.path.join(d, name, name + "_0.vts")) as f:
+                    self.assertIn(f'WholeExtent="0 {ni - 1} 0 {nj - 1} 0 0"', f.read())
+            self.assertFalse([n for n in os.listdir(d) if n.startswith(".eg2d-set-")])  # no stage left
+
     def check_su2_meshio(self, path, ni, nj):
         """meshio reads PATH (where installed): ni nj points, the quadrilaterals, every boundary edge once."""
         try:
@@ -2238,6 +2251,25 @@ class BlockSets(unittest.TestCase):
                 self.assertEqual(int(re.search(r"^\s*cells:\s+(\d+)", log, re.M).group(1)), self.CELLS)
                 table = {k: int(v) for k, v in re.findall(r"^\s{4}(\w+)\s+(\d+)\s+\d+\s+ok", log, re.M)}
                 self.assertEqual(table, dict(self.PATCHES, frontAndBack=2 * self.CELLS))
+
+    def test_step_as_vtk_multiblock(self):
+        # vtm: the set's .vtm and its block directory, staged and put in place together
+        with tempfile.TemporaryDirectory() as d:
+            path = case_from_example(d, self.STEP, ('formats = ["su2", "openfoam", "vts", "svg"]', 'formats = ["vtm"]'))
+            out, name = os.path.join(d, "out"), "case"  # named by the case file
+            for _ in range(2):  # again over the first: the block directory is there
+                code, stdout, stderr = run("run", path, "-o", out)
+                self.assertEqual(code, 0, stdout + stderr)
+                self.assertEqual(sorted(os.listdir(out)), [name, name + ".vtm"])  # no stage left
+                files = [f"{name}_{k}.vts" for k in range(3)]
+                self.assertEqual(sorted(os.listdir(os.path.join(out, name))), files)
+                for f in files:
+                    self.assertIn("wrote " + os.path.join(out, name, f), stdout)
+                with open(os.path.join(out, name + ".vtm")) as f:
+                    text = f.read()
+                self.assertEqual(re.findall(r'file="([^"]+)"', text), [name + "/" + f for f in files])
+            with open(os.path.join(out, name, files[2])) as f:
+                self.assertIn('WholeExtent="0 80 0 16 0 0"', f.read())
 
     def test_demo_runs_the_step(self):
         with tempfile.TemporaryDirectory() as d:

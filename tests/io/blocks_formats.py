@@ -17,7 +17,15 @@ and a pair of blocks one turned by 90 degrees; write_block_samples.c), then:
   CGNS: cgnscheck reports no error (it checks each 1-to-1 transform against
     its ranges) and `cgnscheck -v` lists a zone a block, the boundary
     conditions less the joined sides, and each join from both zones with
-    its transform ([1,2] on the step, [2,-1] and [-2,1] on the turned pair).
+    its transform ([1,2] on the step, [2,-1] and [-2,1] on the turned pair);
+  VTK multiblock: VTK's vtkXMLMultiBlockDataReader reads step.vtm as three
+    structured blocks "block0".."block2" of the blocks' sizes, every point
+    the block's node (OUTDIR/step_nodes.txt, eg2d_get_coordinates) exactly,
+    z = 0, the cell data of the vts format; each block file byte for byte
+    the block's grid as eg2d_write writes a .vts, laid out as VTK's writer
+    lays it out (step/step_K.vts); the joined nodes of neighbouring blocks
+    the same points (block 0's IMAX and block 1's IMIN, block 1's JMIN and
+    block 2's JMAX); one.vtm (a grid alone) one block, block 0.
 The counts come from the blocks' sizes (OUTDIR/step.txt)."""
 import os
 import re
@@ -104,7 +112,65 @@ def main():
           f"plot3d: checkMesh \"Mesh OK.\", one region, {cells} cells, {faces} boundary faces (the joins merged)")
     if with_cgns and cgnscheck:
         check_cgns(out, cgnscheck)
+    check_vtm(out)
     return 1 if failures else 0
+
+
+def read_nodes(path):
+    """Each block's nodes as an (nj, ni, 2) array, i fastest."""
+    values = np.loadtxt(path)
+    blocks, k = [], 0
+    while k < len(values):
+        ni, nj = int(values[k][0]), int(values[k][1])
+        blocks.append(values[k + 1:k + 1 + ni * nj].reshape(nj, ni, 2))
+        k += 1 + ni * nj
+    return blocks
+
+
+def check_vtm(out):
+    import filecmp
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+    nodes = read_nodes(os.path.join(out, "step_nodes.txt"))
+
+    def read(name, want):
+        reader = vtk.vtkXMLMultiBlockDataReader()
+        reader.SetFileName(os.path.join(out, name))
+        reader.Update()
+        data = reader.GetOutput()
+        n = data.GetNumberOfBlocks()
+        check(n == len(want), f"vtm {name}: vtkXMLMultiBlockDataReader reads {n} blocks == {len(want)}")
+        points = []
+        for k in range(min(n, len(want))):
+            grid, node = data.GetBlock(k), want[k]
+            nj, ni = node.shape[:2]
+            label = data.GetMetaData(k).Get(vtk.vtkCompositeDataSet.NAME())
+            check(grid is not None and grid.IsA("vtkStructuredGrid") and label == f"block{k}"
+                  and tuple(grid.GetDimensions()) == (ni, nj, 1),
+                  f"vtm {name}: block {k} \"{label}\" a StructuredGrid of "
+                  f"{tuple(grid.GetDimensions()) if grid else None} == {(ni, nj, 1)} points")
+            p = vtk_to_numpy(grid.GetPoints().GetData()).reshape(nj, ni, 3)
+            check(np.array_equal(p[:, :, :2], node) and not p[:, :, 2].any(),
+                  f"vtm {name}: block {k}'s {ni * nj} points are its nodes exactly "
+                  f"(largest difference {np.abs(p[:, :, :2] - node).max():.3g}), z = 0")
+            cells = grid.GetCellData()
+            sizes = {cells.GetArrayName(a): cells.GetArray(a).GetNumberOfTuples() for a in range(cells.GetNumberOfArrays())}
+            check(sizes and set(sizes.values()) == {(ni - 1) * (nj - 1)},
+                  f"vtm {name}: block {k} has {len(sizes)} cell arrays of {(ni - 1) * (nj - 1)} cells")
+            points.append(p[:, :, :2])
+        return points
+
+    blocks = read("step.vtm", nodes)
+    for k in range(len(nodes)):
+        same = filecmp.cmp(os.path.join(out, "step", f"step_{k}.vts"), os.path.join(out, f"step-{k}.vts"), shallow=False)
+        check(same, f"vtm step: step/step_{k}.vts is block {k} as eg2d_write writes it (step-{k}.vts)")
+    if len(blocks) == 3:
+        for what, a, b in [("block 0's IMAX and block 1's IMIN", blocks[0][:, -1], blocks[1][:, 0]),
+                           ("block 1's JMIN and block 2's JMAX", blocks[1][0, :], blocks[2][-1, :])]:
+            check(a.shape == b.shape and np.array_equal(a, b),
+                  f"vtm step: the {len(a)} joined nodes of {what} are the same points "
+                  f"(largest difference {np.abs(a - b).max() if a.shape == b.shape else '?'})")
+    read("one.vtm", nodes[:1])
 
 
 def check_cgns(out, cgnscheck):

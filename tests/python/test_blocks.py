@@ -55,6 +55,9 @@ def test_set_is_the_single_block(tmp_path):
         text = path.read_text()
         assert "NELEM= %d" % ((NI - 1) * (NJ - 1)) in text
         assert "NPOIN= %d" % (NI * NJ) in text  # the joined nodes once
+        blocks.write(tmp_path / "set.vtm", eg2d.FORMAT_VTM)  # VTK multiblock: a .vts a block in set/
+        assert sorted(os.listdir(tmp_path / "set")) == ["set_0.vts", "set_1.vts"]
+        assert 'file="set/set_1.vts"' in (tmp_path / "set.vtm").read_text()
     assert blocks.closed
     with pytest.raises(eg2d.StateError):
         blocks.solve()

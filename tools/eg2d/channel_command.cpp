@@ -58,7 +58,7 @@ const char *const channel_help =
     "  --levels       N nested grids, each coarser one every other node of the next: NI-1\n"
     "                 and NJ-1 must be divisible by 2^(N-1) (default 1)\n"
     "  --format       a comma list as eg2d airfoil's (plot3d, plot3d-ascii, cgns, su2,\n"
-    "                 openfoam: a case directory, vts, gmv, matlab, plot3d3d, and the\n"
+    "                 openfoam: a case directory, vts, vtm, gmv, matlab, plot3d3d, and the\n"
     "                 pictures svg and png: the domain and the lower wall's inlet corner);\n"
     "                 default plot3d. A report (text and JSON) is always written\n"
     "  -o DIR         the output directory (default .; created if missing), written as one\n"

@@ -32,7 +32,7 @@ const std::vector<Feature> &formats();        // [output] formats
 const std::vector<Feature> &cell_metrics();   // [output] svg_quality
 const std::vector<Feature> &geometry();       // curves and distributions on sides
 const std::vector<Feature> &distributions();  // a side's distribution kind
-const std::vector<Feature> &set_formats();    // the formats that hold a set of blocks in one file
+const std::vector<Feature> &set_formats();    // the formats that hold a set of blocks (eg2d_blocks_write)
 const std::vector<Feature> &systems();
 const std::vector<Feature> &topologies();
 const std::vector<Feature> &initializers();

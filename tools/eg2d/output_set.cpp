@@ -135,10 +135,41 @@ void OutputSet::remove_made() {
 
 std::string OutputSet::staged(const std::string &name) const { return stage_ + "/" + name; }
 
+namespace {
+// The names in a directory (the stage's top level).
+std::set<std::string> names_in(const std::string &dir) {
+    std::set<std::string> names;
+    std::error_code ignored;
+    for (const auto &e : std::filesystem::directory_iterator(dir, ignored)) names.insert(e.path().filename().string());
+    return names;
+}
+
+// Moves a staged file, or a staged directory's files (merged into the
+// directory at `to`, made where missing), into place; appends the files.
+void move_into_place(const std::string &from, const std::string &to, std::vector<std::string> &written) {
+    struct stat st;
+    if (lstat(from.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+        struct stat there;
+        if (mkdir(to.c_str(), 0777) != 0 && !(errno == EEXIST && stat(to.c_str(), &there) == 0 && S_ISDIR(there.st_mode)))
+            throw Failure(EXIT_IO, to + ": cannot make the directory: " +
+                                       (errno == EEXIST ? "a file that is not a directory is in the way" : std::strerror(errno)));
+        for (const std::string &n : names_in(from)) move_into_place(from + "/" + n, to + "/" + n, written);
+        return;
+    }
+    if (std::rename(from.c_str(), to.c_str()) != 0)
+        throw Failure(EXIT_IO, to + ": cannot move the written file into place: " + std::strerror(errno));
+    written.push_back(to);
+}
+}  // namespace
+
 void OutputSet::add(const std::string &name, bool directory, Writer write) {
     stop_if_interrupted();
+    const std::set<std::string> before = names_in(stage_);
     write(staged(name), false);
-    entries_.push_back({name, directory, std::move(write)});
+    std::vector<std::string> companions;
+    for (const std::string &n : names_in(stage_))
+        if (n != name && !before.count(n)) companions.push_back(n);
+    entries_.push_back({name, directory, std::move(write), std::move(companions)});
 }
 
 void OutputSet::add_text(const std::string &name, const std::string &text) {
@@ -171,12 +202,13 @@ std::vector<std::string> OutputSet::commit() {
         const std::string path = dir_ + "/" + e.name, from = staged(e.name);
         struct stat st;
         if (lstat(path.c_str(), &st) == 0) {
-            if (written_in_place(e.directory, st)) continue;
+            if (written_in_place(e.directory, st)) continue;  // its writer wrote its companions too
             if (S_ISREG(st.st_mode)) {  // the file replaced keeps its permission bits (and owner, where permitted)
                 chmod(from.c_str(), st.st_mode & 07777);
                 if (chown(from.c_str(), st.st_uid, st.st_gid) != 0) {}
             }
         }
+        for (const std::string &c : e.companions) move_into_place(staged(c), dir_ + "/" + c, written);
         if (std::rename(from.c_str(), path.c_str()) != 0)
             throw Failure(EXIT_IO, path + ": cannot move the written file into place: " + std::strerror(errno));
         written.push_back(path);

@@ -55,7 +55,9 @@ public:
     OutputSet &operator=(const OutputSet &) = delete;
 
     // Writes NAME (a file, or a case directory) into the stage now; stops
-    // with the signal's Failure when SIGINT or SIGTERM has arrived.
+    // with the signal's Failure when SIGINT or SIGTERM has arrived. What
+    // else the writer put in the stage beside NAME (a VTK multiblock's block
+    // directory) goes into place with it, file by file, before NAME.
     void add(const std::string &name, bool directory, Writer write);
     // A file the command writes itself, its whole text.
     void add_text(const std::string &name, const std::string &text);
@@ -72,6 +74,7 @@ private:
         std::string name;
         bool directory;
         Writer write;
+        std::vector<std::string> companions;  // written beside NAME by its writer
     };
     std::string dir_, stage_;
     std::vector<std::string> made_;

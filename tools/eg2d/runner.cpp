@@ -266,7 +266,7 @@ void check_set(eg2d_blocks *set, int status, const Location &at, const std::stri
 }
 
 // The set's files: the formats the library writes a set in (its list
-// EG2D_LIST_SET_FORMATS: one mesh, or a zone a block; eg2d_blocks_write,
+// EG2D_LIST_SET_FORMATS: one mesh, a zone a block, or a VTK multiblock; eg2d_blocks_write,
 // NAME.su2, NAME_foam, NAME.cgns, ...), every other library format one file
 // per block (eg2d_write, NAME-BLOCK.vts, ...), the pictures one picture of
 // the set. In the order of [output] formats, blocks in order.

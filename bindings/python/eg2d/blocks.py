@@ -78,5 +78,5 @@ class Blocks(Handle):
         return at.value, near.value
 
     def write(self, path, format):
-        """Writes the set to path as FORMAT_* (| PLOT3D_* flags): one mesh or a zone a block."""
+        """Writes the set to path as FORMAT_* (| PLOT3D_* flags): one mesh, a zone a block, or (FORMAT_VTM) a .vts a block named by the .vtm."""
         self._check(lib.eg2d_blocks_write(self._handle(), os.fsencode(path), int(format)))
