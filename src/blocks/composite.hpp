@@ -140,6 +140,10 @@ public:
     // (the node's equation is affine in them: solved from three of its
     // evaluations). Winslow's system; before the solver's levels are built.
     void hold_spacing(System system, bool exact);
+    // Each block's controls its static terms alone again.
+    void drop_layer_controls() {
+        for (Block &blk : blocks_) blk.controls = blk.given;
+    }
     // Cells whose signed area (shoelace) is zero or of the other sign than
     // most of its block's.
     long folded_cells() const;

@@ -205,6 +205,7 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
     const System system = set.block(0)->system();
     Composite c = Composite::of(set);
     const SetWallLayer layer(set, c);
+    bool made = !layer.empty();  // the layer's passes ran (made false by a fallback)
     run = SetRun{};
     run.unknowns = c.unknowns();
     // What the set's run is, on every block's eg2d_get_run_info and _event.
@@ -234,19 +235,38 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
         }
         const std::string sides = layer.kept_sides(c);
         if (!sides.empty()) report.note(sides);
+        c.save();
+        const long before = run.iterations;
         layer.respace(c, true);
         c.hold_spacing(system, false);
         pass.prepare(c);
         // Only the shape of the lines is taken from this pass (to the
         // single block's kShapeTolerance): the second holds the grid it
-        // leaves exactly.
-        pass.converge(c, kShapeTolerance);
-    } else {
-        pass.converge(c);
+        // leaves exactly. Where it diverges (boundary sides far from the
+        // walls' heights shear the lines beside them) the set is solved
+        // without the layer, said.
+        try {
+            pass.converge(c, kShapeTolerance);
+        } catch (const Error &e) {
+            if (e.failure() != Failure::Diverged) throw;
+            c.restore();
+            c.drop_layer_controls();
+            pass.prepare(c);
+            report.note(format("wall layer (graded, set of blocks): not made: on its lines' controls the set "
+                               "diverged in %ld iteration(s) (residual %.3g); the grid has no wall layer (space "
+                               "the sides that meet the walls for their heights)", run.iterations - before,
+                               run.residual));
+            made = false;
+        }
     }
-    if (!layer.empty()) {
+    if (!made) pass.converge(c);  // no layer, or its fallback
+    if (made) {
         // The second pass: the first cells back to their heights where the
-        // solve made them drift, the grid then held exactly.
+        // solve made them drift, the grid then held exactly. Where that
+        // diverges (the exact controls of a grid turned near a corner are
+        // too large for the smoother) the first pass's grid stays, said.
+        c.save();
+        const long before = run.iterations;
         layer.respace(c, false);
         layer.turn_to_normals(c);
         c.hold_spacing(system, true);
@@ -255,7 +275,19 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
             report.note(format("%s: %ld control value(s) of its coarse levels clipped to %g (the wall layer's "
                                "stretching doubles with each level)", set.block(0)->solver_name(), pass.clipped(),
                                kMaxCoarseStretching));
-        pass.converge(c);
+        try {
+            pass.converge(c);
+        } catch (const Error &e) {
+            if (e.failure() != Failure::Diverged) throw;
+            c.restore();
+            c.hold_spacing(system, false);
+            pass.prepare(c);
+            report.note(format("wall layer (graded, set of blocks): held exactly, the set diverged in %ld "
+                               "iteration(s) (residual %.3g); the grid is the one on the lines' one-dimensional "
+                               "controls instead, its first cells as the figures below give them",
+                               run.iterations - before, run.residual));
+            pass.converge(c);
+        }
         run.layer = layer.measure(c);
         report.note(format("wall layer (graded, set of blocks): %d line(s) graded from the walls across the blocks, "
                            "first cells within %.2g%% of their heights, growth at most %.4g within %d cells of a wall%s",

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <tuple>
 
 #include "base/error.hpp"
@@ -14,6 +15,11 @@
 namespace eg2d {
 
 namespace {
+
+// Nodes along a wall over which its lines' scale and turn fade out toward
+// an end whose own line is not graded (the single block's corner blend,
+// graded_layer.cpp's kCornerBlend, is 8 too).
+constexpr int kTurnTaper = 8;
 
 // A boundary line's first cell off a wall more than this factor from the
 // wall's height is said (the single block's corner_notes use 2 too).
@@ -110,14 +116,9 @@ SetWallLayer::SetWallLayer(const BlockSet &set, const Composite &c) {
     }
     // One step along a line: within the block, or across the join of the
     // side it leaves by, into the other block's line off that side.
-    auto step = [&](Walker &w) {
-        const int ni = ni_[static_cast<std::size_t>(w.b)], nj = nj_[static_cast<std::size_t>(w.b)];
-        const int i = w.i + w.di, j = w.j + w.dj;
-        if (i >= 0 && j >= 0 && i < ni && j < nj) {
-            w.i = i;
-            w.j = j;
-            return true;
-        }
+    // Across the join of the side it leaves by, into the other block's line
+    // off that side.
+    auto cross = [&](Walker &w) {
         const Side s = exit_side(w);
         const int p = s == Side::JMin || s == Side::JMax ? w.i : w.j;
         const auto it = across.find({w.b, static_cast<int>(s), p});
@@ -128,6 +129,39 @@ SetWallLayer::SetWallLayer(const BlockSet &set, const Composite &c) {
         const NodeIJ in = side_ij(ni_[static_cast<std::size_t>(b)], nj_[static_cast<std::size_t>(b)], t, std::get<2>(it->second), 1);
         w = Walker{b, in.i, in.j, in.i - at.i, in.j - at.j};
         return true;
+    };
+    auto inside = [&](int b, int i, int j) {
+        return i >= 0 && j >= 0 && i < ni_[static_cast<std::size_t>(b)] && j < nj_[static_cast<std::size_t>(b)];
+    };
+    // One step along a line: within the block, across the join of the side
+    // it leaves by, or, where that side is not joined there, on in another
+    // block that has the node and the node before it on one line (at a
+    // step's corner the join's row beyond it carries on the upstream floor,
+    // whichever block's row the walk came along).
+    auto step = [&](Walker &w) {
+        if (inside(w.b, w.i + w.di, w.j + w.dj)) {
+            w.i += w.di;
+            w.j += w.dj;
+            return true;
+        }
+        if (cross(w)) return true;
+        const int here = id(w.b, w.i, w.j), before = id(w.b, w.i - w.di, w.j - w.dj);
+        for (const NodeRef &n : copies_[static_cast<std::size_t>(here)]) {
+            if (n.b == w.b) continue;
+            for (const NodeIJ d : {NodeIJ{1, 0}, NodeIJ{-1, 0}, NodeIJ{0, 1}, NodeIJ{0, -1}}) {
+                if (!inside(n.b, n.i - d.i, n.j - d.j) || id(n.b, n.i - d.i, n.j - d.j) != before) continue;
+                Walker v{n.b, n.i, n.j, d.i, d.j};
+                if (inside(v.b, v.i + v.di, v.j + v.dj)) {
+                    v.i += v.di;
+                    v.j += v.dj;
+                } else if (!cross(v)) {
+                    continue;
+                }
+                w = v;
+                return true;
+            }
+        }
+        return false;
     };
     // The set's lines: from each block line not yet walked, back to the
     // line's end, then forward to its other end. A line along a joined
@@ -168,7 +202,7 @@ SetWallLayer::SetWallLayer(const BlockSet &set, const Composite &c) {
 // The first cell asked where a line leaves node `at` toward node `next`:
 // the least height of a wall side through `at` whose block's line off the
 // side is that line (0: none).
-double SetWallLayer::height_leaving(const Composite &c, int at, int next, Vec2 &normal) const {
+double SetWallLayer::height_leaving(const Composite &c, int at, int next, WallAt &wall) const {
     double h = 0.0;
     for (const NodeRef &n : copies_[static_cast<std::size_t>(at)]) {
         const std::size_t b = static_cast<std::size_t>(n.b);
@@ -193,8 +227,9 @@ double SetWallLayer::height_leaving(const Composite &c, int at, int next, Vec2 &
             const Vec2 a = c.point(n.b, lo.i, lo.j), z = c.point(n.b, hi.i, hi.j), o = c.point(n.b, n.i, n.j);
             const Vec2 inward = c.point(n.b, in.i, in.j);
             const double tx = z.x - a.x, ty = z.y - a.y, t = std::hypot(tx, ty);
-            normal = Vec2{-ty / t, tx / t};
+            Vec2 normal{-ty / t, tx / t};
             if (normal.x * (inward.x - o.x) + normal.y * (inward.y - o.y) < 0.0) normal = Vec2{-normal.x, -normal.y};
+            wall = WallAt{n.b, side, p, normal};
         }
     }
     return h;
@@ -206,16 +241,32 @@ std::vector<SetWallLayer::Stretch> SetWallLayer::stretches(const Composite &c, b
         const NodeRef &n = copies_[static_cast<std::size_t>(id)][0];
         return !c.moves(n.b, n.i, n.j, vertices);
     };
+    // A line also ends where it crosses a join (a joined node between two
+    // that are not): each block grades its own stretch, as blockMesh's
+    // gradings do. Graded through, a pitzDaily column moved its node on the
+    // join under the step's corner 7.5 mm (its floor's first cell scaled by
+    // 3), and the join's row folded against the corner, which is held.
+    auto joined = [&](int id) { return copies_[static_cast<std::size_t>(id)].size() > 1; };
+    auto ends = [&](const std::vector<int> &line, std::size_t k) {
+        if (held(line[k])) return true;
+        return k > 0 && k + 1 < line.size() && joined(line[k]) && (!joined(line[k - 1]) || !joined(line[k + 1]));
+    };
     for (const std::vector<int> &line : lines_) {
         std::size_t a = 0;
-        while (a < line.size() && !held(line[a])) ++a;
+        while (a < line.size() && !ends(line, a)) ++a;
         for (std::size_t z = a + 1; z < line.size(); ++z) {
-            if (!held(line[z])) continue;
+            if (!ends(line, z)) continue;
             if (z - a >= 2) {
                 Stretch s;
                 s.ids.assign(line.begin() + static_cast<std::ptrdiff_t>(a), line.begin() + static_cast<std::ptrdiff_t>(z) + 1);
-                s.first = height_leaving(c, line[a], line[a + 1], s.first_normal);
-                s.last = height_leaving(c, line[z], line[z - 1], s.last_normal);
+                // A stretch that carries on a held line through its held
+                // end (the join's row beyond a step's corner, after the
+                // upstream floor) leaves no wall there: its cells follow
+                // the blocks' sides. Graded and turned off the step's face,
+                // that row bent against the rows above it, which leave no
+                // wall (pitzDaily: controls up to 4.7, and the run diverged).
+                s.first = a > 0 && held(line[a - 1]) ? 0.0 : height_leaving(c, line[a], line[a + 1], s.first_wall);
+                s.last = z + 1 < line.size() && held(line[z + 1]) ? 0.0 : height_leaving(c, line[z], line[z - 1], s.last_wall);
                 if (s.first > 0.0 || s.last > 0.0) out.push_back(std::move(s));
             }
             a = z;
@@ -225,7 +276,9 @@ std::vector<SetWallLayer::Stretch> SetWallLayer::stretches(const Composite &c, b
 }
 
 void SetWallLayer::respace(Composite &c, bool vertices) const {
-    for (const Stretch &s : stretches(c, vertices)) {
+    const std::vector<Stretch> all = stretches(c, vertices);
+    const Graded graded = graded_starts(all);
+    for (const Stretch &s : all) {
         std::vector<Vec2> points;
         for (int id : s.ids) {
             const NodeRef &n = copies_[static_cast<std::size_t>(id)][0];
@@ -242,8 +295,8 @@ void SetWallLayer::respace(Composite &c, bool vertices) const {
         // spaced otherwise sheared the cells at a step's face by 80
         // degrees).
         const std::vector<double> lo = fade(cells, s.first > 0.0, false), hi = fade(cells, false, s.last > 0.0);
-        const double a = s.first > 0.0 ? std::log(s.first / mixed.front()) : 0.0;
-        const double z = s.last > 0.0 ? std::log(s.last / mixed.back()) : 0.0;
+        const double a = s.first > 0.0 ? taper(c, s.first_wall, graded) * std::log(s.first / mixed.front()) : 0.0;
+        const double z = s.last > 0.0 ? taper(c, s.last_wall, graded) * std::log(s.last / mixed.back()) : 0.0;
         std::vector<double> share(mixed.size());
         for (std::size_t q = 0; q < mixed.size(); ++q) {
             mixed[q] *= std::exp(lo[q] * a + hi[q] * z);
@@ -260,8 +313,40 @@ void SetWallLayer::respace(Composite &c, bool vertices) const {
     c.sync();
 }
 
+SetWallLayer::Graded SetWallLayer::graded_starts(const std::vector<Stretch> &all) {
+    Graded g;
+    for (const Stretch &s : all) {
+        if (s.first > 0.0) g.insert({s.ids[0], s.ids[1]});
+        if (s.last > 0.0) g.insert({s.ids.back(), s.ids[s.ids.size() - 2]});
+    }
+    return g;
+}
+
+// Toward an end of its wall whose own line the solve moves but is not
+// graded (the join's row that carries on a floor past a step's corner), a line is
+// scaled and turned less: fully from kTurnTaper nodes off, a smoothstep
+// down to not at all at the end. Scaled and turned alike up to it, the
+// step's face's rows sheared against the join's row above them (pitzDaily:
+// controls of 1.6 along it, and multigrid diverged).
+double SetWallLayer::taper(const Composite &c, const WallAt &w, const Graded &graded) const {
+    const std::size_t b = static_cast<std::size_t>(w.b);
+    const int length = w.side == Side::JMin || w.side == Side::JMax ? ni_[b] : nj_[b];
+    double f = 1.0;
+    for (int e : {0, length - 1}) {
+        const NodeIJ on = side_ij(ni_[b], nj_[b], w.side, e), in = side_ij(ni_[b], nj_[b], w.side, e, 1);
+        // (a held side is no line the solve moves: kept_sides says how far
+        // it is from the layer)
+        if (graded.count({id(w.b, on.i, on.j), id(w.b, in.i, in.j)}) || !c.moves(w.b, in.i, in.j, true)) continue;
+        const double t = std::min(1.0, std::abs(w.p - e) / static_cast<double>(kTurnTaper));
+        f = std::min(f, t * t * (3.0 - 2.0 * t));
+    }
+    return f;
+}
+
 void SetWallLayer::turn_to_normals(Composite &c) const {
-    for (const Stretch &s : stretches(c, false)) {
+    const std::vector<Stretch> all = stretches(c, false);
+    const Graded graded = graded_starts(all);
+    for (const Stretch &s : all) {
         const int cells = static_cast<int>(s.ids.size()) - 1;
         auto at = [&](std::size_t k) {
             const NodeRef &n = copies_[static_cast<std::size_t>(s.ids[k])][0];
@@ -274,12 +359,14 @@ void SetWallLayer::turn_to_normals(Composite &c) const {
         for (int end = 0; end < 2; ++end) {
             const double h = end == 0 ? s.first : s.last;
             if (!(h > 0.0)) continue;
-            const Vec2 n = end == 0 ? s.first_normal : s.last_normal;
+            const WallAt &wall = end == 0 ? s.first_wall : s.last_wall;
+            const Vec2 n = wall.normal;
+            const double lateral = taper(c, wall, graded);
             const std::vector<double> w = fade(cells, end == 0, end == 1);
             const Vec2 o = end == 0 ? p.front() : p.back();
             for (int k = 1; k < cells; ++k) {
                 const std::size_t m = static_cast<std::size_t>(k);
-                const double share = end == 0 ? w[m] : w[m - 1], d = end == 0 ? arc[m] : arc.back() - arc[m];
+                const double share = lateral * (end == 0 ? w[m] : w[m - 1]), d = end == 0 ? arc[m] : arc.back() - arc[m];
                 if (share <= 0.0) continue;
                 q[m].x += share * (o.x + n.x * d - p[m].x);
                 q[m].y += share * (o.y + n.y * d - p[m].y);
@@ -303,8 +390,8 @@ std::string SetWallLayer::kept_sides(const Composite &c) const {
         for (int end = 0; end < 2; ++end) {
             const int at = end == 0 ? line.front() : line.back(), next = line[end == 0 ? 1 : line.size() - 2];
             if (!held(at) || !held(next)) continue;
-            Vec2 normal;
-            const double h = height_leaving(c, at, next, normal);
+            WallAt wall;
+            const double h = height_leaving(c, at, next, wall);
             if (!(h > 0.0)) continue;
             const NodeRef &a = copies_[static_cast<std::size_t>(at)][0], &b = copies_[static_cast<std::size_t>(next)][0];
             const Vec2 p = c.point(a.b, a.i, a.j), q = c.point(b.b, b.i, b.j);

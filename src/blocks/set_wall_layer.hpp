@@ -17,7 +17,9 @@
 // the single block's second step does (reshape_graded_layer).
 #pragma once
 #include <array>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "blocks/block_set.hpp"
@@ -57,13 +59,24 @@ private:
         int b, i, j;
     };
     // A stretch of a line between two nodes the solve holds, by node id.
+    // Where a line leaves a wall: node p of block b's side.
+    struct WallAt {
+        int b = 0;
+        Side side = Side::JMin;
+        int p = 0;
+        Vec2 normal;  // the wall's unit normal into the domain
+    };
     struct Stretch {
         std::vector<int> ids;
         double first = 0.0, last = 0.0;  // heights at its ends (0: no wall)
-        Vec2 first_normal, last_normal;  // the walls' unit normals into the domain there
+        WallAt first_wall, last_wall;
     };
     std::vector<Stretch> stretches(const Composite &c, bool vertices) const;
-    double height_leaving(const Composite &c, int id, int next, Vec2 &normal) const;
+    // The lines graded from a wall, by their first two nodes.
+    using Graded = std::set<std::pair<int, int>>;
+    static Graded graded_starts(const std::vector<Stretch> &all);
+    double taper(const Composite &c, const WallAt &w, const Graded &graded) const;
+    double height_leaving(const Composite &c, int id, int next, WallAt &wall) const;
     int id(int b, int i, int j) const {
         return ids_[static_cast<std::size_t>(b)][static_cast<std::size_t>(i) +
                                                   static_cast<std::size_t>(ni_[static_cast<std::size_t>(b)]) *

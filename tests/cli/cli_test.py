@@ -2329,16 +2329,19 @@ class BlockSets(unittest.TestCase):
         self.bad_at_line("wall_spacing = { bottom = 1e-3, left = 1e-3 }", 'wall_spacing = "1e-3"',
                          "key 'blocks[2].wall_spacing'")
 
-    # SWITCH ON when the library's sets take a wall control (issue 39, the graded
-    # wall layer on sets in src/blocks/): until then eg2d_blocks_check refuses
-    # it, "not available on a set of blocks yet", and this test would fail.
-    @unittest.skip("the set's wall control is not in the library yet (issue 39): remove this line when it is")
-    def test_block_wall_spacing_runs(self):
+    # A block's wall_spacing reaches the set's graded wall layer. The
+    # example's sides are not spaced for a first cell of 1e-3 (the floor's
+    # first cell off the step's face is 0.52): the run says so, says the
+    # layer could not be made on them, and still writes an unfolded grid.
+    def test_block_wall_spacing_on_unspaced_sides(self):
         with tempfile.TemporaryDirectory() as d:
             path = case_from_example(d, self.STEP, (self.LOWER, self.LOWER_WALLS))
             code, stdout, stderr = run("run", path, "-o", os.path.join(d, "out"))
             self.assertEqual(code, 0, stdout + stderr)
             self.assertIn("quality: 0 folded cells in the set", stdout)
+            self.assertIn("line(s) of the boundary leave a wall with a first cell more than 2 times off its height",
+                          stdout)
+            self.assertIn("wall layer (graded, set of blocks): not made", stdout)
 
     def test_join_of_different_node_counts(self):
         self.bad([('a = { block = "upstream", side = "right" }', 'a = { block = "upstream", side = "right", last = 30 }')], 3,

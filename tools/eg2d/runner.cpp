@@ -423,6 +423,7 @@ int run_block_set(const Case &c, const RunOptions &o) {
     if (status == EG2D_OK)
         std::printf("converged in %d iterations, residual %.3e, %d nodes solved for, %.2f s\n", iterations, residual,
                     unknowns, seconds);
+    print_what_ran(grids[0].get());  // every block describes the set's run
     if (status != EG2D_OK && status != EG2D_ERR_DIVERGED)
         std::printf("stopped after %d iterations, residual %.3e\n", iterations, residual);
     if (status != EG2D_OK)
