@@ -250,6 +250,17 @@ bool Composite::moves(int b, int i, int j, bool vertices) const {
     return false;
 }
 
+void Composite::hold_vertices(bool hold) {
+    for (Vertex &v : vertices_) {
+        v.fx = v.fy = 0.0;
+        if (!hold) continue;
+        double rx, ry;
+        vertex_equation(v, rx, ry);
+        v.fx = rx;
+        v.fy = ry;
+    }
+}
+
 void Composite::hold_spacing(System system, bool exact) {
     for (Block &blk : blocks_) {
         ControlFields f = blk.given;
@@ -288,6 +299,24 @@ void Composite::hold_spacing(System system, bool exact) {
         });
         blk.controls = std::move(f);
     }
+}
+
+double Composite::largest_skew() const {
+    double worst = 0.0;
+    for (const Block &blk : blocks_)
+        for (int j = 0; j + 1 < blk.nj; ++j)
+            for (int i = 0; i + 1 < blk.ni; ++i) {
+                const std::size_t k[4] = {blk.at(i, j), blk.at(i + 1, j), blk.at(i + 1, j + 1), blk.at(i, j + 1)};
+                for (int m = 0; m < 4; ++m) {
+                    const std::size_t o = k[m], a = k[(m + 1) % 4], b = k[(m + 3) % 4];
+                    const double ax = blk.x[a] - blk.x[o], ay = blk.y[a] - blk.y[o];
+                    const double bx = blk.x[b] - blk.x[o], by = blk.y[b] - blk.y[o];
+                    // the corner's angle, signed as the cell turns (a folded corner beyond 180)
+                    const double angle = std::atan2(ax * by - ay * bx, ax * bx + ay * by) * 180.0 / M_PI;
+                    worst = std::max(worst, std::fabs(std::fabs(angle) - 90.0));
+                }
+            }
+    return worst;
 }
 
 long Composite::folded_cells() const {

@@ -140,10 +140,19 @@ public:
     // (the node's equation is affine in them: solved from three of its
     // evaluations). Winslow's system; before the solver's levels are built.
     void hold_spacing(System system, bool exact);
-    // Each block's controls its static terms alone again.
+    // Each free vertex held where it is (its equation's right-hand side
+    // the mean of its neighbours less it, as the exact controls hold the
+    // nodes round it: without, a pitzDaily vertex re-spaced round pulled
+    // against them and the smoother diverged), or (false) at the mean again.
+    void hold_vertices(bool hold);
+    // Each block's controls its static terms alone again, the vertices at
+    // their neighbours' mean.
     void drop_layer_controls() {
         for (Block &blk : blocks_) blk.controls = blk.given;
+        hold_vertices(false);
     }
+    // The largest deviation of a cell's corner angle from 90 degrees.
+    double largest_skew() const;
     // Cells whose signed area (shoelace) is zero or of the other sign than
     // most of its block's.
     long folded_cells() const;

@@ -68,6 +68,10 @@ private:
     AutoRelaxation auto_;
 };
 
+// The wall layer's second pass re-spaces and turns the lines only while
+// that skews no cell by this many degrees more than the first pass's grid.
+constexpr double kReshapeSkew = 10.0;
+
 // The nested iteration's coarse levels are converged to this at most:
 // below it the next level's interpolation error dominates (solvers/nested.cpp).
 constexpr double kCoarseTolerance = 1e-7;
@@ -124,7 +128,7 @@ public:
                 fail(Failure::NotConverged, format("the set reached the iteration limit (%ld) at residual %.3g "
                                                    "(tolerance %.3g)", limit, run_.residual, s_.tolerance));
             }
-            if (multigrid() && run_.iterations == first && s_.mg_fmg != 0.0)
+            if (multigrid() && run_.iterations == 0 && s_.mg_fmg != 0.0)  // a cold start only
                 mg_[0].fmg(system_, c, static_cast<int>(s_.mg_cycle), static_cast<int>(s_.mg_pre_smooth),
                            static_cast<int>(s_.mg_post_smooth));
             else if (multigrid())
@@ -267,9 +271,22 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
         // too large for the smoother) the first pass's grid stays, said.
         c.save();
         const long before = run.iterations;
+        const double skew = c.largest_skew();
         layer.respace(c, false);
         layer.turn_to_normals(c);
+        // Re-spaced and turned where the lines the solve shaped differ
+        // sharply from one to the next (pitzDaily's rows off the step's
+        // face: 10.6 -> 80 degrees), the first pass's grid is held instead.
+        const double reshaped = c.largest_skew();
+        if (!(reshaped <= skew + kReshapeSkew)) {
+            c.restore();
+            report.note(format("wall layer (graded, set of blocks): its lines not re-spaced to the walls' heights "
+                               "after the first pass (that would skew a cell by %.3g degrees, the first pass's grid "
+                               "by %.3g): the first pass's grid is held, its first cells as the figures below give "
+                               "them", reshaped, skew));
+        }
         c.hold_spacing(system, true);
+        c.hold_vertices(true);
         pass.prepare(c);
         if (pass.clipped() > 0)
             report.note(format("%s: %ld control value(s) of its coarse levels clipped to %g (the wall layer's "
@@ -281,6 +298,7 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
             if (e.failure() != Failure::Diverged) throw;
             c.restore();
             c.hold_spacing(system, false);
+            c.hold_vertices(false);
             pass.prepare(c);
             report.note(format("wall layer (graded, set of blocks): held exactly, the set diverged in %ld "
                                "iteration(s) (residual %.3g); the grid is the one on the lines' one-dimensional "
