@@ -77,10 +77,6 @@ constexpr double kReshapeSkew = 10.0;
 constexpr double kCoarseTolerance = 1e-7;
 constexpr long kCoarseSweeps = 5000;
 
-}  // namespace
-
-namespace {
-
 // Iterates a composite to the tolerance with block 0's solver (one pass of
 // the run; the wall layer's set is solved twice: set_wall_layer.hpp).
 class SetPass {
@@ -196,10 +192,7 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
                                           "_NESTED) in this version", set.block(0)->solver_name()));
     // A block's own wall layer (its start re-spaced and its sides moved on
     // their own) is not the set's: with walls, the blocks start from TFI.
-    bool walls = false;
-    for (int b = 0; b < set.size(); ++b)
-        if (const Control *w = set.block(b)->controls().find(ControlKind::Orthogonality))
-            for (double h : w->wall_heights()) walls = walls || h > 0.0;
+    const bool walls = SetWallLayer::asks_walls(set);
     for (int b = 0; b < set.size(); ++b) {
         Generator &g = *set.block(b);
         const WallLayerShape &own = g.layer();
@@ -263,8 +256,9 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
             made = false;
         }
     }
-    if (!made) pass.converge(c);  // no layer, or its fallback
-    if (made) {
+    if (!made) {
+        pass.converge(c);  // no layer, or its fallback
+    } else {
         // The second pass: the first cells back to their heights where the
         // solve made them drift, the grid then held exactly. Where that
         // diverges (the exact controls of a grid turned near a corner are

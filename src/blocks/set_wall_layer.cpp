@@ -51,7 +51,20 @@ std::vector<double> fade(int cells, bool lo, bool hi) {
     return v;
 }
 
+// The first-cell heights block b asks of its sides (none: all -1).
+std::array<double, 4> block_heights(const BlockSet &set, int b) {
+    const Control *wall = set.block(b)->controls().find(ControlKind::Orthogonality);
+    return wall ? wall->wall_heights() : std::array<double, 4>{-1.0, -1.0, -1.0, -1.0};
+}
+
 }  // namespace
+
+bool SetWallLayer::asks_walls(const BlockSet &set) {
+    for (int b = 0; b < set.size(); ++b)
+        for (double h : block_heights(set, b))
+            if (h > 0.0) return true;
+    return false;
+}
 
 SetWallLayer::SetWallLayer(const BlockSet &set, const Composite &c) {
     const int blocks = c.size();
@@ -62,14 +75,11 @@ SetWallLayer::SetWallLayer(const BlockSet &set, const Composite &c) {
     // The walls: each block's heights over its sides' wall patches.
     heights_.resize(static_cast<std::size_t>(blocks));
     for (int b = 0; b < blocks; ++b) {
-        Generator *g = set.block(b);
-        const Control *wall = g->controls().find(ControlKind::Orthogonality);
-        if (!wall) continue;
-        const std::array<double, 4> h = wall->wall_heights();
+        const std::array<double, 4> h = block_heights(set, b);
         for (int s = 0; s < 4; ++s)
             if (h[static_cast<std::size_t>(s)] > 0.0) {
                 heights_[static_cast<std::size_t>(b)][static_cast<std::size_t>(s)] =
-                    wall_node_heights(g->grid(), static_cast<Side>(s), h);
+                    wall_node_heights(set.block(b)->grid(), static_cast<Side>(s), h);
                 ++walls_;
             }
     }

@@ -39,6 +39,8 @@ public:
     // a wall a height.
     SetWallLayer(const BlockSet &set, const Composite &c);
     bool empty() const { return walls_ == 0; }
+    // Whether some block of the set asks a wall a first-cell height.
+    static bool asks_walls(const BlockSet &set);
     // Every line with a wall end re-spaced along itself, every copy of a
     // node moved with it, c synced. `vertices`: whether the free vertices
     // move (the first pass) or end lines (the second).

@@ -2332,12 +2332,15 @@ class BlockSets(unittest.TestCase):
     # A block's wall_spacing reaches the set's graded wall layer. The
     # example's sides are not spaced for a first cell of 1e-3 (the floor's
     # first cell off the step's face is 0.52): the run says so, says the
-    # layer could not be made on them, and still writes an unfolded grid.
+    # layer could not be made on them, writes an unfolded grid and exits
+    # EXIT_GEOMETRY for the layer that grows too fast, as a single grid's run.
     def test_block_wall_spacing_on_unspaced_sides(self):
         with tempfile.TemporaryDirectory() as d:
             path = case_from_example(d, self.STEP, (self.LOWER, self.LOWER_WALLS))
             code, stdout, stderr = run("run", path, "-o", os.path.join(d, "out"))
-            self.assertEqual(code, 0, stdout + stderr)
+            self.assertEqual(code, 4, stdout + stderr)
+            self.assertIn("the wall layer at block lower bottom grows by", stderr)
+            self.assertTrue(os.listdir(os.path.join(d, "out")), "the files are written")
             self.assertIn("quality: 0 folded cells in the set", stdout)
             self.assertIn("line(s) of the boundary leave a wall with a first cell more than 2 times off its height",
                           stdout)

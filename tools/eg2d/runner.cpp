@@ -454,6 +454,12 @@ int run_block_set(const Case &c, const RunOptions &o) {
     eg2d_get_parameter(grids.front().get(), EG2D_PARAM_FOLD_CHECK, &fold_check);
     if (folded > 0 && fold_check != 0)
         throw Failure(EXIT_FOLDED, c.file + ": the set has " + fmt(folded) + " folded cells (no files written)");
+    // Each block's walls as a single grid's: a layer that grows too fast
+    // exits EXIT_GEOMETRY, the files written.
+    bool short_layer = false;
+    for (std::size_t k = 0; k < grids.size(); ++k)
+        short_layer = print_wall_layers(grids[k].get(), EG2D_TOPO_SINGLE, c.blocks[k].wall_spacings,
+                                        c.wall_growth_limit, "block " + c.blocks[k].name + " ") || short_layer;
 
     Progress signals(false, true);  // SIGINT and SIGTERM stop the set, which removes its stage
     if (c.svg_quality >= 0)
@@ -477,7 +483,7 @@ int run_block_set(const Case &c, const RunOptions &o) {
         }
     }
     for (const std::string &path : out.commit()) std::printf("wrote %s\n", path.c_str());
-    return EXIT_OK;
+    return short_layer ? EXIT_GEOMETRY : EXIT_OK;
 }
 
 }  // namespace
@@ -553,7 +559,7 @@ int run_case(const Case &c, const RunOptions &o) {
     print_quality(g, c.topology);
     if (status != EG2D_OK)
         throw Failure(exit_code_for_status(status), c.file + ": " + eg2d_last_error(g) + " (no files written)");
-    const bool short_layer = print_wall_layers(g, c);
+    const bool short_layer = print_wall_layers(g, c.topology, c.wall_spacings, c.wall_growth_limit);
     write_outputs(g, c, o, tool_texts(g, c, monitor.rows, tolerance));
     return short_layer ? EXIT_GEOMETRY : EXIT_OK;
 }

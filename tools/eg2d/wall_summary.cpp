@@ -38,10 +38,11 @@ bool print_wall_layer(const eg2d_grid *g, int side, const std::string &name, dou
     return true;
 }
 
-bool print_wall_layers(const eg2d_grid *g, const Case &c) {
+bool print_wall_layers(const eg2d_grid *g, int topology, const std::vector<WallSpacing> &walls, double limit,
+                       const std::string &prefix) {
     bool short_layer = false;
-    for (const WallSpacing &w : c.wall_spacings)
-        if (w.height > 0 && print_wall_layer(g, w.side, side_label(c.topology, w.side), w.height, c.wall_growth_limit))
+    for (const WallSpacing &w : walls)
+        if (w.height > 0 && print_wall_layer(g, w.side, prefix + side_label(topology, w.side), w.height, limit))
             short_layer = true;
     return short_layer;
 }

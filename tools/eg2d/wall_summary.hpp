@@ -5,6 +5,7 @@
 // exit with EXIT_GEOMETRY, the files written, as `eg2d airfoil` does.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "case_file.hpp"
 #include "eg2d.h"
@@ -16,7 +17,9 @@ namespace eg2dtool {
 // library says would do goes to stderr, "nj >= N" or "ni >= N").
 bool print_wall_layer(const eg2d_grid *g, int side, const std::string &name, double height, double limit);
 
-// Prints one line per wall side; true when some layer falls short.
-bool print_wall_layers(const eg2d_grid *g, const Case &c);
+// Prints one line per wall side of `walls` (a case's, or a block's of a
+// set: its name in `prefix`); true when some layer falls short.
+bool print_wall_layers(const eg2d_grid *g, int topology, const std::vector<WallSpacing> &walls, double limit,
+                       const std::string &prefix = "");
 
 }  // namespace eg2dtool
