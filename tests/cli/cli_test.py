@@ -2333,13 +2333,14 @@ class BlockSets(unittest.TestCase):
     # example's sides are not spaced for a first cell of 1e-3 (the floor's
     # first cell off the step's face is 0.52): the run says so, says the
     # layer could not be made on them, writes an unfolded grid and exits
-    # EXIT_GEOMETRY for the layer that grows too fast, as a single grid's run.
+    # EXIT_GEOMETRY for the layer that misses its first cell (a single
+    # grid's run does so for one that grows too fast).
     def test_block_wall_spacing_on_unspaced_sides(self):
         with tempfile.TemporaryDirectory() as d:
             path = case_from_example(d, self.STEP, (self.LOWER, self.LOWER_WALLS))
             code, stdout, stderr = run("run", path, "-o", os.path.join(d, "out"))
             self.assertEqual(code, 4, stdout + stderr)
-            self.assertIn("the wall layer at block lower bottom grows by", stderr)
+            self.assertIn("the wall layer at block lower bottom has a median first cell of 0.1308 where 0.001 was asked", stderr)
             self.assertTrue(os.listdir(os.path.join(d, "out")), "the files are written")
             self.assertIn("quality: 0 folded cells in the set", stdout)
             self.assertIn("line(s) of the boundary leave a wall with a first cell more than 2 times off its height",

@@ -338,6 +338,10 @@ std::string set_picture(const Case &c, const std::vector<GridPtr> &grids, bool p
 // A case of [[blocks]]: each block a single-block grid with the case's
 // system, solver and parameters, its own sides and patches; the set joins
 // and solves them (eg2d_blocks_*), block 0's settings driving it.
+// A set's wall layer may not be made (its run notes say why): a median
+// first cell this many times off the asked height exits EXIT_GEOMETRY too.
+constexpr double kSetFirstOff = 2.0;
+
 int run_block_set(const Case &c, const RunOptions &o) {
     std::vector<GridPtr> grids;
     for (const BlockSpec &b : c.blocks) {
@@ -459,7 +463,8 @@ int run_block_set(const Case &c, const RunOptions &o) {
     bool short_layer = false;
     for (std::size_t k = 0; k < grids.size(); ++k)
         short_layer = print_wall_layers(grids[k].get(), EG2D_TOPO_SINGLE, c.blocks[k].wall_spacings,
-                                        c.wall_growth_limit, "block " + c.blocks[k].name + " ") || short_layer;
+                                        c.wall_growth_limit, "block " + c.blocks[k].name + " ", kSetFirstOff) ||
+                      short_layer;
 
     Progress signals(false, true);  // SIGINT and SIGTERM stop the set, which removes its stage
     if (c.svg_quality >= 0)

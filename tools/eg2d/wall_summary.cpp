@@ -1,5 +1,6 @@
 #include "wall_summary.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -15,7 +16,8 @@ std::string side_label(int topology, int side) {
 }
 }  // namespace
 
-bool print_wall_layer(const eg2d_grid *g, int side, const std::string &name, double height, double limit) {
+bool print_wall_layer(const eg2d_grid *g, int side, const std::string &name, double height, double limit,
+                      double first_off) {
     auto figure = [&](int what) {
         double v = 0;
         eg2d_get_wall_layer(g, side, what, &v);
@@ -29,6 +31,12 @@ bool print_wall_layer(const eg2d_grid *g, int side, const std::string &name, dou
     std::printf("wall layer %s: first cell %.4e (median; %.4e to %.4e, asked %.4e), growth %.4f over %d cells, "
                 "angle %.3f deg\n", name.c_str(), figure(EG2D_WALL_FIRST_MEDIAN), figure(EG2D_WALL_FIRST_MIN),
                 figure(EG2D_WALL_FIRST_MAX), height, growth, EG2D_WALL_ROWS, figure(EG2D_WALL_ANGLE));
+    const double median = figure(EG2D_WALL_FIRST_MEDIAN);
+    if (first_off > 0.0 && !(std::max(median / height, height / median) <= first_off)) {
+        std::fprintf(stderr, "eg2d: the wall layer at %s has a median first cell of %.4g where %.4g was asked (more "
+                     "than %g times off; the files are written)\n", name.c_str(), median, height, first_off);
+        return true;
+    }
     if (growth <= limit) return false;
     const bool across_j = side == EG2D_SIDE_JMIN || side == EG2D_SIDE_JMAX;
     std::fprintf(stderr, "eg2d: the wall layer at %s grows by %.3f within %d cells, more than %g", name.c_str(), growth,
@@ -39,10 +47,11 @@ bool print_wall_layer(const eg2d_grid *g, int side, const std::string &name, dou
 }
 
 bool print_wall_layers(const eg2d_grid *g, int topology, const std::vector<WallSpacing> &walls, double limit,
-                       const std::string &prefix) {
+                       const std::string &prefix, double first_off) {
     bool short_layer = false;
     for (const WallSpacing &w : walls)
-        if (w.height > 0 && print_wall_layer(g, w.side, prefix + side_label(topology, w.side), w.height, limit))
+        if (w.height > 0 &&
+            print_wall_layer(g, w.side, prefix + side_label(topology, w.side), w.height, limit, first_off))
             short_layer = true;
     return short_layer;
 }

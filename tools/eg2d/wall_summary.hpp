@@ -14,12 +14,15 @@ namespace eg2dtool {
 
 // Prints the line of one wall side, named `name`, asked a first cell `height`;
 // true when its layer grows by more than `limit` (then the node count the
-// library says would do goes to stderr, "nj >= N" or "ni >= N").
-bool print_wall_layer(const eg2d_grid *g, int side, const std::string &name, double height, double limit);
+// library says would do goes to stderr, "nj >= N" or "ni >= N"), or, with
+// `first_off` > 0, when its median first cell is more than that factor off
+// the height (a set's layer that could not be made: its run notes say why).
+bool print_wall_layer(const eg2d_grid *g, int side, const std::string &name, double height, double limit,
+                      double first_off = 0.0);
 
 // Prints one line per wall side of `walls` (a case's, or a block's of a
 // set: its name in `prefix`); true when some layer falls short.
 bool print_wall_layers(const eg2d_grid *g, int topology, const std::vector<WallSpacing> &walls, double limit,
-                       const std::string &prefix = "");
+                       const std::string &prefix = "", double first_off = 0.0);
 
 }  // namespace eg2dtool
