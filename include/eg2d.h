@@ -36,7 +36,8 @@
  *  6) System, controls and walls:
  *     eg2d_set_system, eg2d_add_line_source, eg2d_add_point_source,
  *     eg2d_clear_sources, eg2d_set_source_arrays, eg2d_set_orthogonality,
- *     eg2d_set_wall_spacing, eg2d_set_parameter_grid, eg2d_clustering_map,
+ *     eg2d_set_wall_spacing, eg2d_set_wall_spacing_nodes,
+ *     eg2d_set_parameter_grid, eg2d_clustering_map,
  *     eg2d_tensor_parameter_grid, eg2d_set_weight, eg2d_get_controls.
  *  7) Solvers and the run:
  *     eg2d_set_solver, eg2d_get_solver, eg2d_solver_name,
@@ -775,6 +776,21 @@ EG2D_API int eg2d_set_orthogonality(eg2d_grid *grid, int method);
  * afterwards turns it off, and EG2D_ORTHO_MIDDLECOFF_THOMAS set before is
  * kept (the heights wait for EG2D_ORTHO_WALL). */
 EG2D_API int eg2d_set_wall_spacing(eg2d_grid *grid, int side, double height);
+/* Makes `side` a wall whose first-cell height varies along it: n must be
+ * the side's node count (ni for EG2D_SIDE_JMIN and _JMAX, nj for _IMIN and
+ * _IMAX) and heights[k] > 0 the height at its node k (in increasing i or
+ * j), in the boundary's length unit: a height for y+ 1 from a skin
+ * friction that varies along the wall, or the first cells of a blockMesh
+ * edge grading. Otherwise as eg2d_set_wall_spacing(grid, side, the least
+ * of them). The graded wall layer (a single block, a set of blocks) and
+ * the wall control's updates hold each node's height; the marched and
+ * hybrid layers (EG2D_PARAM_WALL_LAYER 1 and 2) march one height, so an
+ * O- or C-grid's JMIN given heights node by node takes the updates instead
+ * (a run event says so). heights NULL: the side is no wall (as a negative
+ * height). eg2d_set_wall_spacing on the side, or a new topology, forgets
+ * the heights node by node. The array is copied. EG2D_ERR_ARGUMENT for a
+ * wrong n or a height that is not finite and positive (naming its node). */
+EG2D_API int eg2d_set_wall_spacing_nodes(eg2d_grid *grid, int side, int n, const double *heights);
 
 /* Adaptive control from a parameter-space grid (Khattri 2006): s, t are an
  * ni*nj grid on the unit square (Fortran order), unfolded: s_xi t_eta -

@@ -388,6 +388,11 @@ public:
     }
     void set_orthogonality(int method) { check(::eg2d_set_orthogonality(g_, method)); }
     void set_wall_spacing(int side, double height) { check(::eg2d_set_wall_spacing(g_, side, height)); }
+    // One first-cell height per node of the side; empty: the side is no wall.
+    void set_wall_spacing_nodes(int side, const std::vector<double> &heights) {
+        check(::eg2d_set_wall_spacing_nodes(g_, side, static_cast<int>(heights.size()),
+                                            heights.empty() ? nullptr : heights.data()));
+    }
     void set_parameter_grid(const std::vector<double> &s, const std::vector<double> &t) {
         check(::eg2d_set_parameter_grid(g_, optional_nodes("set_parameter_grid", s),
                                         optional_nodes("set_parameter_grid", t)));

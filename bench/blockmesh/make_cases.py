@@ -70,16 +70,36 @@ def end_cells(p, q, grading, n):
     return first(*secs[0]), first(*secs[-1]) * secs[-1][2]
 
 
+def node_fractions(grading, n):
+    """The n + 1 nodes of blockMesh's graded edge as fractions of its length."""
+    out, start = [0.0], 0.0
+    for l, m, e in sections(grading, n):
+        r = e ** (1 / (m - 1)) if m > 1 else 1.0
+        for k in range(1, m + 1):
+            out.append(start + l * (k / m if abs(r - 1) < 1e-15 else (r ** k - 1) / (r ** m - 1)))
+        start += l
+    return out
+
+
 def wall_spacing(v, hexa, ni, nj, g, walls):
     """The block's wall_spacing: each wall side's first cell as blockMesh makes
-    it, from the edges that leave the wall (the smaller where the two differ)."""
+    it, from the two edges that leave the wall's ends, interpolated along the
+    wall at its nodes' fractions (blockMesh interpolates a block's inside from
+    its edges so): one height where the two agree, else one per node."""
     a, b, c, d = hexa
     (gbot, gtop), (glef, grig) = g
     lef, rig = end_cells(v[a], v[d], glef, nj), end_cells(v[b], v[c], grig, nj)
     bot, top = end_cells(v[a], v[b], gbot, ni), end_cells(v[d], v[c], gtop, ni)
-    first = {"bottom": min(lef[0], rig[0]), "top": min(lef[1], rig[1]),
-             "left": min(bot[0], top[0]), "right": min(bot[1], top[1])}
-    return "wall_spacing = { " + ", ".join(f"{s} = {first[s]:.6g}" for s in walls) + " }"
+    ends = {"bottom": (lef[0], rig[0], gbot, ni), "top": (lef[1], rig[1], gtop, ni),
+            "left": (bot[0], top[0], glef, nj), "right": (bot[1], top[1], grig, nj)}
+    items = []
+    for s in walls:
+        h0, h1, grading, n = ends[s]
+        if abs(h1 - h0) <= 1e-9 * max(h0, h1):
+            items.append(f"{s} = {h0:.6g}")
+        else:
+            items.append(f"{s} = [" + ", ".join(f"{h0 + (h1 - h0) * t:.6g}" for t in node_fractions(grading, n)) + "]")
+    return "wall_spacing = { " + ", ".join(items) + " }"
 
 
 def toml(title, comment, verts, blocks, joins, patches, scale=1.0, walls=False):

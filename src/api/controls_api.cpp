@@ -111,25 +111,54 @@ EG2D_API int eg2d_set_orthogonality(eg2d_grid *grid, int method) {
     });
 }
 
+namespace {
+
+void require_side(const eg2d_grid *grid, int side) {
+    require(side >= EG2D_SIDE_JMIN && side <= EG2D_SIDE_IMIN, format("side = %d: not an EG2D_SIDE_* value (0-3)", side));
+    require(grid->gen.grid().has_side(static_cast<Side>(side)),
+            format("side %s: the grid's topology has no such side", side_name(static_cast<Side>(side))));
+}
+
+// eg2d_set_wall_spacing after its checks: the side's one height (a wall
+// control takes it) and its heights node by node (`nodes`, empty: none).
+void put_wall_spacing(eg2d_grid *grid, int side, double height, std::vector<double> nodes) {
+    std::array<double, 4> next = grid->wall_height;
+    next[side] = height < 0.0 ? -1.0 : height;
+    ControlSet set = grid->gen.controls();
+    // A wall control in use takes the new sides; with no orthogonality
+    // control yet, a wall asked for is one (a first cell set without
+    // EG2D_ORTHO_WALL did nothing, silently: 0.02-1 chord first cells on
+    // NACA 0012 385x97 at y+ 1).
+    Control *ortho = set.find(ControlKind::Orthogonality);
+    if (is_wall_control(ortho) || (!ortho && next[side] >= 0.0)) set.put(make_wall_control(wall_sides(next)));
+    grid->gen.controls() = std::move(set);
+    grid->wall_height = next;
+    grid->gen.set_wall_node_spacing(static_cast<Side>(side), std::move(nodes));
+    grid->gen.changed_controls();
+}
+
+}  // namespace
+
 EG2D_API int eg2d_set_wall_spacing(eg2d_grid *grid, int side, double height) {
     return guard(grid, "eg2d_set_wall_spacing", [&] {
-        require(side >= EG2D_SIDE_JMIN && side <= EG2D_SIDE_IMIN,
-                format("side = %d: not an EG2D_SIDE_* value (0-3)", side));
-        require(grid->gen.grid().has_side(static_cast<Side>(side)),
-                format("side %s: the grid's topology has no such side", side_name(static_cast<Side>(side))));
+        require_side(grid, side);
         require_finite(height, "height");
-        std::array<double, 4> next = grid->wall_height;
-        next[side] = height < 0.0 ? -1.0 : height;
-        ControlSet set = grid->gen.controls();
-        // A wall control in use takes the new sides; with no orthogonality
-        // control yet, a wall asked for is one (a first cell set without
-        // EG2D_ORTHO_WALL did nothing, silently: 0.02-1 chord first cells on
-        // NACA 0012 385x97 at y+ 1).
-        Control *ortho = set.find(ControlKind::Orthogonality);
-        if (is_wall_control(ortho) || (!ortho && next[side] >= 0.0)) set.put(make_wall_control(wall_sides(next)));
-        grid->gen.controls() = std::move(set);
-        grid->wall_height = next;
-        grid->gen.changed_controls();
+        put_wall_spacing(grid, side, height, {});
+    });
+}
+
+EG2D_API int eg2d_set_wall_spacing_nodes(eg2d_grid *grid, int side, int n, const double *heights) {
+    return guard(grid, "eg2d_set_wall_spacing_nodes", [&] {
+        require_side(grid, side);
+        if (!heights) return put_wall_spacing(grid, side, -1.0, {});
+        const int length = grid->gen.grid().side_length(static_cast<Side>(side));
+        require(n == length, format("n = %d: side %s has %d nodes", n, side_name(static_cast<Side>(side)), length));
+        std::vector<double> h(heights, heights + n);
+        for (int k = 0; k < n; ++k)
+            require(std::isfinite(h[static_cast<std::size_t>(k)]) && h[static_cast<std::size_t>(k)] > 0.0,
+                    format("heights[%d] = %g: must be finite and > 0", k, h[static_cast<std::size_t>(k)]));
+        const double least = *std::min_element(h.begin(), h.end());
+        put_wall_spacing(grid, side, least, std::move(h));
     });
 }
 

@@ -66,6 +66,7 @@ void Grid::set_topology(Topology t) {
     lines_.clear();
     sides_set_ = 0;
     patches.clear();
+    for (std::vector<double> &h : wall_node_spacing) h.clear();
     for (int si = 0; si < 4; ++si) {
         user_x_[si].clear();
         user_y_[si].clear();

@@ -3,6 +3,7 @@
 // nothing downstream sees NaN, Inf or a boundary whose corners disagree.
 #pragma once
 #include <cstddef>
+#include <array>
 #include <vector>
 
 #include "base/connectivity.hpp"
@@ -84,6 +85,11 @@ public:
     // The user's boundary patches (base/patches.hpp: with_patch checks them,
     // resolve_patches completes them); forgotten with the topology.
     std::vector<Patch> patches;
+
+    // The user's first-cell heights node by node along each side
+    // (eg2d_set_wall_spacing_nodes; empty: the side's one height, if any);
+    // forgotten with the topology.
+    std::array<std::vector<double>, 4> wall_node_spacing;
 
     // Diagonal of the bounding box of the boundary ring: the L of NUMERICS.md.
     double extent() const;

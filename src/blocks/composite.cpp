@@ -687,6 +687,22 @@ void Composite::restore() {
     }
 }
 
+Composite::Snapshot Composite::snapshot() const {
+    Snapshot s;
+    for (const Block &blk : blocks_) {
+        s.x.push_back(blk.x);
+        s.y.push_back(blk.y);
+    }
+    return s;
+}
+
+void Composite::restore(const Snapshot &s) {
+    for (std::size_t b = 0; b < blocks_.size(); ++b) {
+        blocks_[b].x = s.x[b];
+        blocks_[b].y = s.y[b];
+    }
+}
+
 double Composite::move() const {
     double m = 0.0;
     for (std::size_t b = 0; b < blocks_.size(); ++b)

@@ -165,6 +165,13 @@ public:
     void save();
     void restore();
     double move() const;
+    // The coordinates kept apart from the guarded sweep's (a pass of the
+    // solve that may be undone: the sweeps inside it save their own).
+    struct Snapshot {
+        std::vector<std::vector<double>> x, y;
+    };
+    Snapshot snapshot() const;
+    void restore(const Snapshot &s);
 
 private:
     enum Role : char { kHeld = 0, kUnknown = 1, kCopy = 2, kHalo = 3 };

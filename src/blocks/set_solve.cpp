@@ -125,8 +125,7 @@ public:
                                                    "(tolerance %.3g)", limit, run_.residual, s_.tolerance));
             }
             if (multigrid() && run_.iterations == 0 && s_.mg_fmg != 0.0)  // a cold start only
-                mg_[0].fmg(system_, c, static_cast<int>(s_.mg_cycle), static_cast<int>(s_.mg_pre_smooth),
-                           static_cast<int>(s_.mg_post_smooth));
+                full_multigrid(c);
             else if (multigrid())
                 mg_[0].cycle(system_, c, static_cast<int>(s_.mg_cycle), static_cast<int>(s_.mg_pre_smooth),
                              static_cast<int>(s_.mg_post_smooth));
@@ -167,6 +166,23 @@ public:
     }
 
 private:
+    // FMG, unless it leaves a start near its solution worse: a tensor set
+    // re-spaced for walls of 1e-5 (its start off the solution by 1e-6) came
+    // back from the coarse levels at residual 0.2, and the run stopped as
+    // diverged. Then a V-cycle from the start instead, said.
+    void full_multigrid(Composite &c) {
+        const int cycle = static_cast<int>(s_.mg_cycle), pre = static_cast<int>(s_.mg_pre_smooth),
+                  post = static_cast<int>(s_.mg_post_smooth);
+        const Composite::Snapshot start = c.snapshot();
+        mg_[0].fmg(system_, c, cycle, pre, post);
+        const double after = c.residual(system_, extent_);
+        if (after <= run_.residual) return;
+        c.restore(start);
+        report_.note(format("multigrid: its full multigrid start would raise the set's residual from %.3g to %.3g "
+                            "(a start near its solution); V-cycles from the start instead", run_.residual, after));
+        mg_[0].cycle(system_, c, cycle, pre, post);
+    }
+
     const BlockSet &set_;
     const Settings &s_;
     int solver_;
@@ -232,7 +248,7 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
         }
         const std::string sides = layer.kept_sides(c);
         if (!sides.empty()) report.note(sides);
-        c.save();
+        const Composite::Snapshot start = c.snapshot();
         const long before = run.iterations;
         layer.respace(c, true);
         c.hold_spacing(system, false);
@@ -246,7 +262,7 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
             pass.converge(c, kShapeTolerance);
         } catch (const Error &e) {
             if (e.failure() != Failure::Diverged) throw;
-            c.restore();
+            c.restore(start);
             c.drop_layer_controls();
             pass.prepare(c);
             report.note(format("wall layer (graded, set of blocks): not made: on its lines' controls the set "
@@ -263,7 +279,7 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
         // solve made them drift, the grid then held exactly. Where that
         // diverges (the exact controls of a grid turned near a corner are
         // too large for the smoother) the first pass's grid stays, said.
-        c.save();
+        const Composite::Snapshot first = c.snapshot();
         const long before = run.iterations;
         const double skew = c.largest_skew();
         layer.respace(c, false);
@@ -273,7 +289,7 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
         // face: 10.6 -> 80 degrees), the first pass's grid is held instead.
         const double reshaped = c.largest_skew();
         if (!(reshaped <= skew + kReshapeSkew)) {
-            c.restore();
+            c.restore(first);
             report.note(format("wall layer (graded, set of blocks): its lines not re-spaced to the walls' heights "
                                "after the first pass (that would skew a cell by %.3g degrees, the first pass's grid "
                                "by %.3g): the first pass's grid is held, its first cells as the figures below give "
@@ -290,7 +306,7 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
             pass.converge(c);
         } catch (const Error &e) {
             if (e.failure() != Failure::Diverged) throw;
-            c.restore();
+            c.restore(first);
             c.hold_spacing(system, false);
             c.hold_vertices(false);
             pass.prepare(c);

@@ -43,7 +43,8 @@ public:
     static bool asks_walls(const BlockSet &set);
     // Every line with a wall end re-spaced along itself, every copy of a
     // node moved with it, c synced. `vertices`: whether the free vertices
-    // move (the first pass) or end lines (the second).
+    // move (the first pass: its cells scaled to the heights) or end lines
+    // (the second: the first cells' errors moved out, corrected()).
     void respace(Composite &c, bool vertices) const;
     // Each line leaving a wall turned to the wall's normal near it: all the
     // way at the wall, less over the rows the height's scale fades over, each
@@ -78,7 +79,14 @@ private:
     using Graded = std::set<std::pair<int, int>>;
     static Graded graded_starts(const std::vector<Stretch> &all);
     double taper(const Composite &c, const WallAt &w, const Graded &graded) const;
+    double turn_taper(const Composite &c, const WallAt &w, const Graded &graded) const;
     double height_leaving(const Composite &c, int id, int next, WallAt &wall) const;
+    // The second pass's arc lengths of s's nodes: its first cells moved to
+    // their heights, no node further than a first cell's error.
+    std::vector<double> corrected(const Stretch &s, const std::vector<double> &arc, const Graded &graded,
+                                  const Composite &c) const;
+    void move_along(Composite &c, const Stretch &s, const std::vector<Vec2> &points, const std::vector<double> &arc,
+                    const std::vector<double> &want) const;
     int id(int b, int i, int j) const {
         return ids_[static_cast<std::size_t>(b)][static_cast<std::size_t>(i) +
                                                   static_cast<std::size_t>(ni_[static_cast<std::size_t>(b)]) *

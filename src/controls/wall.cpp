@@ -131,6 +131,11 @@ public:
         hybrid_ = HybridLayer{};
         std::string note;
         const bool automatic = settings.wall_layer == kAutomaticLayer;
+        // The marched and hybrid layers march one height.
+        if (g.topology() != Topology::Single && jmin_only(g) && !g.wall_node_spacing[0].empty() &&
+            (settings.wall_layer == 1.0 || settings.wall_layer == 2.0 || (automatic && !graded_applies(g))))
+            note = "wall layer: the marched and hybrid layers take one first-cell height; JMIN's heights node by "
+                   "node (eg2d_set_wall_spacing_nodes) are the wall control's updates' instead";
         if (hybrid_candidate(g, settings)) {
             try {
                 Grid trial = g;
@@ -458,7 +463,11 @@ private:
         // the updates here would turn its first line to the normal only.
         const std::vector<double> &graded = graded_.heights[static_cast<std::size_t>(side)];
         const bool angle_only = height_[side] == 0.0 || (!graded.empty() && !graded_.frozen);
-        double h = angle_only ? 0.0 : graded.empty() ? height_[side] : graded[static_cast<std::size_t>(k)];
+        const std::vector<double> &given = g.wall_node_spacing[static_cast<std::size_t>(side)];
+        double h = angle_only         ? 0.0
+                   : !graded.empty()  ? graded[static_cast<std::size_t>(k)]
+                   : given.size() == static_cast<std::size_t>(n) ? given[static_cast<std::size_t>(k)]
+                                                                : height_[side];
         if (h == 0.0) {  // orthogonality only: keep the current normal height
             h = (g.x[s.c] - g.x[kw]) * nx + (g.y[s.c] - g.y[kw]) * ny;
             if (!(h > 0.0)) h = std::hypot(g.x[s.c] - g.x[kw], g.y[s.c] - g.y[kw]);
@@ -562,7 +571,7 @@ private:
     }
     bool hybrid_candidate(const Grid &g, const Settings &settings) const {
         return (settings.wall_layer == 2.0 || settings.wall_layer == kAutomaticLayer) &&
-               g.topology() != Topology::Single && jmin_only(g);
+               g.topology() != Topology::Single && jmin_only(g) && g.wall_node_spacing[0].empty();
     }
     bool graded_applies(const Grid &g) const {
         if (g.topology() == Topology::C || !g.interior_lines().empty()) return false;

@@ -93,6 +93,7 @@ public:
     // The boundary patches only name and type the boundary for the writers:
     // no effect on the generation.
     void set_patches(std::vector<Patch> patches) { grid_.patches = std::move(patches); }
+    void set_wall_node_spacing(Side s, std::vector<double> h) { grid_.wall_node_spacing[static_cast<std::size_t>(s)] = std::move(h); }
     // `shape`: the controls shape the start (a wall layer's, shape_start);
     // a set of blocks shapes its blocks' starts together instead
     // (blocks/set_wall_layer.hpp).

@@ -57,13 +57,17 @@ std::vector<double> wall_node_heights(const Grid &g, Side s, const std::array<do
     const double h = height[static_cast<std::size_t>(s)];
     const int n = g.side_length(s);
     const bool ring = g.topology() == Topology::O;
+    // The height asked at node k: the side's own node by node, if given.
+    const std::vector<double> &given = g.wall_node_spacing[static_cast<std::size_t>(s)];
+    auto asked = [&](int k) { return given.size() == static_cast<std::size_t>(n) ? given[static_cast<std::size_t>(k)] : h; };
     std::vector<double> v(static_cast<std::size_t>(n), -1.0);
     for (const Patch &p : resolve_patches(g))
         if (p.side == s && p.type == PatchType::Wall)
-            for (int k = p.first; k <= p.last; ++k) v[static_cast<std::size_t>(k)] = h;
+            for (int k = p.first; k <= p.last; ++k) v[static_cast<std::size_t>(k)] = asked(k);
     // A side given a height but no stretch of type wall (an O-grid's JMAX is
     // "farfield" by default) is a wall all along: the height was asked for it.
-    if (std::none_of(v.begin(), v.end(), [](double d) { return d > 0.0; })) std::fill(v.begin(), v.end(), h);
+    if (std::none_of(v.begin(), v.end(), [](double d) { return d > 0.0; }))
+        for (int k = 0; k < n; ++k) v[static_cast<std::size_t>(k)] = asked(k);
     if (ring && v.front() > 0.0) v.back() = v.front();
     if (!ring) {
         const bool eta = s == Side::JMin || s == Side::JMax;
@@ -74,12 +78,13 @@ std::vector<double> wall_node_heights(const Grid &g, Side s, const std::array<do
             const std::size_t across = static_cast<std::size_t>(k == 0 ? (eta ? 3 : 0) : (eta ? 1 : 2));
             if (vk < 0.0) {
                 vk = corner;
-            } else if (!(height[across] > 0.0) && corner > 0.0 && corner != h &&
-                       std::fabs(std::log(corner / h)) <= std::log(kKeepFirst)) {
+            } else if (!(height[across] > 0.0) && corner > 0.0 && corner != vk &&
+                       std::fabs(std::log(corner / vk)) <= std::log(kKeepFirst)) {
                 vk = corner;
                 for (int m = 1; m <= kCornerBlend && m < n / 4; ++m) {
-                    double &vm = v[static_cast<std::size_t>(k == 0 ? m : n - 1 - m)];
-                    if (vm == h) vm = -1.0;  // filled by the blend below
+                    const int km = k == 0 ? m : n - 1 - m;
+                    double &vm = v[static_cast<std::size_t>(km)];
+                    if (vm == asked(km)) vm = -1.0;  // filled by the blend below
                 }
             }
         }

@@ -53,8 +53,10 @@ struct GradedLayer {
 };
 
 // The first-cell height at each node of side s of g (empty: no height
-// there): height[s] on its stretches of type wall (all of it when it has
-// none), blended in the log toward a corner's own spacing on the rest.
+// there): height[s], or the side's heights node by node where the grid has
+// them (Grid::wall_node_spacing), on its stretches of type wall (all of it
+// when it has none), blended in the log toward a corner's own spacing on
+// the rest.
 std::vector<double> wall_node_heights(const Grid &g, Side s, const std::array<double, 4> &height);
 
 // The cells of a line of `cells` cells and length `length` off a wall at

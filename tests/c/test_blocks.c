@@ -459,6 +459,36 @@ static void test_walled_step(void **state) {
     }
 }
 
+/* The walled step with the downstream floor's first cell varying along it
+ * (eg2d_set_wall_spacing_nodes: 1e-5 at its ends, 2e-5 midway, 2.4% a node
+ * off the step's face): every floor node's first cell is its own height
+ * within 2%. The start (TFI of the sides spaced for 1e-5) is then no
+ * longer the solution: it converges with multigrid from the start (a full
+ * multigrid start would raise its residual, said). */
+static void test_walled_step_heights_node_by_node(void **state) {
+    (void)state;
+    enum { NI = 129, NJ = 49 };
+    eg2d_grid *g[3];
+    eg2d_blocks *set;
+    assert_int_equal(walled_step_blocks(1e-5, 33, NI, 97, NJ, g, &set), EG2D_OK);
+    double h[NI];
+    for (int k = 0; k < NI; ++k) h[k] = 1e-5 * (1.0 + sin(acos(-1.0) * k / (NI - 1.0)));
+    assert_int_equal(eg2d_set_wall_spacing_nodes(g[2], EG2D_SIDE_JMIN, NI, h), EG2D_OK);
+    if (eg2d_blocks_solve(set) != EG2D_OK) fail_msg("%s", eg2d_blocks_last_error(set));
+    expect_no_folds(g, 3);
+    static double x[NI * NJ], y[NI * NJ];
+    assert_int_equal(eg2d_get_coordinates(g[2], x, y), EG2D_OK);
+    /* (the last 8 nodes blend into the outlet side's own first cell, 1e-5;
+     * they lie between) */
+    for (int k = 1; k < NI - 1; ++k) {
+        const double first = hypot(x[k + NI] - x[k], y[k + NI] - y[k]);
+        const int ok = k < NI - 9 ? fabs(first / h[k] - 1) < 2e-2 : first > 1e-5 * 0.999 && first < h[NI - 10] * 1.001;
+        if (!ok) fail_msg("floor node %d: first cell %g, asked %g", k, first, h[k]);
+    }
+    eg2d_blocks_destroy(set);
+    eg2d_destroy(g[0]), eg2d_destroy(g[1]), eg2d_destroy(g[2]);
+}
+
 /* Block 0's monitor follows the set's run and can stop it. */
 static int calls, stop_at;
 static int count_and_stop(void *user, int iteration, double residual) {
@@ -498,7 +528,7 @@ int main(void) {
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_backward_facing_step),
         cmocka_unit_test(test_walls_across_blocks),
-        cmocka_unit_test(test_walled_step),
+        cmocka_unit_test(test_walled_step), cmocka_unit_test(test_walled_step_heights_node_by_node),
         cmocka_unit_test(test_monitor),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -271,6 +271,39 @@ static void test_wall_c_grid(void **state) {
     free(y);
 }
 
+/* The same C-grid given its heights node by node (eg2d_set_wall_spacing_nodes:
+ * 1e-5 to 1.5e-5 along JMIN): the hybrid layer marches one height, so the
+ * run says it takes the wall control's updates, which hold every airfoil
+ * node's own first cell within 0.1%. */
+static void test_wall_c_grid_heights_node_by_node(void **state) {
+    const int ni = 129, nj = 33, wake = 32;
+    double *x = alloc(ni * nj), *y = alloc(ni * nj), h[129];
+    eg2d_grid *g;
+    char msg[600];
+    int it, found = 0, events = 0;
+    (void)state;
+    assert_int_equal(eg2d_create(ni, nj, &g), EG2D_OK);
+    assert_int_equal(domain_set_airfoil_c(g, "0012", wake, 5.0), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(g, 1e-10), EG2D_OK);
+    for (int k = 0; k < ni; ++k) h[k] = 1e-5 * (1 + 0.5 * sin(acos(-1.0) * k / (ni - 1.0)));
+    assert_int_equal(eg2d_set_wall_spacing_nodes(g, EG2D_SIDE_JMIN, ni, h), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    assert_int_equal(eg2d_get_run_info(g, EG2D_RUN_EVENTS, &events), EG2D_OK);
+    for (int k = 0; k < events; ++k) {
+        assert_int_equal(eg2d_get_run_event(g, k, &it, msg, sizeof msg), EG2D_OK);
+        if (strstr(msg, "the marched and hybrid layers take one first-cell height")) found = 1;
+    }
+    assert_true(found);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    for (int k = wake + 1; k < ni - 1 - wake; ++k) {
+        const double first = hypot(x[k + ni] - x[k], y[k + ni] - y[k]);
+        if (!(fabs(first / h[k] - 1) < 1e-3)) fail_msg("node %d: first cell %g, asked %g", k, first, h[k]);
+    }
+    eg2d_destroy(g);
+    free(x);
+    free(y);
+}
+
 /* A new start or a new boundary after a converged wall run: the control
  * starts over. Kept, its converged coefficients applied to the TFI start (or
  * to a far field of radius 15) folded 8 cells and did not converge in 100000
@@ -513,7 +546,7 @@ int main(void) {
         cmocka_unit_test(test_wall_restarts_on_new_start),
         cmocka_unit_test(test_wall_annulus_multigrid_cycles),
         cmocka_unit_test(test_wall_height_zero_keeps_radial_grid),
-        cmocka_unit_test(test_wall_on_corner_walls),
+        cmocka_unit_test(test_wall_on_corner_walls), cmocka_unit_test(test_wall_c_grid_heights_node_by_node),
         cmocka_unit_test(test_middlecoff_thomas_zero_on_straight_uniform),
         cmocka_unit_test(test_middlecoff_thomas_improves_curved),
     };

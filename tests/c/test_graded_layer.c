@@ -276,6 +276,52 @@ static void test_wall_spacing_alone_is_a_wall(void **state) {
     }
 }
 
+/* TMR's flat plate with a first cell that varies along the plate
+ * (eg2d_set_wall_spacing_nodes: 2e-6 at its ends, 6e-6 midway, as a y+ 1
+ * height from a varying skin friction would): every plate node's first
+ * cell is its own height within 0.1%, growth within TMR's 1.12957 x 1.1. */
+static void test_heights_node_by_node(void **state) {
+    (void)state;
+    enum { NI = 137, NJ = 97, PLATE = 24 };
+    eg2d_grid *g = tmr_grid("flatplate_137x97", NI, NJ);
+    double h[NI];
+    for (int k = 0; k < NI; ++k) {
+        const double t = k < PLATE ? 0.0 : (double)(k - PLATE) / (NI - 1 - PLATE);
+        h[k] = 2e-6 * (1.0 + 2.0 * sin(acos(-1.0) * t));
+    }
+    /* errors name the thing and change nothing */
+    assert_int_equal(eg2d_set_wall_spacing_nodes(g, EG2D_SIDE_JMIN, NI - 1, h), EG2D_ERR_ARGUMENT);
+    if (!strstr(eg2d_last_error(g), "n = 136: side JMIN has 137 nodes")) fail_msg("%s", eg2d_last_error(g));
+    const double keep = h[40];
+    h[40] = -1e-6;
+    assert_int_equal(eg2d_set_wall_spacing_nodes(g, EG2D_SIDE_JMIN, NI, h), EG2D_ERR_ARGUMENT);
+    if (!strstr(eg2d_last_error(g), "heights[40] = -1e-06: must be finite and > 0")) fail_msg("%s", eg2d_last_error(g));
+    h[40] = NAN;
+    assert_int_equal(eg2d_set_wall_spacing_nodes(g, EG2D_SIDE_JMIN, NI, h), EG2D_ERR_ARGUMENT);
+    h[40] = keep;
+    assert_int_equal(eg2d_set_wall_spacing_nodes(g, 7, NI, h), EG2D_ERR_ARGUMENT);
+    assert_int_equal(eg2d_set_wall_spacing_nodes(g, EG2D_SIDE_JMIN, NI, h), EG2D_OK);
+    solve_ok(g);
+    double *x = malloc(sizeof(double) * NI * NJ), *y = malloc(sizeof(double) * NI * NJ);
+    assert_int_equal(eg2d_get_coordinates(g, x, y), EG2D_OK);
+    /* (the last 8 nodes blend into the outflow side's own first cell,
+     * 2.0047e-6, as with one height (test_flat_plate): between it and the
+     * height where the blend begins) */
+    for (int k = PLATE + 1; k < NI - 1; ++k) {
+        const double first = hypot(x[k + NI] - x[k], y[k + NI] - y[k]), side = 2.0047e-6;
+        const int ok = k < NI - 9 ? fabs(first / h[k] - 1) < 1e-3
+                                  : first > fmin(h[NI - 10], side) * 0.999 && first < fmax(h[NI - 10], side) * 1.001;
+        if (!ok) fail_msg("node %d: first cell %g, asked %g", k, first, h[k]);
+    }
+    const double growth = wall(g, EG2D_SIDE_JMIN, EG2D_WALL_GROWTH);
+    if (!(growth <= 1.12957 * 1.1)) fail_msg("growth %g", growth);
+    /* NULL: the side is no wall (as a negative height) */
+    assert_int_equal(eg2d_set_wall_spacing_nodes(g, EG2D_SIDE_JMIN, 0, NULL), EG2D_OK);
+    free(x);
+    free(y);
+    eg2d_destroy(g);
+}
+
 static eg2d_grid *channel(int ni, int nj, double h) {
     eg2d_grid *g = made(ni, nj, EG2D_TOPO_SINGLE);
     assert_int_equal(domain_set_channel(g), EG2D_OK);
@@ -372,6 +418,7 @@ int main(void) {
         cmocka_unit_test(test_short_layer_says_so), cmocka_unit_test(test_wall_spacing_alone_is_a_wall),
         cmocka_unit_test(test_unresolvable_first_cell_refused),
         cmocka_unit_test(test_short_layer_monitor), cmocka_unit_test(test_unclustered_wall_corner_says_so),
+        cmocka_unit_test(test_heights_node_by_node),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -614,6 +614,11 @@ class Controls(unittest.TestCase):
                 "CASE:3:13: key 'controls.line_source[0].direction': \"zeta\" is not one of: xi, eta")
         t.check('size = [9, 9]\n[controls]\nwall_spacing = { top = -1 }\n' + ErrorMessages.GOOD_SIDES, 3,
                 "CASE:3:24: key 'controls.wall_spacing.top': must be >= 0 (0 = orthogonality only)")
+        # heights node by node: a bad one named by its index, a wrong count by the library
+        t.check('size = [9, 9]\n[controls]\nwall_spacing = { top = [1e-3, 0, 1e-3] }\n' + ErrorMessages.GOOD_SIDES, 3,
+                "CASE:3:31: key 'controls.wall_spacing.top[1]': must be a finite number > 0")
+        t.check('size = [9, 9]\n[controls]\nwall_spacing = { top = [1e-3, 2e-3, 1e-3] }\n' + ErrorMessages.GOOD_SIDES, 4,
+                "CASE:3:24: key 'controls.wall_spacing.top': eg2d_set_wall_spacing_nodes: n = 3: side JMAX has 9 nodes")
         t.check('size = [9, 9]\n[[controls.line_source]]\ndirection = "xi"\nline = 20\namplitude = 1\ndecay = 1\n'
                 + ErrorMessages.GOOD_SIDES, 4, "CASE:2:1: key 'controls.line_source[0]': eg2d_add_line_source: line = 20: "
                 "must be in [0, 8] (xi index units)")

@@ -240,7 +240,10 @@ int main(int argc, char **argv) {
         c.set_source_arrays({}, {});
         CHECK(throws([&] { c.set_orthogonality(7); }, EG2D_ERR_ARGUMENT, "eg2d_set_orthogonality"));
         CHECK(throws([&] { c.set_wall_spacing(9, 0.1); }, EG2D_ERR_ARGUMENT, "eg2d_set_wall_spacing"));
-        c.set_wall_spacing(EG2D_SIDE_JMIN, 0.02);
+        CHECK(throws([&] { c.set_wall_spacing_nodes(EG2D_SIDE_JMIN, std::vector<double>(5, 0.02)); },
+                     EG2D_ERR_ARGUMENT, "eg2d_set_wall_spacing_nodes: n = 5: side JMIN has 17 nodes"));
+        c.set_wall_spacing_nodes(EG2D_SIDE_JMIN, std::vector<double>(17, 0.03));
+        c.set_wall_spacing(EG2D_SIDE_JMIN, 0.02);  // one height again
         c.set_orthogonality(EG2D_ORTHO_WALL);
         c.set_max_iterations(20000);
         c.solve();

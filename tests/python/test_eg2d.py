@@ -458,6 +458,10 @@ def test_orthogonality_and_wall_spacing():
             g.set_orthogonality(7)
         with pytest.raises(eg2d.ArgumentError):
             g.set_wall_spacing(9, 0.05)
+        with pytest.raises(eg2d.ArgumentError, match="n = 5: side JMIN has 17 nodes"):
+            g.set_wall_spacing_nodes(eg2d.SIDE_JMIN, [0.02] * 5)
+        g.set_wall_spacing_nodes(eg2d.SIDE_JMIN, [0.03] * 17)
+        g.set_wall_spacing_nodes(eg2d.SIDE_JMIN, None)
         g.set_wall_spacing(eg2d.SIDE_JMIN, 0.02)
         g.set_orthogonality(eg2d.ORTHO_WALL)
         g.set_max_iterations(20000)

@@ -109,8 +109,9 @@ std::vector<SideSpec> read_side_table(const Fields &parent, int topology, const 
 void read_sides(const Fields &top, Case &c) { c.sides = read_side_table(top, c.topology, c.dir, c.constants); }
 
 // wall_spacing (of [controls], or of a block of a set): a first-cell height
-// per wall side, or a table {yplus, reynolds, chord} turned into one by
-// eg2d_first_cell_height.
+// per wall side, a table {yplus, reynolds, chord} turned into one by
+// eg2d_first_cell_height, or an array of heights, one per node of the side
+// (eg2d_set_wall_spacing_nodes).
 void read_wall_spacing(const Fields &f, int topology, const Constants &constants, std::vector<WallSpacing> &spacings) {
     if (!f.has("wall_spacing")) return;
     const auto &valid = side_names(topology);
@@ -121,6 +122,22 @@ void read_wall_spacing(const Fields &f, int topology, const Constants &constants
     for (const auto &s : valid) {
         if (!w.has(s.first)) continue;
         double h;
+        if (const toml::array *a = w.node(s.first)->as_array()) {  // node by node
+            std::vector<double> nodes;
+            for (std::size_t k = 0; k < a->size(); ++k) {
+                const toml::node &e = *a->get(k);
+                const Location at = locate(w.where(), s.first + "[" + std::to_string(k) + "]", e);
+                double v = 0;
+                if (e.is_integer() || e.is_floating_point()) v = *e.value<double>();
+                else if (e.is_string()) v = evaluate_constant(std::string(*e.value<std::string>()), constants, at);
+                else throw Failure(EXIT_CASE, at.str() + ": expected a number, found " + type_name(e));
+                if (!(std::isfinite(v) && v > 0)) throw Failure(EXIT_CASE, at.str() + ": must be a finite number > 0");
+                nodes.push_back(v);
+            }
+            if (nodes.empty()) throw Failure(EXIT_CASE, w.at(s.first).str() + ": an empty array of heights");
+            spacings.push_back({s.second, *std::min_element(nodes.begin(), nodes.end()), w.at(s.first), nodes});
+            continue;
+        }
         if (w.node(s.first)->is_table()) {  // from a target y+ (eg2d_first_cell_height)
             Fields y(w.table(s.first), w.at(s.first), {"yplus", "reynolds", "chord"});
             y.finish();
@@ -132,7 +149,7 @@ void read_wall_spacing(const Fields &f, int topology, const Constants &constants
             h = w.number(s.first, constants);
         }
         if (h < 0) throw Failure(EXIT_CASE, w.at(s.first).str() + ": must be >= 0 (0 = orthogonality only)");
-        spacings.push_back({s.second, h, w.at(s.first)});
+        spacings.push_back({s.second, h, w.at(s.first), {}});
     }
 }
 

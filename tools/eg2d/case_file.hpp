@@ -28,10 +28,11 @@ struct PointSource {  // eg2d_add_point_source
     Location where;
 };
 
-struct WallSpacing {  // eg2d_set_wall_spacing
+struct WallSpacing {  // eg2d_set_wall_spacing, or _nodes when `nodes` holds the side's heights
     int side;
-    double height;
+    double height;  // the least of `nodes`, if any
     Location where;
+    std::vector<double> nodes;
 };
 
 struct PatchSetting {  // eg2d_set_patch

@@ -73,7 +73,10 @@ void preflight(const Case &c, const RunOptions &o) {
 // The walls' first cells: a height >= 0 turns EG2D_ORTHO_WALL on (eg2d.h), so
 // a single block's wall_spacing and a block's of a set need nothing more.
 void apply_wall_spacings(eg2d_grid *g, const std::vector<WallSpacing> &spacings) {
-    for (const auto &w : spacings) check(g, eg2d_set_wall_spacing(g, w.side, w.height), w.where);
+    for (const auto &w : spacings)
+        check(g, w.nodes.empty() ? eg2d_set_wall_spacing(g, w.side, w.height)
+                                 : eg2d_set_wall_spacing_nodes(g, w.side, static_cast<int>(w.nodes.size()), w.nodes.data()),
+              w.where);
 }
 
 void apply_controls(eg2d_grid *g, const Case &c) {

@@ -17,8 +17,9 @@ namespace eg2dtool {
 // library says would do goes to stderr, "nj >= N" or "ni >= N"), or, with
 // `first_off` > 0, when its median first cell is more than that factor off
 // the height (a set's layer that could not be made: its run notes say why).
+// Heights node by node: `height` the least and `most` the largest asked.
 bool print_wall_layer(const eg2d_grid *g, int side, const std::string &name, double height, double limit,
-                      double first_off = 0.0);
+                      double first_off = 0.0, double most = 0.0);
 
 // Prints one line per wall side of `walls` (a case's, or a block's of a
 // set: its name in `prefix`); true when some layer falls short.

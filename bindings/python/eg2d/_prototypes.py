@@ -54,6 +54,7 @@ PROTOTYPES = {
     "eg2d_set_source_arrays": (c_int, [grid_p, double_p, double_p]),
     "eg2d_set_orthogonality": (c_int, [grid_p, c_int]),
     "eg2d_set_wall_spacing": (c_int, [grid_p, c_int, c_double]),
+    "eg2d_set_wall_spacing_nodes": (c_int, [grid_p, c_int, c_int, double_p]),
     "eg2d_set_parameter_grid": (c_int, [grid_p, double_p, double_p]),
     "eg2d_clustering_map": (c_int, [c_int, c_double, c_double, c_double, c_int, double_p]),
     "eg2d_tensor_parameter_grid": (c_int, [c_int, c_int, double_p, double_p, double_p, double_p]),

@@ -194,6 +194,15 @@ class Grid(Handle):
     def set_wall_spacing(self, side, height):
         self._check(lib.eg2d_set_wall_spacing(self._handle(), int(side), float(height)))
 
+    def set_wall_spacing_nodes(self, side, heights):
+        """First-cell heights node by node along `side` (one per node); None
+        makes the side no wall."""
+        if heights is None:
+            self._check(lib.eg2d_set_wall_spacing_nodes(self._handle(), int(side), 0, None))
+            return
+        h = np.ascontiguousarray(heights, dtype=np.float64).ravel()
+        self._check(lib.eg2d_set_wall_spacing_nodes(self._handle(), int(side), len(h), _ptr(h)))
+
     def set_parameter_grid(self, s=None, t=None):
         """Khattri's (2006) parameter-space grid s, t (ni, nj); both None remove it."""
         s, t = self._optional_fields(s=s, t=t)
