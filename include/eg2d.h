@@ -1180,7 +1180,8 @@ EG2D_API int eg2d_set_airfoil(eg2d_grid *grid, const eg2d_curve *section, int to
  * (it does not own them) and writes its solution into them, so each
  * block's results and files are the usual calls on its grid. A grid
  * destroyed while in a set leaves the set refusing to run (EG2D_ERR_STATE).
- * In this version: single-block grids, the Laplace or Winslow system,
+ * In this version: single-block grids (an O- or C-grid as a single block
+ * joined to itself), the Laplace or Winslow system,
  * each block's control terms (sources, source arrays, parameter grid,
  * weights, EG2D_ORTHO_MIDDLECOFF_THOMAS: each on its own block; a joined
  * node takes the terms its block gives there, or where the block gives
@@ -1218,10 +1219,15 @@ EG2D_API int eg2d_blocks_add(eg2d_blocks *set, eg2d_grid *grid, int *block);
  * first_a is node first_b, and so on. Node indices count along the side in
  * increasing i or j from 0; first > last runs the other way. Both ranges
  * span the same number of nodes, at least two; no node of a side may be in
- * two joins (two joins may share an end node). EG2D_ERR_ARGUMENT naming
- * the join otherwise, EG2D_ERR_UNSUPPORTED for an O- or C-grid block or a
- * block joined to itself (that is an O- or C-grid), EG2D_ERR_STATE for a
- * destroyed block. The coordinates are compared by eg2d_blocks_check. */
+ * two joins (two joins may share an end node). A block may be joined to
+ * itself: a single block whose sides meet (an O-grid's IMIN and IMAX, a
+ * C-grid's two wake halves on JMIN), so that an O- or C-grid is a block of
+ * a set; the set then solves it as that topology does (the cut's nodes
+ * like interior ones). EG2D_ERR_ARGUMENT naming the join otherwise (two
+ * ranges of one side that share nodes included), EG2D_ERR_UNSUPPORTED for
+ * a block of O- or C-grid topology (join its sides instead),
+ * EG2D_ERR_STATE for a destroyed block. The coordinates are compared by
+ * eg2d_blocks_check. */
 EG2D_API int eg2d_blocks_join(eg2d_blocks *set, int block_a, int side_a, int first_a, int last_a, int block_b,
                               int side_b, int first_b, int last_b);
 

@@ -69,9 +69,6 @@ void BlockSet::join(const Join &j) {
     if (overlap(j.a, j.b))
         fail(Failure::Argument, format("join: %s and %s share nodes of the same side", describe(j.a).c_str(),
                                        describe(j.b).c_str()));
-    if (j.a.block == j.b.block)
-        fail(Failure::Unsupported, format("join: %s to its own block: a block joined to itself is an O- or C-grid "
-                                          "(eg2d_set_topology)", describe(j.a).c_str()));
     for (const Join &o : joins_)
         for (const SideRange &mine : {j.a, j.b})
             for (int k = 0; k < 2; ++k)

@@ -192,6 +192,7 @@ private:
         std::vector<std::vector<std::pair<int, double>>> hat_i, hat_j;
         IluWork ilu;
         LineWork lines;
+        bool self_joined = false;  // some join pairs two of its own sides' nodes (an O- or C-grid's cut)
         std::size_t at(int i, int j) const {  // block node (i, j), -1 <= i <= ni
             return static_cast<std::size_t>(i + 1) + static_cast<std::size_t>(ni + 2) * static_cast<std::size_t>(j + 1);
         }

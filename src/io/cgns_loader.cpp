@@ -186,9 +186,16 @@ void write_cgns_blocks(const BlocksRequest &r, OutputFile &out) {
             values[b].push_back(f.values.data());
         }
     }
-    std::vector<std::string> join_names;
+    // A join's name in both zones; a block joined to itself holds both
+    // records in one zone, whose children need names of their own.
+    std::vector<std::string> join_names, back_names;
     join_names.reserve(r.joins.size());
-    for (std::size_t k = 0; k < r.joins.size(); ++k) join_names.push_back(format("join%zu", k + 1));
+    back_names.reserve(r.joins.size());
+    for (std::size_t k = 0; k < r.joins.size(); ++k) {
+        const bool self = r.joins[k].a == r.joins[k].b;
+        join_names.push_back(format(self ? "join%zu_a" : "join%zu", k + 1));
+        back_names.push_back(format(self ? "join%zu_b" : "join%zu", k + 1));
+    }
     for (std::size_t k = 0; k < r.joins.size(); ++k) {
         const ZoneJoin &j = r.joins[k];
         const Grid &ga = *r.grids[static_cast<std::size_t>(j.a)], &gb = *r.grids[static_cast<std::size_t>(j.b)];
@@ -197,7 +204,7 @@ void write_cgns_blocks(const BlocksRequest &r, OutputFile &out) {
         side_range(gb, j.side_b, j.first_b, j.last_b, ca.donor);
         join_transform(j, ca.transform);
         const ZoneJoin back{j.b, j.side_b, j.first_b, j.last_b, j.a, j.side_a, j.first_a, j.last_a};
-        eg2d_cgns_connection cb{join_names[k].c_str(), zone_names[static_cast<std::size_t>(j.a)].c_str(), {}, {}, {}};
+        eg2d_cgns_connection cb{back_names[k].c_str(), zone_names[static_cast<std::size_t>(j.a)].c_str(), {}, {}, {}};
         side_range(gb, j.side_b, j.first_b, j.last_b, cb.range);
         side_range(ga, j.side_a, j.first_a, j.last_a, cb.donor);
         join_transform(back, cb.transform);

@@ -14,6 +14,7 @@
 #include <cmocka.h>
 
 #include "block_domains.h"
+#include "domains.h"
 #include "eg2d.h"
 
 /* The reference domain: the bump of block_domains.h, NI x NJ. Column
@@ -282,8 +283,8 @@ static void test_errors(void **state) {
            "side IMAX of block 0 has nodes 0..16");
     expect(eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, NJ - 1, 1, EG2D_SIDE_IMIN, 0, NJ - 2), EG2D_ERR_ARGUMENT, set,
            "has 17 nodes, block 1 side IMIN nodes 0..15 has 16");
-    expect(eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, 8, 0, EG2D_SIDE_IMIN, 0, 8), EG2D_ERR_UNSUPPORTED, set,
-           "to its own block");
+    expect(eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, 8, 0, EG2D_SIDE_IMAX, 12, 4), EG2D_ERR_ARGUMENT, set,
+           "share nodes of the same side");
     /* Not connected, then a join at the wrong place: the coordinates disagree. */
     expect(eg2d_blocks_check(set), EG2D_ERR_STATE, set, "not connected: no chain of joins from block 0 to block 1");
     assert_int_equal(eg2d_blocks_join(set, 0, EG2D_SIDE_IMAX, 0, NJ - 1, 1, EG2D_SIDE_IMIN, NJ - 1, 0), EG2D_OK);
@@ -489,6 +490,97 @@ static void test_walled_step_heights_node_by_node(void **state) {
     eg2d_destroy(g[0]), eg2d_destroy(g[1]), eg2d_destroy(g[2]);
 }
 
+/* A block joined to itself is an O- or C-grid whose cut is a join: an
+ * annulus (an ellipse in a circle) as one single block whose IMIN and IMAX
+ * sides are the same radial line, joined, gives the O-grid's solution, and
+ * NACA 0012's C-grid as one block whose wake halves on JMIN are joined gives
+ * the C-grid's, each solver to the tolerance's size. */
+static double largest_gap(const eg2d_grid *a, const eg2d_grid *b, int n) {
+    double *xa = malloc(sizeof(double) * (size_t)n * 4), *ya = xa + n, *xb = ya + n, *yb = xb + n, d = 0.0;
+    assert_int_equal(eg2d_get_coordinates(a, xa, ya), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(b, xb, yb), EG2D_OK);
+    for (int k = 0; k < n; ++k) d = fmax(d, hypot(xa[k] - xb[k], ya[k] - yb[k]));
+    free(xa);
+    return d;
+}
+
+static void set_winslow(eg2d_grid *g, int solver) {
+    assert_int_equal(eg2d_set_system(g, EG2D_SYSTEM_WINSLOW), EG2D_OK);
+    assert_int_equal(eg2d_set_solver(g, solver), EG2D_OK);
+    assert_int_equal(eg2d_set_tolerance(g, 1e-11), EG2D_OK);
+}
+
+static void test_block_joined_to_itself_o(void **state) {
+    (void)state;
+    enum { NI = 65, NJ = 33 };
+    double xi[NI], yi[NI], xo[NI], yo[NI], xr[NJ], yr[NJ];
+    for (int k = 0; k < NI; ++k) {
+        const double t = k == NI - 1 ? 0.0 : 2.0 * acos(-1.0) * k / (NI - 1);
+        xi[k] = cos(t), yi[k] = 0.6 * sin(t), xo[k] = 3.0 * cos(t), yo[k] = 3.0 * sin(t);
+    }
+    for (int k = 0; k < NJ; ++k) xr[k] = 1.0 + 2.0 * k / (NJ - 1), yr[k] = 0.0;
+    const int solvers[] = {EG2D_SOLVER_MULTIGRID, EG2D_SOLVER_LSOR, EG2D_SOLVER_PSOR};
+    for (int v = 0; v < 3; ++v) {
+        eg2d_grid *o, *s;
+        eg2d_blocks *set;
+        int b;
+        assert_int_equal(eg2d_create(NI, NJ, &o), EG2D_OK);
+        assert_int_equal(eg2d_set_topology(o, EG2D_TOPO_O), EG2D_OK);
+        assert_int_equal(eg2d_set_side(o, EG2D_SIDE_JMIN, xi, yi), EG2D_OK);
+        assert_int_equal(eg2d_set_side(o, EG2D_SIDE_JMAX, xo, yo), EG2D_OK);
+        set_winslow(o, solvers[v]);
+        assert_int_equal(eg2d_solve(o), EG2D_OK);
+        assert_int_equal(eg2d_create(NI, NJ, &s), EG2D_OK);
+        assert_int_equal(eg2d_set_side(s, EG2D_SIDE_JMIN, xi, yi), EG2D_OK);
+        assert_int_equal(eg2d_set_side(s, EG2D_SIDE_JMAX, xo, yo), EG2D_OK);
+        assert_int_equal(eg2d_set_side(s, EG2D_SIDE_IMIN, xr, yr), EG2D_OK);
+        assert_int_equal(eg2d_set_side(s, EG2D_SIDE_IMAX, xr, yr), EG2D_OK);
+        set_winslow(s, solvers[v]);
+        assert_int_equal(eg2d_blocks_create(&set), EG2D_OK);
+        assert_int_equal(eg2d_blocks_add(set, s, &b), EG2D_OK);
+        assert_int_equal(eg2d_blocks_join(set, 0, EG2D_SIDE_IMIN, 0, NJ - 1, 0, EG2D_SIDE_IMAX, 0, NJ - 1), EG2D_OK);
+        if (eg2d_blocks_solve(set) != EG2D_OK) fail_msg("solver %d: %s", solvers[v], eg2d_blocks_last_error(set));
+        const double gap = largest_gap(o, s, NI * NJ);
+        if (!(gap < 1e-8)) fail_msg("solver %d: the set is %g from the O-grid", solvers[v], gap);
+        eg2d_blocks_destroy(set);
+        eg2d_destroy(o), eg2d_destroy(s);
+    }
+}
+
+static void test_block_joined_to_itself_c(void **state) {
+    (void)state;
+    enum { NI = 129, NJ = 33, WAKE = 32 };
+    static double x[NI * NJ], y[NI * NJ];
+    double bx[4][NI], by[4][NI];
+    const int solvers[] = {EG2D_SOLVER_MULTIGRID, EG2D_SOLVER_LSOR};
+    for (int v = 0; v < 2; ++v) {
+        eg2d_grid *c, *s;
+        eg2d_blocks *set;
+        int b;
+        assert_int_equal(eg2d_create(NI, NJ, &c), EG2D_OK);
+        assert_int_equal(domain_set_airfoil_c(c, "0012", WAKE, 5.0), EG2D_OK);
+        set_winslow(c, solvers[v]);
+        assert_int_equal(eg2d_initialize(c, EG2D_INIT_TFI), EG2D_OK);
+        assert_int_equal(eg2d_get_coordinates(c, x, y), EG2D_OK);
+        for (int i = 0; i < NI; ++i)
+            bx[0][i] = x[i], by[0][i] = y[i], bx[2][i] = x[i + NI * (NJ - 1)], by[2][i] = y[i + NI * (NJ - 1)];
+        for (int j = 0; j < NJ; ++j) bx[3][j] = x[NI * j], by[3][j] = y[NI * j], bx[1][j] = x[NI - 1 + NI * j], by[1][j] = y[NI - 1 + NI * j];
+        assert_int_equal(eg2d_solve(c), EG2D_OK);
+        assert_int_equal(eg2d_create(NI, NJ, &s), EG2D_OK);
+        for (int side = 0; side < 4; ++side) assert_int_equal(eg2d_set_side(s, side, bx[side], by[side]), EG2D_OK);
+        set_winslow(s, solvers[v]);
+        assert_int_equal(eg2d_blocks_create(&set), EG2D_OK);
+        assert_int_equal(eg2d_blocks_add(set, s, &b), EG2D_OK);
+        assert_int_equal(eg2d_blocks_join(set, 0, EG2D_SIDE_JMIN, 0, WAKE, 0, EG2D_SIDE_JMIN, NI - 1, NI - 1 - WAKE),
+                         EG2D_OK);
+        if (eg2d_blocks_solve(set) != EG2D_OK) fail_msg("solver %d: %s", solvers[v], eg2d_blocks_last_error(set));
+        const double gap = largest_gap(c, s, NI * NJ);
+        if (!(gap < 1e-8)) fail_msg("solver %d: the set is %g from the C-grid", solvers[v], gap);
+        eg2d_blocks_destroy(set);
+        eg2d_destroy(c), eg2d_destroy(s);
+    }
+}
+
 /* Block 0's monitor follows the set's run and can stop it. */
 static int calls, stop_at;
 static int count_and_stop(void *user, int iteration, double residual) {
@@ -529,6 +621,7 @@ int main(void) {
         cmocka_unit_test(test_backward_facing_step),
         cmocka_unit_test(test_walls_across_blocks),
         cmocka_unit_test(test_walled_step), cmocka_unit_test(test_walled_step_heights_node_by_node),
+        cmocka_unit_test(test_block_joined_to_itself_o), cmocka_unit_test(test_block_joined_to_itself_c),
         cmocka_unit_test(test_monitor),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -2214,6 +2214,60 @@ class BlockSets(unittest.TestCase):
     POINTS = 25 * 41 + 81 * 41 + 81 * 17 - 41 - 81
     PATCHES = {"wall": 2 * 24 + 2 * 80 + 16, "inlet": 40, "outlet": 40 + 16}
 
+    # An O-grid as one block joined to itself: an ellipse in a circle, the
+    # block's left and right sides the same radial line, joined.
+    RING = textwrap.dedent('''\
+        title = "ring"
+        system = "winslow"
+        [output]
+        formats = ["openfoam", "cgns", "su2"]
+        [[blocks]]
+        name = "ring"
+        size = [65, 33]
+        [blocks.sides.bottom]
+        x = "cos(2*pi*s)"
+        y = "0.6*sin(2*pi*s)"
+        [blocks.sides.top]
+        x = "3*cos(2*pi*s)"
+        y = "3*sin(2*pi*s)"
+        [blocks.sides.left]
+        x = "1 + 2*s"
+        y = "0"
+        [blocks.sides.right]
+        x = "1 + 2*s"
+        y = "0"
+        [[blocks.patches]]
+        side = "bottom"
+        type = "wall"
+        name = "body"
+        [[blocks.patches]]
+        side = "top"
+        type = "farfield"
+        name = "outer"
+        [[joins]]
+        a = "ring.left"
+        b = "ring.right"
+        ''')
+
+    def test_block_joined_to_itself(self):
+        """The ring's cut is interior: one mesh of 64 x 32 cells and 64 x 33
+        points (the cut's nodes once), two patches, checkMesh OK, and its CGNS
+        zone connected to itself (two 1-to-1 records, cgnscheck clean)."""
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "ring.toml")
+            with open(path, "w") as f:
+                f.write(self.RING)
+            out = os.path.join(d, "out")
+            code, stdout, stderr = run("run", path, "-o", out)
+            self.assertEqual(code, 0, stdout + stderr)
+            with open(os.path.join(out, "ring.su2")) as f:
+                su2 = f.read()
+            self.assertIn("NELEM= 2048\n", su2)
+            self.assertIn("NPOIN= 2112\n", su2)
+            self.assertEqual(re.findall(r"MARKER_TAG= (\S+)", su2), ["body", "outer"])
+            check_mesh(self, os.path.join(out, "ring_foam"))
+            check_cgns_file(self, os.path.join(out, "ring.cgns"), ["body", "outer"])
+
     def test_step_runs_and_writes_one_mesh(self):
         with tempfile.TemporaryDirectory() as d:
             out = os.path.join(d, "out")
