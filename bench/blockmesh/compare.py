@@ -4,10 +4,20 @@ node counts (issue 39): for each geometry of bench/blockmesh, blockMesh meshes
 its system/blockMeshDict and eg2d its case file, checkMesh checks both, and
 this script measures both polyMeshes the same way. Prints a Markdown table.
 
-  bench/blockmesh/compare.py BUILD_DIR [--walls] [GEOMETRY...]   (default: pitzDaily bfs)
+  bench/blockmesh/compare.py BUILD_DIR [--walls [--check]] [GEOMETRY...]   (default: pitzDaily bfs)
+
+BUILD_DIR may also be the eg2d command itself.
 
 --walls runs eg2d on the case files whose blocks give their walls blockMesh's
 first cells (wall_spacing; *-walls.toml, make_cases.py writes them).
+
+--check (with --walls; the ctest blockmesh_walls) exits 1 unless eg2d's
+mesh of each geometry has what issue 39 asks against blockMesh's: no folds;
+checkMesh's verdict OK but for the aspect ratio a wall layer must have;
+non-orthogonality within 5 degrees of blockMesh's; skewness at most 4
+(checkMesh's limit); the largest size ratio at most blockMesh's (to 0.1%:
+both meshes share the boundary's spacing); the largest turn at an
+interface below blockMesh's, or no larger than the turns nearby.
 
 Needs blockMesh and checkMesh (Debian's openfoam package; WM_PROJECT_DIR is
 set to /usr/share/openfoam when unset) and numpy.
@@ -205,7 +215,8 @@ def mesh_blockmesh(dict_dir, work):
 
 def mesh_eg2d(build, toml, work):
     out = os.path.join(work, "eg2d")
-    r = run([os.path.join(build, "tools", "eg2d", "eg2d"), "run", toml, "-o", out])
+    tool = build if os.path.isfile(build) else os.path.join(build, "tools", "eg2d", "eg2d")  # the command, or a build
+    r = run([tool, "run", toml, "-o", out])
     m = re.search(r"quality: (\d+) folded cells", r.stdout)
     folds = int(m[1]) if m else None
     # exit 4 with the files written: a wall layer grows faster than 1.2
@@ -227,8 +238,9 @@ def main():
     if len(sys.argv) < 2:
         sys.exit(__doc__)
     build, args = sys.argv[1], sys.argv[2:]
-    walls = "--walls" in args
-    names = [a for a in args if a != "--walls"] or list(GEOMETRIES)
+    walls, checking = "--walls" in args, "--check" in args
+    names = [a for a in args if a not in ("--walls", "--check")] or list(GEOMETRIES)
+    failures = []
     os.environ.setdefault("WM_PROJECT_DIR", "/usr/share/openfoam")
     print("| geometry | generator | cells | checkMesh | non-orthogonality max (deg) | skewness max "
           "| neighbour size ratio max | interface kink max (deg) | interior kink nearby max (deg) | folds |")
@@ -254,12 +266,39 @@ def main():
                     continue
                 case, m = rows[gen]
                 verdict, nonorth, skew = check_mesh(case)
+                rows[gen] = (case, m, verdict, nonorth, skew)
                 print("| %s | %s | %d | %s | %s | %s | %.3g | %.3g | %.3g | %d |" %
                       (name, gen, sum(a * b for a, b in sizes), verdict, fmt(nonorth, ".3g"), fmt(skew, ".3g"),
                        m["ratio"], m["kink"], m["nearby"], m["folds"]))
+            if checking:
+                failures += judged(name, rows)
     print()
     for n in notes:
         print("- " + n)
+    if checking and failures:
+        sys.exit("\n".join("compare.py --check: " + f for f in failures))
+
+
+def judged(name, rows):
+    """What eg2d's mesh of a geometry misses of issue 39's bounds against blockMesh's (--check)."""
+    if "eg2d" not in rows or len(rows["eg2d"]) < 5:
+        return ["%s: eg2d wrote no mesh" % name]
+    _, b, _, b_nonorth, _ = rows["blockMesh"]
+    _, e, verdict, nonorth, skew = rows["eg2d"]
+    out = []
+    if e["folds"]:
+        out.append("%s: %d folded cells" % (name, e["folds"]))
+    if verdict not in ("OK", "Failed 1 mesh checks (High aspect ratio cells found)"):
+        out.append("%s: checkMesh: %s" % (name, verdict))
+    if nonorth is None or not nonorth <= b_nonorth + 5.0:
+        out.append("%s: non-orthogonality %s against blockMesh's %.3g + 5" % (name, nonorth, b_nonorth))
+    if skew is None or not skew <= 4.0:
+        out.append("%s: skewness %s over checkMesh's 4" % (name, skew))
+    if not e["ratio"] <= b["ratio"] * 1.001:
+        out.append("%s: size ratio %.4g against blockMesh's %.4g" % (name, e["ratio"], b["ratio"]))
+    if not (e["kink"] < b["kink"] or e["kink"] <= e["nearby"]):
+        out.append("%s: interface turn %.3g, blockMesh's %.3g, nearby %.3g" % (name, e["kink"], b["kink"], e["nearby"]))
+    return out
 
 
 if __name__ == "__main__":

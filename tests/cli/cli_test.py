@@ -2268,6 +2268,18 @@ class BlockSets(unittest.TestCase):
             check_mesh(self, os.path.join(out, "ring_foam"))
             check_cgns_file(self, os.path.join(out, "ring.cgns"), ["body", "outer"])
 
+    def test_refused_set_says_why(self):
+        """A set the library refuses before it runs (bench/two-element-airfoil's
+        get-run-error.toml: a wake curve through the flap) is refused with the
+        solve's reason, not eg2d_blocks_get_run's "has not run"."""
+        case = os.path.join(os.path.dirname(EXAMPLES), "bench", "two-element-airfoil", "get-run-error.toml")
+        with tempfile.TemporaryDirectory() as d:
+            code, stdout, stderr = run("run", case, "-o", os.path.join(d, "out"))
+            self.assertEqual(code, 4, stdout + stderr)
+            self.assertIn("eg2d_blocks_solve: the boundary crosses itself: JMIN segment 30-31 crosses JMAX segment "
+                          "48-49", stderr)
+            self.assertNotIn("stopped after", stdout)
+
     def test_step_runs_and_writes_one_mesh(self):
         with tempfile.TemporaryDirectory() as d:
             out = os.path.join(d, "out")

@@ -45,3 +45,12 @@ add_test(NAME docs_tables_up_to_date
 # Every gallery picture is what the tool makes now of the case file beside it.
 add_test(NAME gallery_up_to_date
          COMMAND ${EG2D_CLI_PYTHON} ${PROJECT_SOURCE_DIR}/tools/eg2d/gallery.py $<TARGET_FILE:eg2d_tool> ${PROJECT_SOURCE_DIR} --check)
+
+# Issue 39's bounds against blockMesh on its own blocks (pitzDaily, TMR's
+# step) with the walls' first cells: bench/blockmesh/compare.py --check.
+find_program(EG2D_BLOCKMESH blockMesh)
+if(EG2D_BLOCKMESH)
+  add_test(NAME cli_blockmesh_walls
+           COMMAND ${EG2D_CLI_PYTHON} ${PROJECT_SOURCE_DIR}/bench/blockmesh/compare.py $<TARGET_FILE:eg2d_tool> --walls --check)
+  set_tests_properties(cli_blockmesh_walls PROPERTIES LABELS "script" ENVIRONMENT EG2D_FP_TRAPS=1)
+endif()

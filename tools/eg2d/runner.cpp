@@ -420,9 +420,12 @@ int run_block_set(const Case &c, const RunOptions &o) {
     const auto start = std::chrono::steady_clock::now();
     const int status = eg2d_blocks_solve(set);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // (the solve's own message: eg2d_blocks_get_run on a set refused before
+    // it ran sets the set's last error to its own)
+    const std::string why = status == EG2D_OK ? "" : eg2d_blocks_last_error(set);
     int iterations = 0, unknowns = 0;
     double residual = 0;
-    eg2d_blocks_get_run(set, &iterations, &residual, &unknowns);
+    const bool ran = eg2d_blocks_get_run(set, &iterations, &residual, &unknowns) == EG2D_OK;
     if (status == EG2D_ERR_INTERRUPTED) {
         std::printf("interrupted at iteration %d, residual %.3e: no files written\n", iterations, residual);
         return EXIT_INTERRUPTED;
@@ -431,10 +434,9 @@ int run_block_set(const Case &c, const RunOptions &o) {
         std::printf("converged in %d iterations, residual %.3e, %d nodes solved for, %.2f s\n", iterations, residual,
                     unknowns, seconds);
     print_what_ran(grids[0].get());  // every block describes the set's run
-    if (status != EG2D_OK && status != EG2D_ERR_DIVERGED)
+    if (status != EG2D_OK && status != EG2D_ERR_DIVERGED && ran)
         std::printf("stopped after %d iterations, residual %.3e\n", iterations, residual);
-    if (status != EG2D_OK)
-        throw Failure(exit_code_for_status(status), c.file + ": " + eg2d_blocks_last_error(set) + " (no files written)");
+    if (status != EG2D_OK) throw Failure(exit_code_for_status(status), c.file + ": " + why + " (no files written)");
     double at_joins = 0, nearby = 0;
     check_set(set, eg2d_blocks_get_kinks(set, &at_joins, &nearby), c.blocks_at);
     std::printf("grid lines across the joins: turns up to %.2f deg at the joined nodes, %.2f deg one line into the "
