@@ -60,8 +60,9 @@
  *     eg2d_first_cell_height, eg2d_set_airfoil.
  * 11) Sets of blocks (multi-block): eg2d_blocks_create,
  *     eg2d_blocks_destroy, eg2d_blocks_last_error, eg2d_blocks_add,
- *     eg2d_blocks_join, eg2d_blocks_check, eg2d_blocks_solve,
- *     eg2d_blocks_get_run, eg2d_blocks_get_kinks, eg2d_blocks_write.
+ *     eg2d_blocks_join, eg2d_blocks_hold_join, eg2d_blocks_check,
+ *     eg2d_blocks_solve, eg2d_blocks_get_run, eg2d_blocks_get_kinks,
+ *     eg2d_blocks_write.
  *
  * Introduction
  * ------------
@@ -1230,6 +1231,17 @@ EG2D_API int eg2d_blocks_add(eg2d_blocks *set, eg2d_grid *grid, int *block);
  * eg2d_blocks_check. */
 EG2D_API int eg2d_blocks_join(eg2d_blocks *set, int block_a, int side_a, int first_a, int last_a, int block_b,
                               int side_b, int first_b, int last_b);
+
+/* Holds join `join` (0 for the set's first successful eg2d_blocks_join,
+ * 1 for the next, ...) with held = 1, or frees it again with 0 (the
+ * default): a held join's nodes stay where the blocks' sides put them, as
+ * the domain's boundary does, and its end nodes are held vertices. The
+ * lines then meet it from either block as they meet a boundary (blockMesh's
+ * way): a wake or a slot line the caller places, where a free join would
+ * float to where the elliptic system puts it. eg2d_blocks_get_kinks leaves
+ * held joins out; the writers treat them as any join. EG2D_ERR_ARGUMENT
+ * for a join the set has not or a held other than 0 and 1. */
+EG2D_API int eg2d_blocks_hold_join(eg2d_blocks *set, int join, int held);
 
 /* Checks the set as eg2d_blocks_solve will: every block's boundary set
  * (EG2D_ERR_STATE), the joined nodes coincide within 1e-8 of the set's

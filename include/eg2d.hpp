@@ -603,6 +603,8 @@ public:
     void join(int block_a, int side_a, int first_a, int last_a, int block_b, int side_b, int first_b, int last_b) {
         check(::eg2d_blocks_join(s_, block_a, side_a, first_a, last_a, block_b, side_b, first_b, last_b));
     }
+    // Join `join` (0 for the first) held where the blocks' sides put it, or free again.
+    void hold_join(int join, bool held = true) { check(::eg2d_blocks_hold_join(s_, join, held ? 1 : 0)); }
     void check_set() const { check(::eg2d_blocks_check(s_)); }
     void solve() { check(::eg2d_blocks_solve(s_)); }
     struct run_info {

@@ -195,6 +195,7 @@ HAND_WRITTEN = {
     "eg2d_blocks_last_error": "last_error() of eg2d_blocks_t",
     "eg2d_blocks_add": "a procedure of eg2d_blocks_t taking a class(eg2d_grid_t)",
     "eg2d_blocks_join": "a procedure of eg2d_blocks_t",
+    "eg2d_blocks_hold_join": "a procedure of eg2d_blocks_t",
     "eg2d_blocks_check": "a procedure of eg2d_blocks_t",
     "eg2d_blocks_solve": "a procedure of eg2d_blocks_t",
     "eg2d_blocks_get_run": "a procedure of eg2d_blocks_t",

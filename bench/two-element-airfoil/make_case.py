@@ -29,6 +29,8 @@ ap.add_argument("--first-cell", default="1e-4", help="first-cell height on both 
 ap.add_argument("--outflow", type=float, default=10.5, help="x of the outflow (the main element's chord is 1)")
 ap.add_argument("--n-far", type=int, default=65, help="nodes from the walls and wakes to the far field")
 ap.add_argument("--n-slot", type=int, default=49, help="nodes across the slot")
+ap.add_argument("--held", action="store_true",
+                help="hold the slot's line, the slot's end and both wakes where the case puts them (eg2d_blocks_hold_join)")
 ap.add_argument("-o", default=os.path.join(HERE, "two-element-airfoil.toml"))
 args = ap.parse_args()
 
@@ -356,6 +358,10 @@ a = {{ block = "flap", side = "top", first = "n_flap - 1", last = "n_flap + n_wa
 b = {{ block = "wake", side = "bottom", first = "n_aft - 1", last = "n_aft + n_wake - 2" }}
 
 '''
+if args.held:  # the placed lines held (held = true after their [[joins]] line)
+    s = "\n".join(line + ("\nheld = true" if line.startswith("[[joins]]") and
+                          any(t in line for t in ("slot's line", "slot's end", "main wake", "flap's wake")) else "")
+                   for line in s.split("\n"))
 with open(args.o, 'w') as out:
     out.write(s)
 print('wrote', args.o)

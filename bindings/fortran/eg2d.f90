@@ -114,6 +114,7 @@ module eg2d
     procedure :: last_error => blocks_last_error
     procedure :: add => blocks_add
     procedure :: join => blocks_join
+    procedure :: hold_join => blocks_hold_join
     procedure :: check => blocks_check
     procedure :: solve => blocks_solve
     procedure :: get_run => blocks_get_run
@@ -638,6 +639,16 @@ contains
          int(first_a, c_int), int(last_a, c_int), int(block_b, c_int), int(side_b, c_int), int(first_b, c_int), &
          int(last_b, c_int)), status)
   end subroutine blocks_join
+
+  ! held: .true. holds join `join` (0 for the first join, ...) where the sides put it
+  subroutine blocks_hold_join(self, join, held, status)
+    class(eg2d_blocks_t), intent(inout) :: self
+    integer, intent(in) :: join
+    logical, intent(in) :: held
+    integer, intent(out), optional :: status
+    call blocks_finish(self, eg2d_blocks_hold_join(self%handle, int(join, c_int), merge(1_c_int, 0_c_int, held)), &
+         status)
+  end subroutine blocks_hold_join
 
   subroutine blocks_check(self, status)
     class(eg2d_blocks_t), intent(inout) :: self

@@ -78,6 +78,13 @@ EG2D_API int eg2d_blocks_join(eg2d_blocks *set, int block_a, int side_a, int fir
     });
 }
 
+EG2D_API int eg2d_blocks_hold_join(eg2d_blocks *set, int join, int held) {
+    return guard_set(set, "eg2d_blocks_hold_join", [&] {
+        require(held == 0 || held == 1, format("held = %d: must be 0 or 1", held));
+        set->set.hold(join, held == 1);
+    });
+}
+
 EG2D_API int eg2d_blocks_check(eg2d_blocks *set) {
     return guard_set(set, "eg2d_blocks_check", [&] { set->set.check(); });
 }

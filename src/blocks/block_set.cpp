@@ -78,6 +78,14 @@ void BlockSet::join(const Join &j) {
     joins_.push_back(j);
 }
 
+void BlockSet::hold(int index, bool held) {
+    if (index < 0 || index >= static_cast<int>(joins_.size()))
+        fail(Failure::Argument, joins_.empty() ? format("join = %d: the set has no joins", index)
+                                               : format("join = %d: the set has joins 0..%d", index,
+                                                        static_cast<int>(joins_.size()) - 1));
+    joins_[static_cast<std::size_t>(index)].held = held;
+}
+
 double BlockSet::extent() const {
     double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x, hi_x = -lo_x, hi_y = -lo_x;
     for (const Generator *g : blocks_) {

@@ -26,9 +26,12 @@ struct SideRange {
     int at(int t) const { return first + t * step(); }
 };
 
-// Node t of `a` is node t of `b`.
+// Node t of `a` is node t of `b`. A held join's nodes stay where the
+// blocks' sides put them (a boundary between the blocks, as blockMesh's);
+// the others move like interior nodes.
 struct Join {
     SideRange a, b;
+    bool held = false;
 };
 
 class BlockSet {
@@ -46,6 +49,9 @@ public:
     // side is joined twice); Argument naming the join otherwise. Strong
     // guarantee.
     void join(const Join &j);
+    // Join `index` (in the order join() took them) held, or free again.
+    // Argument for an index the set has not.
+    void hold(int index, bool held);
 
     // Before a solve: every block present, its boundary complete, the same
     // system, no controls; each join's nodes coincide (kCornerTolerance of

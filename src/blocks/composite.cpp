@@ -52,7 +52,7 @@ Composite::Composite(const std::vector<BlockShape> &shapes, const std::vector<Jo
             halos_.push_back(Link{j.a.block, node(A, j.a, t, 1), j.b.block, node(B, j.b, t, -1)});
             A.role[node(A, j.a, t, -1)] = kHalo;
             B.role[node(B, j.b, t, -1)] = kHalo;
-            if (t == 0 || t == count - 1) continue;  // a vertex: held
+            if (t == 0 || t == count - 1 || j.held) continue;  // a vertex, a held join: held
             A.role[node(A, j.a, t, 0)] = kUnknown;
             B.role[node(B, j.b, t, 0)] = kCopy;
             copies_.push_back(Link{j.a.block, node(A, j.a, t, 0), j.b.block, node(B, j.b, t, 0)});
@@ -96,7 +96,7 @@ void Composite::find_vertices() {
             const int ga = root(id(j.a.block, A.at(na.i, na.j))), gb = root(id(j.b.block, B.at(nb.i, nb.j)));
             parent[static_cast<std::size_t>(std::max(ga, gb))] = std::min(ga, gb);
         }
-        for (int t = 0; t + 1 < count; ++t)
+        for (int t = 0; t + 1 < count && !j.held; ++t)  // (a held join bounds its vertices as a boundary does)
             for (const SideRange *r : {&j.a, &j.b})
                 joined[static_cast<std::size_t>(r->block)][static_cast<std::size_t>(r->side)]
                       [static_cast<std::size_t>(std::min(r->at(t), r->at(t + 1)))] = 1;

@@ -29,6 +29,7 @@ Point at(const Grid &g, const SideRange &r, int t, int depth) {
 JoinKinks join_kinks(const BlockSet &set) {
     JoinKinks k;
     for (const Join &j : set.joins()) {
+        if (j.held) continue;  // a boundary the lines meet from either side
         const Grid &a = set.block(j.a.block)->grid(), &b = set.block(j.b.block)->grid();
         for (int t = 1; t + 1 < j.a.count(); ++t) {
             // The line across the join: two nodes into a, the joined node, two into b.

@@ -581,6 +581,40 @@ static void test_block_joined_to_itself_c(void **state) {
     }
 }
 
+/* A held join (eg2d_blocks_hold_join) keeps its nodes where the blocks'
+ * sides put them, its ends held vertices, and the kink measure leaves it
+ * out; free, the bump's middle line moves. Bad indices are refused. */
+static void test_held_join(void **state) {
+    (void)state;
+    enum { BI = 65, BJ = 33, MID = 32 };
+    static double x0[BI * BJ], y0[BI * BJ], x[BI * BJ], y[BI * BJ];
+    for (int held = 0; held < 2; ++held) {
+        eg2d_grid *grids[2];
+        eg2d_blocks *set;
+        double at = -1, near = -1, moved = 0;
+        assert_int_equal(bump_halves(BI, BJ, MID, grids, &set), EG2D_OK);
+        expect(eg2d_blocks_hold_join(set, 1, 1), EG2D_ERR_ARGUMENT, set, "join = 1: the set has joins 0..0");
+        expect(eg2d_blocks_hold_join(set, 0, 2), EG2D_ERR_ARGUMENT, set, "held = 2: must be 0 or 1");
+        if (held) assert_int_equal(eg2d_blocks_hold_join(set, 0, 1), EG2D_OK);
+        const int nj = BJ, ni = MID + 1; /* block 0: the left half; its IMAX is the join */
+        assert_int_equal(eg2d_initialize(grids[0], EG2D_INIT_TFI), EG2D_OK);
+        assert_int_equal(eg2d_get_coordinates(grids[0], x0, y0), EG2D_OK);
+        assert_int_equal(eg2d_blocks_solve(set), EG2D_OK);
+        assert_int_equal(eg2d_get_coordinates(grids[0], x, y), EG2D_OK);
+        for (int j = 0; j < nj; ++j) moved = fmax(moved, hypot(x[ni - 1 + ni * j] - x0[ni - 1 + ni * j], y[ni - 1 + ni * j] - y0[ni - 1 + ni * j]));
+        assert_int_equal(eg2d_blocks_get_kinks(set, &at, &near), EG2D_OK);
+        if (held) {
+            assert_true(moved == 0.0);
+            assert_true(at == 0.0 && near == 0.0); /* no free join to measure */
+        } else {
+            if (!(moved > 1e-3)) fail_msg("the free join moved %g", moved);
+            assert_true(at > 0.0);
+        }
+        eg2d_blocks_destroy(set);
+        eg2d_destroy(grids[0]), eg2d_destroy(grids[1]);
+    }
+}
+
 /* Block 0's monitor follows the set's run and can stop it. */
 static int calls, stop_at;
 static int count_and_stop(void *user, int iteration, double residual) {
@@ -622,6 +656,7 @@ int main(void) {
         cmocka_unit_test(test_walls_across_blocks),
         cmocka_unit_test(test_walled_step), cmocka_unit_test(test_walled_step_heights_node_by_node),
         cmocka_unit_test(test_block_joined_to_itself_o), cmocka_unit_test(test_block_joined_to_itself_c),
+        cmocka_unit_test(test_held_join),
         cmocka_unit_test(test_monitor),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -2268,6 +2268,30 @@ class BlockSets(unittest.TestCase):
             check_mesh(self, os.path.join(out, "ring_foam"))
             check_cgns_file(self, os.path.join(out, "ring.cgns"), ["body", "outer"])
 
+    def test_held_join(self):
+        """held = true keeps a join's nodes where the sides put them: the ring's
+        cut, held, is the radial line y = 0 after the run; free, it moves (the
+        ring's inner ellipse sheared, so that y = 0 is no line of symmetry)."""
+        ring = self.RING.replace('x = "cos(2*pi*s)"', 'x = "cos(2*pi*s) + 0.4*sin(2*pi*s)"')  # a sheared ellipse
+        for held in (False, True):
+            text = ring + ("held = true\n" if held else "")
+            with tempfile.TemporaryDirectory() as d:
+                path = os.path.join(d, "ring.toml")
+                with open(path, "w") as f:
+                    f.write(text.replace('formats = ["openfoam", "cgns", "su2"]', 'formats = ["plot3d-ascii"]'))
+                out = os.path.join(d, "out")
+                code, stdout, stderr = run("run", path, "-o", out)
+                self.assertEqual(code, 0, stdout + stderr)
+                with open(os.path.join(out, "ring.p3d")) as f:  # one grid: its size, x, y
+                    values = f.read().split()
+                ni, nj = int(values[0]), int(values[1])
+                y = [float(v) for v in values[2 + ni * nj:2 + 2 * ni * nj]]
+                cut = max(abs(y[ni * j]) for j in range(nj))  # node (0, j): the cut's
+                if held:
+                    self.assertEqual(cut, 0.0)
+                else:
+                    self.assertGreater(cut, 1e-3)
+
     def test_refused_set_says_why(self):
         """A set the library refuses before it runs (bench/two-element-airfoil's
         get-run-error.toml: a wake curve through the flap) is refused with the

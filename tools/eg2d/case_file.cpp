@@ -402,17 +402,19 @@ JoinEnd read_join_end(const Fields &parent, const char *key, const Case &c) {
 }
 
 // [[joins]]: a = {block, side, first, last}, b = {...}: node first of a is
-// node first of b, and so on (eg2d_blocks_join).
+// node first of b, and so on (eg2d_blocks_join); held = true keeps its
+// nodes where the sides put them (eg2d_blocks_hold_join).
 void read_joins(const Fields &top, Case &c) {
     if (!top.has("joins")) return;
     const toml::array &a = top.array("joins");
     for (std::size_t k = 0; k < a.size(); ++k) {
         const Location l = locate(top.where(), "joins[" + std::to_string(k) + "]", *a.get(k));
         if (!a.get(k)->is_table()) throw Failure(EXIT_CASE, l.str() + ": expected a table, found " + type_name(*a.get(k)));
-        Fields f(*a.get(k)->as_table(), l, {"a", "b"});
+        Fields f(*a.get(k)->as_table(), l, {"a", "b", "held"});
         f.finish();
         JoinSpec j;
         j.where = l;
+        j.held = f.boolean("held", false);
         j.a = read_join_end(f, "a", c);
         j.b = read_join_end(f, "b", c);
         const int na = std::abs(j.a.last - j.a.first) + 1, nb = std::abs(j.b.last - j.b.first) + 1;

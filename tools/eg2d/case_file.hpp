@@ -78,9 +78,10 @@ struct JoinEnd {  // one side of a join: nodes first..last of a block's side
     Location where;
 };
 
-struct JoinSpec {  // eg2d_blocks_join
+struct JoinSpec {  // eg2d_blocks_join (and _hold_join when held)
     JoinEnd a, b;
     Location where;
+    bool held = false;
 };
 
 struct Case {

@@ -377,10 +377,13 @@ int run_block_set(const Case &c, const RunOptions &o) {
         int index = 0;
         check_set(set, eg2d_blocks_add(set, grids[k].get(), &index), c.blocks[k].where);
     }
-    for (const JoinSpec &j : c.joins)
+    for (std::size_t k = 0; k < c.joins.size(); ++k) {
+        const JoinSpec &j = c.joins[k];
         check_set(set, eg2d_blocks_join(set, j.a.block, j.a.side, j.a.first, j.a.last, j.b.block, j.b.side, j.b.first,
                                         j.b.last),
                   j.where, names);
+        if (j.held) check_set(set, eg2d_blocks_hold_join(set, static_cast<int>(k), 1), j.where, names);
+    }
     // The library names a join by its blocks' indices and sides: the case
     // file's message names the join's key where the message is about one.
     if (const int status = eg2d_blocks_check(set); status != EG2D_OK) {

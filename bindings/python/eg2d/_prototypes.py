@@ -112,6 +112,7 @@ PROTOTYPES = {
     "eg2d_blocks_last_error": (c_char_p, [blocks_p]),
     "eg2d_blocks_add": (c_int, [blocks_p, grid_p, int_p]),
     "eg2d_blocks_join": (c_int, [blocks_p, c_int, c_int, c_int, c_int, c_int, c_int, c_int, c_int]),
+    "eg2d_blocks_hold_join": (c_int, [blocks_p, c_int, c_int]),
     "eg2d_blocks_check": (c_int, [blocks_p]),
     "eg2d_blocks_solve": (c_int, [blocks_p]),
     "eg2d_blocks_get_run": (c_int, [blocks_p, int_p, double_p, int_p]),

@@ -57,6 +57,10 @@ class Blocks(Handle):
         self._check(lib.eg2d_blocks_join(self._handle(), int(block_a), int(side_a), int(first_a), int(last_a),
                                          int(block_b), int(side_b), int(first_b), int(last_b)))
 
+    def hold_join(self, join, held=True):
+        """Join `join` (0 for the first) held where the blocks' sides put it, or free again."""
+        self._check(lib.eg2d_blocks_hold_join(self._handle(), int(join), 1 if held else 0))
+
     def check(self):
         """Raises what solve() would raise before it iterates."""
         self._check(lib.eg2d_blocks_check(self._handle()))
