@@ -145,6 +145,7 @@ public:
                 sor_->iterate(system_, c);
             }
             ++run_.iterations;
+            report_.iteration = static_cast<int>(std::min<long>(run_.iterations, 2147483647L));  // the notes' stamp
             run_.residual = c.residual(system_, extent_);
             if (!std::isfinite(run_.residual) || !c.finite() ||
                 (run_.residual > s_.divergence_factor * best && run_.residual > 1e-2))  // the generator's floor
