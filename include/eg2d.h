@@ -1250,8 +1250,10 @@ EG2D_API int eg2d_blocks_hold_join(eg2d_blocks *set, int join, int held);
  * what this version supports (above). Changes nothing. */
 EG2D_API int eg2d_blocks_check(eg2d_blocks *set);
 
-/* Checks the set, starts each block not yet initialised from its TFI grid
- * and iterates the set to block 0's tolerance (NUMERICS.md's residual over
+/* Checks the set (the joins on the blocks' sides as given), starts every
+ * block from its TFI grid when one is not initialised or the blocks' grids
+ * disagree at a join (a block initialised again alone after a solve) and
+ * iterates the set to block 0's tolerance (NUMERICS.md's residual over
  * the set, on the extent of the whole set). EG2D_OK: every block holds its
  * part of the solution, and eg2d_get_run_info and eg2d_get_run_event on
  * any block describe the set's run (its solver, the levels multigrid had

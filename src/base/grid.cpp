@@ -196,6 +196,14 @@ void Grid::set_side(Side s, const double *px, const double *py) {
     sides_set_ |= 1u << si;
 }
 
+double Grid::given_x(Side s, int p) const {
+    return side_set(s) ? user_x_[static_cast<int>(s)][static_cast<std::size_t>(p)] : x[side_node(ni_, nj_, s, p)];
+}
+
+double Grid::given_y(Side s, int p) const {
+    return side_set(s) ? user_y_[static_cast<int>(s)][static_cast<std::size_t>(p)] : y[side_node(ni_, nj_, s, p)];
+}
+
 void Grid::write_side(Side s, const double *px, const double *py) {
     const int n = side_length(s);
     for (int p = 0; p < n; ++p) {

@@ -34,6 +34,10 @@ public:
     int side_length(Side s) const;
     bool has_side(Side s) const;
     bool side_set(Side s) const { return (sides_set_ >> static_cast<int>(s)) & 1u; }
+    // Node p of side s as the user set it (the grid's own node where the
+    // side is not set): a set of blocks moves its joined nodes.
+    double given_x(Side s, int p) const;
+    double given_y(Side s, int p) const;
     bool boundary_complete() const;
 
     // Strong guarantee: on a throw nothing changed.

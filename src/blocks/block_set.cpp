@@ -86,6 +86,20 @@ void BlockSet::hold(int index, bool held) {
     joins_[static_cast<std::size_t>(index)].held = held;
 }
 
+bool BlockSet::grids_agree() const {
+    const double tol = kCornerTolerance * extent();
+    for (const Join &j : joins_) {
+        const Grid &ga = blocks_[static_cast<std::size_t>(j.a.block)]->grid();
+        const Grid &gb = blocks_[static_cast<std::size_t>(j.b.block)]->grid();
+        if (!ga.initialized() || !gb.initialized()) return false;
+        for (int t = 0; t < j.a.count(); ++t) {
+            const std::size_t ka = side_node(ga, j.a.side, j.a.at(t)), kb = side_node(gb, j.b.side, j.b.at(t));
+            if (!(std::hypot(ga.x[ka] - gb.x[kb], ga.y[ka] - gb.y[kb]) <= tol)) return false;
+        }
+    }
+    return true;
+}
+
 double BlockSet::extent() const {
     double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x, hi_x = -lo_x, hi_y = -lo_x;
     for (const Generator *g : blocks_) {
@@ -130,15 +144,18 @@ void BlockSet::check() const {
     for (const Join &j : joins_) {
         const Grid &ga = blocks_[static_cast<std::size_t>(j.a.block)]->grid();
         const Grid &gb = blocks_[static_cast<std::size_t>(j.b.block)]->grid();
+        // The sides as given: a solve moves the joined nodes, and a block
+        // initialised again after one has them back where its sides put them.
         for (int t = 0; t < j.a.count(); ++t) {
-            const std::size_t ka = side_node(ga, j.a.side, j.a.at(t)), kb = side_node(gb, j.b.side, j.b.at(t));
-            const double d = std::hypot(ga.x[ka] - gb.x[kb], ga.y[ka] - gb.y[kb]);
+            const double xa = ga.given_x(j.a.side, j.a.at(t)), ya = ga.given_y(j.a.side, j.a.at(t));
+            const double xb = gb.given_x(j.b.side, j.b.at(t)), yb = gb.given_y(j.b.side, j.b.at(t));
+            const double d = std::hypot(xa - xb, ya - yb);
             if (!(d <= tol))
                 fail(Failure::Boundary,
                      format("join %s to %s: node %d of block %d's side %s = (%.17g, %.17g) and node %d of block %d's "
                             "side %s = (%.17g, %.17g) are %.3g apart (tolerance %.3g)", describe(j.a).c_str(),
-                            describe(j.b).c_str(), j.a.at(t), j.a.block, side_name(j.a.side), ga.x[ka], ga.y[ka],
-                            j.b.at(t), j.b.block, side_name(j.b.side), gb.x[kb], gb.y[kb], d, tol));
+                            describe(j.b).c_str(), j.a.at(t), j.a.block, side_name(j.a.side), xa, ya, j.b.at(t),
+                            j.b.block, side_name(j.b.side), xb, yb, d, tol));
         }
     }
     // Connected: a union-find over the joins.

@@ -58,6 +58,9 @@ public:
     // the set's extent); the set connected. Failure::Argument, Boundary or
     // State naming the block, side and node.
     void check() const;
+    // Every block initialised and each join's nodes where both its blocks'
+    // grids have them now (within kCornerTolerance of the extent).
+    bool grids_agree() const;
     // The diagonal of the bounding box of every block's boundary.
     double extent() const;
 

@@ -209,11 +209,16 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
                                           "_NESTED) in this version", set.block(0)->solver_name()));
     // A block's own wall layer (its start re-spaced and its sides moved on
     // their own) is not the set's: with walls, the blocks start from TFI.
+    // A block started again alone has its joined nodes back on its sides
+    // while its neighbours keep theirs where the last solve put them: the
+    // whole set starts from TFI then.
     const bool walls = SetWallLayer::asks_walls(set);
+    bool fresh = !set.grids_agree();
+    for (int b = 0; b < set.size(); ++b) fresh = fresh || !set.block(b)->grid().initialized();
     for (int b = 0; b < set.size(); ++b) {
         Generator &g = *set.block(b);
         const WallLayerShape &own = g.layer();
-        if (!g.grid().initialized() || (walls && (own.graded || own.hybrid || own.rows > 0 || own.moved_sides)))
+        if (fresh || (walls && (own.graded || own.hybrid || own.rows > 0 || own.moved_sides)))
             g.initialize(EG2D_INIT_TFI, !walls);
     }
     const System system = set.block(0)->system();

@@ -615,6 +615,29 @@ static void test_held_join(void **state) {
     }
 }
 
+/* A block initialised again alone after a solve: the set checks its joins
+ * on the sides as given and starts again from TFI, to the same grid (it
+ * failed the check: its joined nodes back on its sides, its neighbours'
+ * where the solve left them). */
+static void test_block_initialised_again(void **state) {
+    (void)state;
+    eg2d_grid *grids[3];
+    eg2d_blocks *set;
+    static double x0[81 * 41], y0[81 * 41], x[81 * 41], y[81 * 41]; /* block 1: 81 x 41 */
+    assert_int_equal(step_blocks(25, 81, 41, 17, grids, &set), EG2D_OK);
+    assert_int_equal(eg2d_blocks_solve(set), EG2D_OK);
+    assert_int_equal(eg2d_get_coordinates(grids[1], x0, y0), EG2D_OK);
+    assert_int_equal(eg2d_initialize(grids[0], EG2D_INIT_TFI), EG2D_OK);
+    assert_int_equal(eg2d_blocks_check(set), EG2D_OK);
+    if (eg2d_blocks_solve(set) != EG2D_OK) fail_msg("%s", eg2d_blocks_last_error(set));
+    assert_int_equal(eg2d_get_coordinates(grids[1], x, y), EG2D_OK);
+    double d = 0.0;
+    for (int k = 0; k < 81 * 41; ++k) d = fmax(d, hypot(x[k] - x0[k], y[k] - y0[k]));
+    if (!(d < 1e-7)) fail_msg("the second solve is %g from the first", d);
+    eg2d_blocks_destroy(set);
+    eg2d_destroy(grids[0]), eg2d_destroy(grids[1]), eg2d_destroy(grids[2]);
+}
+
 /* Block 0's monitor follows the set's run and can stop it. */
 static int calls, stop_at;
 static int count_and_stop(void *user, int iteration, double residual) {
@@ -656,7 +679,7 @@ int main(void) {
         cmocka_unit_test(test_walls_across_blocks),
         cmocka_unit_test(test_walled_step), cmocka_unit_test(test_walled_step_heights_node_by_node),
         cmocka_unit_test(test_block_joined_to_itself_o), cmocka_unit_test(test_block_joined_to_itself_c),
-        cmocka_unit_test(test_held_join),
+        cmocka_unit_test(test_held_join), cmocka_unit_test(test_block_initialised_again),
         cmocka_unit_test(test_monitor),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
