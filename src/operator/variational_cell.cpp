@@ -4,12 +4,32 @@
 
 #include "operator/smoothness_cell.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <limits>
 
 namespace eg2d {
 
 namespace {
+
+// The smallest alpha > 0 at which c0 + c1 alpha + c2 alpha^2 (c0 > 0) is 0, or infinity.
+double first_root(double c0, double c1, double c2) {
+    const double inf = std::numeric_limits<double>::infinity();
+    if (c2 == 0.0) return c1 < 0.0 ? -c0 / c1 : inf;
+    const double disc = c1 * c1 - 4.0 * c2 * c0;
+    if (disc < 0.0) return inf;  // c2 > 0 and no real root: positive for every alpha
+    const double s = std::sqrt(disc);
+    // Roots without cancellation: q = -(c1 + sign(c1) s)/2, roots q/c2 and c0/q.
+    const double q = -0.5 * (c1 + (c1 >= 0.0 ? s : -s));
+    double best = inf;
+    if (q != 0.0) {
+        const double r1 = q / c2, r2 = c0 / q;
+        if (r1 > 0.0) best = std::min(best, r1);
+        if (r2 > 0.0) best = std::min(best, r2);
+    }
+    return best;
+}
 
 // Adds w f^2 for f with gradient df (8 entries) and constant Hessian hf;
 // `id` is the identity on f's two difference vectors (the convex form).
@@ -130,6 +150,23 @@ double cell_value(const Functional &F, double mean, const double x[4], const dou
     double smooth = 0.0;
     if (has_corner_terms(F)) smooth = corner_terms_value(F, x, y);
     return 0.5 * F.spacing * s + F.area * area * area + F.orthogonality * o + smooth;
+}
+
+double cell_fold_limit(const double x[4], const double y[4], const double dx[4], const double dy[4], int orientation) {
+    double limit = std::numeric_limits<double>::infinity();
+    // Each corner's turn (next - m) x (prev - m) along the step is
+    // quadratic in alpha; a corner already flat or folded sets no limit.
+    for (int m = 0; m < 4; ++m) {
+        const int n = (m + 1) % 4, p = (m + 3) % 4;
+        const double ax = x[n] - x[m], ay = y[n] - y[m], bx = x[p] - x[m], by = y[p] - y[m];
+        const double dax = dx[n] - dx[m], day = dy[n] - dy[m], dbx = dx[p] - dx[m], dby = dy[p] - dy[m];
+        const double c0 = orientation * (ax * by - ay * bx);
+        if (!(c0 > 0.0)) continue;
+        const double c1 = orientation * (ax * dby - ay * dbx + dax * by - day * bx);
+        const double c2 = orientation * (dax * dby - day * dbx);
+        limit = std::min(limit, first_root(c0, c1, c2));
+    }
+    return limit;
 }
 
 }  // namespace eg2d

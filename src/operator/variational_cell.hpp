@@ -45,4 +45,10 @@ void cell_terms(const Functional &F, double mean, const double x[4], const doubl
 // The cell's share of V alone (the line search's energy), the same way.
 double cell_value(const Functional &F, double mean, const double x[4], const double y[4]);
 
+// The smallest alpha > 0 at which a corner of the cell with corners
+// (x + alpha dx, y + alpha dy) turns flat against `orientation` (+1, -1), or
+// infinity: each corner's turn is quadratic in alpha; a corner already flat
+// or folded sets no limit (the Newton steps' fold guard).
+double cell_fold_limit(const double x[4], const double y[4], const double dx[4], const double dy[4], int orientation);
+
 }  // namespace eg2d

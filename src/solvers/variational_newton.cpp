@@ -27,10 +27,14 @@ constexpr int kHalvings = 30;
 // to predicted decrease, and the radius's shrink and growth factors.
 constexpr double kRhoLow = 0.25, kRhoHigh = 0.75, kRadiusShrink = 0.25, kRadiusGrowth = 2.0;
 // Nonlinear elimination (eliminate()): the fraction of the unknowns where the
-// Newton direction is largest, the rings of neighbours added round them and
-// the symmetric point sweeps over them after each step.
-constexpr double kEliminated = 0.01;
-constexpr int kEliminationRings = 1, kEliminationSweeps = 4;
+// Newton direction is largest, the rings of neighbours added round them, and
+// the Newton steps on that patch (variational_patch.hpp) at most, stopping
+// once its gradient is down by kPatchReduction. Measured on the swan at 257^2
+// (bench/RESULTS.md): 5% of the nodes and 2 rings left twice the global
+// steps; 20% and 2 rings fewer global steps but more time on the patch.
+constexpr double kEliminated = 0.1;
+constexpr int kEliminationRings = 4, kPatchSteps = 8;
+constexpr double kPatchReduction = 1e-2;
 constexpr double kArmijo = 1e-4;
 // Grid sequencing (sequence()): coarse levels down to kCoarsestNodes a side,
 // each minimised to kCoarseTolerance in at most kCoarseSteps Newton steps.
@@ -42,24 +46,6 @@ double dot(const std::vector<Vec2> &a, const std::vector<Vec2> &b) {
     double s = 0.0;
     for (std::size_t k = 0; k < a.size(); ++k) s += a[k].x * b[k].x + a[k].y * b[k].y;
     return s;
-}
-
-// The smallest alpha > 0 at which c0 + c1 alpha + c2 alpha^2 (c0 > 0) is 0, or infinity.
-double first_root(double c0, double c1, double c2) {
-    const double inf = std::numeric_limits<double>::infinity();
-    if (c2 == 0.0) return c1 < 0.0 ? -c0 / c1 : inf;
-    const double disc = c1 * c1 - 4.0 * c2 * c0;
-    if (disc < 0.0) return inf;  // c2 > 0 and no real root: positive for every alpha
-    const double s = std::sqrt(disc);
-    // Roots without cancellation: q = -(c1 + sign(c1) s)/2, roots q/c2 and c0/q.
-    const double q = -0.5 * (c1 + (c1 >= 0.0 ? s : -s));
-    double best = inf;
-    if (q != 0.0) {
-        const double r1 = q / c2, r2 = c0 / q;
-        if (r1 > 0.0) best = std::min(best, r1);
-        if (r2 > 0.0) best = std::min(best, r2);
-    }
-    return best;
 }
 
 // The mean of the cells' signed areas (their sum is fixed by the boundary).
@@ -199,18 +185,7 @@ double VariationalNewton::fold_limit(const double *gx, const double *gy, int ori
                 dx[m] = d_[u].x;
                 dy[m] = d_[u].y;
             }
-            // Each corner's turn (next - m) x (prev - m) along the step is
-            // quadratic in alpha; a corner already flat or folded sets no limit.
-            for (int m = 0; m < 4; ++m) {
-                const int n = (m + 1) % 4, p = (m + 3) % 4;
-                const double ax = x[n] - x[m], ay = y[n] - y[m], bx = x[p] - x[m], by = y[p] - y[m];
-                const double dax = dx[n] - dx[m], day = dy[n] - dy[m], dbx = dx[p] - dx[m], dby = dy[p] - dy[m];
-                const double c0 = orientation * (ax * by - ay * bx);
-                if (!(c0 > 0.0)) continue;
-                const double c1 = orientation * (ax * dby - ay * dbx + dax * by - day * bx);
-                const double c2 = orientation * (dax * dby - day * dbx);
-                limit = std::min(limit, first_root(c0, c1, c2));
-            }
+            limit = std::min(limit, cell_fold_limit(x, y, dx, dy, orientation));
         }
     return limit;
 }
@@ -549,16 +524,18 @@ void VariationalNewton::step(const Connectivity &conn, double *x, double *y, con
 }
 
 // Nonlinear elimination (Lanzkron, Rose & Wilkes 1996; Cai & Li 2011) after
-// a step: the nodes where the step's direction was largest (|d|^2 D), a
-// ring of neighbours round them, relaxed by a few symmetric sweeps of point
-// Newton steps (the FAS smoother's, operator.hpp's relax_variational:
-// fold-guarded, each lowering V) with the rest of the grid held. Where the
-// steps are long the barriers' strong nonlinearity sits in a few places
-// (swan, a large, 129^2: 1% of the nodes carry 40-60% of |d|_D^2, near
-// one side), which limits the global step; relaxing them there cut the
-// Newton steps by 10-25% (bench/RESULTS.md) for a few percent of a step's
-// cost. Not after a step the fold limit shortened: on the antenna (a large)
-// that changed the minimum the run ends at (65^2: largest angle deviation
+// a step: the nodes where the step's direction was largest (|d|^2 D) and
+// kEliminationRings rings of neighbours round them, minimised over with the
+// rest of the grid held by Newton steps on that patch (variational_patch.hpp).
+// Where the steps are long the barriers' strong nonlinearity sits in a
+// strip of nodes that move together (swan, a large, 129^2: 1% of the nodes
+// carry 40-60% of |d|_D^2, along the lower side), which limits the global
+// quadratic model's reach; solved for there, the global Newton steps fall
+// 4-6 fold (bench/RESULTS.md). Coupled Newton on the patch, not point sweeps
+// (the earlier elimination: 4 symmetric sweeps over 1% of the nodes cut the
+// steps by 10-25% only): the strip's nodes move together. Not after a step
+// the fold limit shortened: on the antenna (a large) that changed the
+// minimum the run ends at (65^2, with point sweeps: largest angle deviation
 // 79.9 against 79.2 degrees, area ratio 41.0 against 40.1).
 void VariationalNewton::eliminate(const Connectivity &conn, double *x, double *y, const Functional &F) {
     const std::size_t n = H_.nodes();
@@ -593,16 +570,7 @@ void VariationalNewton::eliminate(const Connectivity &conn, double *x, double *y
     std::vector<std::size_t> set;
     for (std::size_t u = 0; u < n; ++u)
         if (in[u] && H_.unknown[u]) set.push_back(u);
-    Level L;
-    L.conn = &conn;
-    L.x = x;
-    L.y = y;
-    L.functional = &F;
-    for (int sweep = 0; sweep < kEliminationSweeps; ++sweep) {
-        for (std::size_t u : set) relax_variational(L, static_cast<int>(u % nc_), static_cast<int>(u / nc_), 1.0);
-        for (std::size_t m = set.size(); m-- > 0;)
-            relax_variational(L, static_cast<int>(set[m] % nc_), static_cast<int>(set[m] / nc_), 1.0);
-    }
+    patch_.solve(conn, H_, set, x, y, F, mean_, kPatchSteps, kPatchReduction);
 }
 
 // The trust region's radius after a step of alpha d (||d||_D = dnorm) that

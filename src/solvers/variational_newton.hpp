@@ -17,8 +17,9 @@
 //     corner of any cell turning flat, so no step folds a cell;
 //   - the trust region's radius from the steps the line search took and the
 //     ratio of V's actual to predicted decrease (update_radius());
-//   - nonlinear elimination after each step: point Newton sweeps where the
-//     direction was largest (eliminate());
+//   - nonlinear elimination after each step: Newton steps on the patch of
+//     nodes where the direction was largest, the rest held (eliminate(),
+//     variational_patch.hpp);
 //   - a Levenberg shift mu D (D: the convex Hessian's diagonal) on both
 //     matrices after a step that found no descent, shrinking again after
 //     full steps; the run notes the first one.
@@ -43,6 +44,7 @@
 #include "solvers/block_multigrid.hpp"
 #include "solvers/newton_progress.hpp"
 #include "solvers/solver.hpp"
+#include "solvers/variational_patch.hpp"
 
 namespace eg2d {
 
@@ -79,6 +81,7 @@ private:
     bool periodic_ = false;
     BlockStencil H_, C_;          // the exact Hessian, the convex one (+ the shift)
     BlockMultigrid mg_;
+    PatchNewton patch_;           // nonlinear elimination's local Newton
     std::vector<Vec2> g_, d_, r_, z_, p_, q_;
     std::vector<double> diag_;    // |H|'s diagonal scale per node, for the shift
     double shift_ = 0.0;
