@@ -94,6 +94,11 @@ public:
     // (eg2d_set_wall_spacing_nodes; empty: the side's one height, if any);
     // forgotten with the topology.
     std::array<std::vector<double>, 4> wall_node_spacing;
+    // Side s's height at its node k: its own there, else `one` (the side's one height).
+    double wall_height_at(Side s, int k, double one) const {
+        const std::vector<double> &v = wall_node_spacing[static_cast<std::size_t>(s)];
+        return v.size() == static_cast<std::size_t>(side_length(s)) ? v[static_cast<std::size_t>(k)] : one;
+    }
 
     // Diagonal of the bounding box of the boundary ring: the L of NUMERICS.md.
     double extent() const;

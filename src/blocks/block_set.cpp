@@ -86,16 +86,27 @@ void BlockSet::hold(int index, bool held) {
     joins_[static_cast<std::size_t>(index)].held = held;
 }
 
+double BlockSet::join_gap(const Join &j, int t, bool given, double &xa, double &ya, double &xb, double &yb) const {
+    const Grid &ga = blocks_[static_cast<std::size_t>(j.a.block)]->grid();
+    const Grid &gb = blocks_[static_cast<std::size_t>(j.b.block)]->grid();
+    const int pa = j.a.at(t), pb = j.b.at(t);
+    const std::size_t ka = side_node(ga, j.a.side, pa), kb = side_node(gb, j.b.side, pb);
+    xa = given ? ga.given_x(j.a.side, pa) : ga.x[ka];
+    ya = given ? ga.given_y(j.a.side, pa) : ga.y[ka];
+    xb = given ? gb.given_x(j.b.side, pb) : gb.x[kb];
+    yb = given ? gb.given_y(j.b.side, pb) : gb.y[kb];
+    return std::hypot(xa - xb, ya - yb);
+}
+
 bool BlockSet::grids_agree() const {
     const double tol = kCornerTolerance * extent();
     for (const Join &j : joins_) {
-        const Grid &ga = blocks_[static_cast<std::size_t>(j.a.block)]->grid();
-        const Grid &gb = blocks_[static_cast<std::size_t>(j.b.block)]->grid();
-        if (!ga.initialized() || !gb.initialized()) return false;
-        for (int t = 0; t < j.a.count(); ++t) {
-            const std::size_t ka = side_node(ga, j.a.side, j.a.at(t)), kb = side_node(gb, j.b.side, j.b.at(t));
-            if (!(std::hypot(ga.x[ka] - gb.x[kb], ga.y[ka] - gb.y[kb]) <= tol)) return false;
-        }
+        if (!blocks_[static_cast<std::size_t>(j.a.block)]->grid().initialized() ||
+            !blocks_[static_cast<std::size_t>(j.b.block)]->grid().initialized())
+            return false;
+        double xa, ya, xb, yb;
+        for (int t = 0; t < j.a.count(); ++t)
+            if (!(join_gap(j, t, false, xa, ya, xb, yb) <= tol)) return false;
     }
     return true;
 }
@@ -142,14 +153,11 @@ void BlockSet::check() const {
     }
     const double tol = kCornerTolerance * extent();
     for (const Join &j : joins_) {
-        const Grid &ga = blocks_[static_cast<std::size_t>(j.a.block)]->grid();
-        const Grid &gb = blocks_[static_cast<std::size_t>(j.b.block)]->grid();
         // The sides as given: a solve moves the joined nodes, and a block
         // initialised again after one has them back where its sides put them.
         for (int t = 0; t < j.a.count(); ++t) {
-            const double xa = ga.given_x(j.a.side, j.a.at(t)), ya = ga.given_y(j.a.side, j.a.at(t));
-            const double xb = gb.given_x(j.b.side, j.b.at(t)), yb = gb.given_y(j.b.side, j.b.at(t));
-            const double d = std::hypot(xa - xb, ya - yb);
+            double xa, ya, xb, yb;
+            const double d = join_gap(j, t, true, xa, ya, xb, yb);
             if (!(d <= tol))
                 fail(Failure::Boundary,
                      format("join %s to %s: node %d of block %d's side %s = (%.17g, %.17g) and node %d of block %d's "

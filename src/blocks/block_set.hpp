@@ -65,6 +65,10 @@ public:
     double extent() const;
 
 private:
+    // The distance between join j's node t in its two blocks, on the sides
+    // as given or on the grids as they are now; the two nodes in (xa, ya), (xb, yb).
+    double join_gap(const Join &j, int t, bool given, double &xa, double &ya, double &xb, double &yb) const;
+
     std::vector<Generator *> blocks_;  // nullptr: forgotten
     std::vector<Join> joins_;
 };

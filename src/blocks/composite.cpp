@@ -687,28 +687,24 @@ long Composite::nodes() const {
     return n;
 }
 
-void Composite::save() {
-    saved_x_.resize(blocks_.size());
-    saved_y_.resize(blocks_.size());
-    for (std::size_t b = 0; b < blocks_.size(); ++b) {
-        saved_x_[b] = blocks_[b].x;  // capacity kept: no allocation after the first sweep
-        saved_y_[b] = blocks_[b].y;
-    }
-}
+void Composite::save() { snapshot(saved_); }
 
-void Composite::restore() {
+void Composite::restore() { restore(saved_); }
+
+// Into s, whose vectors keep their capacity: no allocation after the first
+// guarded sweep.
+void Composite::snapshot(Snapshot &s) const {
+    s.x.resize(blocks_.size());
+    s.y.resize(blocks_.size());
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
-        blocks_[b].x = saved_x_[b];
-        blocks_[b].y = saved_y_[b];
+        s.x[b] = blocks_[b].x;
+        s.y[b] = blocks_[b].y;
     }
 }
 
 Composite::Snapshot Composite::snapshot() const {
     Snapshot s;
-    for (const Block &blk : blocks_) {
-        s.x.push_back(blk.x);
-        s.y.push_back(blk.y);
-    }
+    snapshot(s);
     return s;
 }
 
@@ -724,7 +720,7 @@ double Composite::move() const {
     for (std::size_t b = 0; b < blocks_.size(); ++b)
         for (std::size_t k = 0; k < blocks_[b].x.size(); ++k) {
             const double d =
-                std::max(std::fabs(blocks_[b].x[k] - saved_x_[b][k]), std::fabs(blocks_[b].y[k] - saved_y_[b][k]));
+                std::max(std::fabs(blocks_[b].x[k] - saved_.x[b][k]), std::fabs(blocks_[b].y[k] - saved_.y[b][k]));
             if (!std::isfinite(d)) return std::numeric_limits<double>::infinity();
             m = std::max(m, d);
         }

@@ -171,6 +171,7 @@ public:
         std::vector<std::vector<double>> x, y;
     };
     Snapshot snapshot() const;
+    void snapshot(Snapshot &s) const;
     void restore(const Snapshot &s);
 
 private:
@@ -257,7 +258,7 @@ private:
     void find_vertices();
     double vertex_residual() const;  // the largest |vertex_equation|
     long unknowns_ = 0;
-    std::vector<std::vector<double>> saved_x_, saved_y_;
+    Snapshot saved_;  // the guarded sweep's (save, restore, move)
 };
 
 }  // namespace eg2d

@@ -209,6 +209,17 @@ SetWallLayer::SetWallLayer(const BlockSet &set, const Composite &c) {
             }
 }
 
+// The height block b asks of its side `side` at its node (i, j) (0: the
+// node is not on that side, or the side is no wall there).
+double SetWallLayer::height_on(int b, Side side, int i, int j) const {
+    const std::size_t k = static_cast<std::size_t>(b);
+    const std::vector<double> &v = heights_[k][static_cast<std::size_t>(side)];
+    if (v.empty()) return 0.0;
+    const int p = side == Side::JMin || side == Side::JMax ? i : j;
+    const NodeIJ on = side_ij(ni_[k], nj_[k], side, p);
+    return on.i == i && on.j == j && v[static_cast<std::size_t>(p)] > 0.0 ? v[static_cast<std::size_t>(p)] : 0.0;
+}
+
 // The first cell asked where a line leaves node `at` toward node `next`:
 // the least height of a wall side through `at` whose block's line off the
 // side is that line (0: none).
@@ -217,16 +228,13 @@ double SetWallLayer::height_leaving(const Composite &c, int at, int next, WallAt
     for (const NodeRef &n : copies_[static_cast<std::size_t>(at)]) {
         const std::size_t b = static_cast<std::size_t>(n.b);
         for (int s = 0; s < 4; ++s) {
-            const std::vector<double> &v = heights_[b][static_cast<std::size_t>(s)];
-            if (v.empty()) continue;
             const Side side = static_cast<Side>(s);
+            const double hs = height_on(n.b, side, n.i, n.j);
+            if (!(hs > 0.0)) continue;
             const bool along_i = side == Side::JMin || side == Side::JMax;
             const int p = along_i ? n.i : n.j;
-            const NodeIJ on = side_ij(ni_[b], nj_[b], side, p);
-            if (on.i != n.i || on.j != n.j || !(v[static_cast<std::size_t>(p)] > 0.0)) continue;
             const NodeIJ in = side_ij(ni_[b], nj_[b], side, p, 1);
             if (id(n.b, in.i, in.j) != next) continue;
-            const double hs = v[static_cast<std::size_t>(p)];
             if (h > 0.0 && h <= hs) continue;
             h = hs;
             // The normal: perpendicular to the side's central difference
@@ -374,7 +382,12 @@ SetWallLayer::Graded SetWallLayer::graded_starts(const std::vector<Stretch> &all
 // down to not at all at the end. Scaled and turned alike up to it, the
 // step's face's rows sheared against the join's row above them (pitzDaily:
 // controls of 1.6 along it, and multigrid diverged).
-double SetWallLayer::taper(const Composite &c, const WallAt &w, const Graded &graded) const {
+// `turning`: the turn fades out so too toward an end where another wall of
+// the block meets it: the lines beside that wall keep its first cells,
+// which a line turned to this wall's normal would move (the walled step's
+// floor, its first cells node by node rising 2.4% a node off the face:
+// the face's rows turned level over 60 cells held them 24% low).
+double SetWallLayer::taper(const Composite &c, const WallAt &w, const Graded &graded, bool turning) const {
     const std::size_t b = static_cast<std::size_t>(w.b);
     const int length = w.side == Side::JMin || w.side == Side::JMax ? ni_[b] : nj_[b];
     double f = 1.0;
@@ -382,35 +395,12 @@ double SetWallLayer::taper(const Composite &c, const WallAt &w, const Graded &gr
         const NodeIJ on = side_ij(ni_[b], nj_[b], w.side, e), in = side_ij(ni_[b], nj_[b], w.side, e, 1);
         // (a held side is no line the solve moves: kept_sides says how far
         // it is from the layer)
-        if (graded.count({id(w.b, on.i, on.j), id(w.b, in.i, in.j)}) || !c.moves(w.b, in.i, in.j, true)) continue;
-        const double t = std::min(1.0, std::abs(w.p - e) / static_cast<double>(kTurnTaper));
-        f = std::min(f, t * t * (3.0 - 2.0 * t));
-    }
-    return f;
-}
-
-// The turn fades out too toward an end of its wall where another wall
-// meets it: the lines beside that wall keep its first cells, which a line
-// turned to this wall's normal would move (the walled step's floor, its
-// first cells node by node rising 2.4% a node off the face: the face's
-// rows turned level over 60 cells held them 24% low).
-double SetWallLayer::turn_taper(const Composite &c, const WallAt &w, const Graded &graded) const {
-    const std::size_t b = static_cast<std::size_t>(w.b);
-    const int length = w.side == Side::JMin || w.side == Side::JMax ? ni_[b] : nj_[b];
-    double f = taper(c, w, graded);
-    for (int e : {0, length - 1}) {
-        const NodeIJ in = side_ij(ni_[b], nj_[b], w.side, e, 1);
+        const bool ungraded =
+            !graded.count({id(w.b, on.i, on.j), id(w.b, in.i, in.j)}) && c.moves(w.b, in.i, in.j, true);
         bool wall = false;  // the node one in from the corner is on another wall of the block
-        for (int s = 0; s < 4 && !wall; ++s) {
-            const std::vector<double> &v = heights_[b][static_cast<std::size_t>(s)];
-            if (v.empty() || static_cast<Side>(s) == w.side) continue;
-            const Side side = static_cast<Side>(s);
-            const bool along_i = side == Side::JMin || side == Side::JMax;
-            const int p = along_i ? in.i : in.j;
-            const NodeIJ on = side_ij(ni_[b], nj_[b], side, p);
-            wall = on.i == in.i && on.j == in.j && v[static_cast<std::size_t>(p)] > 0.0;
-        }
-        if (!wall) continue;
+        for (int s = 0; turning && s < 4 && !wall; ++s)
+            wall = static_cast<Side>(s) != w.side && height_on(w.b, static_cast<Side>(s), in.i, in.j) > 0.0;
+        if (!ungraded && !wall) continue;
         const double t = std::min(1.0, std::abs(w.p - e) / static_cast<double>(kTurnTaper));
         f = std::min(f, t * t * (3.0 - 2.0 * t));
     }
@@ -435,7 +425,7 @@ void SetWallLayer::turn_to_normals(Composite &c) const {
             if (!(h > 0.0)) continue;
             const WallAt &wall = end == 0 ? s.first_wall : s.last_wall;
             const Vec2 n = wall.normal;
-            const double lateral = turn_taper(c, wall, graded);
+            const double lateral = taper(c, wall, graded, true);
             const std::vector<double> w = fade(cells, end == 0, end == 1);
             const Vec2 o = end == 0 ? p.front() : p.back();
             for (int k = 1; k < cells; ++k) {

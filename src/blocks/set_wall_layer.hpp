@@ -78,8 +78,8 @@ private:
     // The lines graded from a wall, by their first two nodes.
     using Graded = std::set<std::pair<int, int>>;
     static Graded graded_starts(const std::vector<Stretch> &all);
-    double taper(const Composite &c, const WallAt &w, const Graded &graded) const;
-    double turn_taper(const Composite &c, const WallAt &w, const Graded &graded) const;
+    double taper(const Composite &c, const WallAt &w, const Graded &graded, bool turning = false) const;
+    double height_on(int b, Side side, int i, int j) const;
     double height_leaving(const Composite &c, int id, int next, WallAt &wall) const;
     // The second pass's arc lengths of s's nodes: its first cells moved to
     // their heights, no node further than a first cell's error.

@@ -463,11 +463,9 @@ private:
         // the updates here would turn its first line to the normal only.
         const std::vector<double> &graded = graded_.heights[static_cast<std::size_t>(side)];
         const bool angle_only = height_[side] == 0.0 || (!graded.empty() && !graded_.frozen);
-        const std::vector<double> &given = g.wall_node_spacing[static_cast<std::size_t>(side)];
-        double h = angle_only         ? 0.0
-                   : !graded.empty()  ? graded[static_cast<std::size_t>(k)]
-                   : given.size() == static_cast<std::size_t>(n) ? given[static_cast<std::size_t>(k)]
-                                                                : height_[side];
+        double h = angle_only        ? 0.0
+                   : !graded.empty() ? graded[static_cast<std::size_t>(k)]
+                                     : g.wall_height_at(static_cast<Side>(side), k, height_[side]);
         if (h == 0.0) {  // orthogonality only: keep the current normal height
             h = (g.x[s.c] - g.x[kw]) * nx + (g.y[s.c] - g.y[kw]) * ny;
             if (!(h > 0.0)) h = std::hypot(g.x[s.c] - g.x[kw], g.y[s.c] - g.y[kw]);

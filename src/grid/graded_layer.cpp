@@ -57,9 +57,7 @@ std::vector<double> wall_node_heights(const Grid &g, Side s, const std::array<do
     const double h = height[static_cast<std::size_t>(s)];
     const int n = g.side_length(s);
     const bool ring = g.topology() == Topology::O;
-    // The height asked at node k: the side's own node by node, if given.
-    const std::vector<double> &given = g.wall_node_spacing[static_cast<std::size_t>(s)];
-    auto asked = [&](int k) { return given.size() == static_cast<std::size_t>(n) ? given[static_cast<std::size_t>(k)] : h; };
+    auto asked = [&](int k) { return g.wall_height_at(s, k, h); };
     std::vector<double> v(static_cast<std::size_t>(n), -1.0);
     for (const Patch &p : resolve_patches(g))
         if (p.side == s && p.type == PatchType::Wall)
