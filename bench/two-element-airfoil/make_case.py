@@ -3,7 +3,8 @@
 slotted flap, van den Berg & Oskam 1979) as a set of six blocks for the eg2d
 command: bench/two-element-airfoil/README.md says what the library makes of it.
 
-    make_case.py [--first-cell H] [--outflow X] [--n-far N] [--n-slot N] [-o CASE.toml]
+    make_case.py [--first-cell H] [--outflow X] [--n-far N] [--n-slot N] [--held]
+                 [--legs D [--n-leg N] [--alpha A] [--beta B]] [-o CASE.toml]
 
 The walls are the coordinates of nlr7301-main.dat and nlr7301-flap.dat, as
 points of the case (splines through them, nodes by Vinokur's (1983)
@@ -30,7 +31,14 @@ ap.add_argument("--outflow", type=float, default=10.5, help="x of the outflow (t
 ap.add_argument("--n-far", type=int, default=65, help="nodes from the walls and wakes to the far field")
 ap.add_argument("--n-slot", type=int, default=49, help="nodes across the slot")
 ap.add_argument("--held", action="store_true",
-                help="hold the slot's line, the slot's end and both wakes where the case puts them (eg2d_blocks_hold_join)")
+                help="hold the slot's line, the slot's end, both wakes (and the legs) where the case puts them (eg2d_blocks_hold_join)")
+ap.add_argument("--legs", type=float, default=0.0,
+                help="start the slot's line and the lines from the cove's corner and the flap's nose this far off the walls, at the end of a line normal to them (0: on the walls)")
+ap.add_argument("--alpha", type=float, default=15.0,
+                help="with --legs: the line to the far field and the flap's stagnation line turn this far (degrees) from their legs")
+ap.add_argument("--beta", type=float, default=60.0,
+                help="with --legs: the slot's line leaves each leg's end this far (degrees) from the leg's direction")
+ap.add_argument("--n-leg", type=int, default=17, help="nodes along each such normal line")
 ap.add_argument("-o", default=os.path.join(HERE, "two-element-airfoil.toml"))
 args = ap.parse_args()
 
@@ -79,10 +87,41 @@ A, B = circle(PHIA), circle(PHIB)
 # flap's stagnation line leave 90 degrees further round.
 cove_dir = angle(M[IC + 1] - M[IC])
 slot0, slot1 = cove_dir - 45.0, angle(fup[1] - fup[0]) + 50.0
-Ls = np.linalg.norm(FL - C)
-lines = {"slot": [FL, FL + Ls / 3 * u(slot1), C + Ls / 3 * u(slot0), C],
-         "lc": [C, C + 0.4 * u(slot0 - 90.0), A - 4.0 * u(PHIA), A],
-         "stag": [FL, FL + 0.4 * u(slot1 + 90.0), B - 4.0 * u(PHIB), B]}
+LEGS = args.legs > 0
+ALPHA, BETA = args.alpha, args.beta
+if LEGS:
+    # The lines meet the walls only at 90 degrees: a normal line ("leg") from
+    # the cove's corner and from the flap's nose, shared by the two blocks
+    # beside it; at each leg's end the slot's line turns BETA degrees toward
+    # the other leg's end and the line to the far field (the flap's
+    # stagnation line) ALPHA degrees away from it.
+    def normal(P, i):
+        d = P[i + 1] - P[i - 1]
+        return np.array([d[1], -d[0]]) / np.hypot(*d)
+    nc, nf = normal(M, IC), normal(F, IFL)
+    C1, F1 = C + args.legs * nc, FL + args.legs * nf
+    Ls = np.linalg.norm(F1 - C1)
+
+    def fork(n, toward):
+        """The leg's direction n turned BETA degrees toward the point toward, and ALPHA away from it."""
+        def rot(t):
+            t = np.radians(t)
+            return np.array([np.cos(t) * n[0] - np.sin(t) * n[1], np.sin(t) * n[0] + np.cos(t) * n[1]])
+        side = 1.0 if np.cross(n, toward) > 0 else -1.0
+        return rot(side * BETA), rot(-side * ALPHA)
+    (sc, lc), (sf, st) = fork(nc, F1 - C1), fork(nf, C1 - F1)
+    lines = {"slot": [F1, F1 + Ls / 3 * sf, C1 + Ls / 3 * sc, C1],
+             "lc": [C1, C1 + 0.1 * lc, A - 4.0 * u(PHIA), A],
+             "stag": [F1, F1 + 0.1 * st, B - 4.0 * u(PHIB), B]}
+    h, n = float(args.first_cell), args.n_leg
+    q = np.linspace(1.0001, 2.0, 200001)   # the legs' nodes grow geometrically from the wall's first cell
+    q = q[np.argmin(np.abs(h * (q**(n - 1) - 1) / (q - 1) - args.legs))]
+    HL = f"{h * q**(n - 2):.3g}"
+else:
+    Ls = np.linalg.norm(FL - C)
+    lines = {"slot": [FL, FL + Ls / 3 * u(slot1), C + Ls / 3 * u(slot0), C],
+             "lc": [C, C + 0.4 * u(slot0 - 90.0), A - 4.0 * u(PHIA), A],
+             "stag": [FL, FL + 0.4 * u(slot1 + 90.0), B - 4.0 * u(PHIB), B]}
 # The wakes leave along their trailing edges' bisectors and end level at the outflow.
 te_m = (angle(upper[-1] - upper[-2]) + angle(M[-1] - M[-2])) / 2
 te_f = (angle(fup[-1] - fup[-2]) + angle(flo[-1] - flo[-2])) / 2
@@ -150,6 +189,75 @@ def main_wake(side):
             f"{dist('d_wake1', 'd_wo')}{bez(L['wake2'], (WPn, W1n))}")
 
 stag_main = 'x = "lx + (xc - R - lx)*s"\ny = "ly*(1 - s)"\n'
+
+
+def leg(side, wall, end, a, b, count):
+    """A piece of a side: the straight leg from the point named wall to the one named end."""
+    return (f'[[blocks.sides.{side}]]\nshare = "({count} - 1)/(nj - 1)"\n'
+            f'x = "{wall[0]} + ({end[0]} - {wall[0]})*s"\ny = "{wall[1]} + ({end[1]} - {wall[1]})*s"\n{dist(a, b)}')
+
+
+C1n, F1n = ("c1x", "c1y"), ("f1x", "f1y")
+if LEGS:
+    lower_left = (leg("left", Cn, C1n, "hs", "hl", "n_leg")
+                  + f'[[blocks.sides.left]]\nshare = "(n_lc - 1)/(nj - 1)"\n{dist("hl", "d_far")}{bez(L["lc"], (C1n, An))}')
+    front_size, front_bottom = '"n_sl", "n_lc"', f"[blocks.sides.bottom]\n{dist('hl', 'hl')}{bez(L['slot'], (F1n, C1n))}"
+    front_right = f"[blocks.sides.right]\n{dist('hl', 'd_far')}{bez(L['lc'], (C1n, An))}"
+    front_left = f"[blocks.sides.left]\n{dist('hl', 'd_far')}{bez(L['stag'], (F1n, Bn))}"
+    slot_left = (leg("left", FLn, F1n, "hs", "hl", "n_leg")
+                 + f'[[blocks.sides.left]]\nshare = "(n_sl - 1)/(nj - 1)"\n{dist("hl", "hl")}{bez(L["slot"], (F1n, C1n))}'
+                 + leg("left", C1n, Cn, "hl", "hs", "n_leg"))
+    flap_left = (f'[[blocks.sides.left]]\nshare = "(n_lc - 1)/(nj - 1)"\nreverse = true\n{dist("hl", "d_far")}{bez(L["stag"], (F1n, Bn))}'
+                 + leg("left", F1n, FLn, "hl", "hs", "n_leg"))
+    side_joins = f"""[[joins]]   # the line from the cove to the far field
+a = "front.right"
+b = {{ block = "lower", side = "left", first = "n_leg - 1", last = "n_n - 1" }}
+
+[[joins]]   # the slot's line, from the flap's nose to the cove
+a = "front.bottom"
+b = {{ block = "slot", side = "left", first = "n_leg - 1", last = "n_s - n_leg" }}
+
+[[joins]]   # the flap's stagnation line
+a = "front.left"
+b = {{ block = "flap", side = "left", first = "n_lc - 1", last = 0 }}
+
+[[joins]]   # the line normal to the cove's corner
+a = {{ block = "lower", side = "left", first = 0, last = "n_leg - 1" }}
+b = {{ block = "slot", side = "left", first = "n_s - 1", last = "n_s - n_leg" }}
+
+[[joins]]   # the line normal to the flap's nose
+a = {{ block = "flap", side = "left", first = "n_n - 1", last = "n_lc - 1" }}
+b = {{ block = "slot", side = "left", first = 0, last = "n_leg - 1" }}
+"""
+    leg_constants = f"""n_leg = {args.n_leg}         # nodes along the lines normal to the cove's corner and the flap's nose
+n_lc = "n_n - n_leg + 1"   # nodes from their ends out to the far field
+n_sl = "n_s - 2*n_leg + 2"   # nodes along the slot's line between them
+hl = {HL}        # spacing at the normal lines' ends
+c1x = {C1[0]:.5f}        # the end of the line normal to the cove's corner
+c1y = {C1[1]:.5f}
+f1x = {F1[0]:.5f}        # and of the one normal to the flap's nose
+f1y = {F1[1]:.5f}
+"""
+else:
+    lower_left = f"[blocks.sides.left]\n{dist('hs', 'd_far')}{bez(L['lc'], (Cn, An))}"
+    front_size, front_bottom = '"n_s", "n_n"', f"[blocks.sides.bottom]\n{dist('hs', 'hs')}{bez(L['slot'], (FLn, Cn))}"
+    front_right = f"[blocks.sides.right]\n{dist('hs', 'd_far')}{bez(L['lc'], (Cn, An))}"
+    front_left = f"[blocks.sides.left]\n{dist('hs', 'd_far')}{bez(L['stag'], (FLn, Bn))}"
+    slot_left = f"[blocks.sides.left]\n{dist('hs', 'hs')}{bez(L['slot'], (FLn, Cn))}"
+    flap_left = f"[blocks.sides.left]\nreverse = true\n{dist('hs', 'd_far')}{bez(L['stag'], (FLn, Bn))}"
+    side_joins = """[[joins]]   # the line from the cove to the far field
+a = "lower.left"
+b = "front.right"
+
+[[joins]]   # the slot's line, from the flap's nose to the cove
+a = "front.bottom"
+b = "slot.left"
+
+[[joins]]   # the flap's stagnation line
+a = "front.left"
+b = { block = "flap", side = "left", first = "n_n - 1", last = 0 }
+"""
+    leg_constants = ""
 exitl = 'x = "ex + (dx - ex)*s"\ny = "ey + (dy - ey)*s"\n'
 d_wo = '"d_far"' if XO > 5 else "0.05"
 HEADER = f"""# The NLR 7301 two-element airfoil: a supercritical main element and its
@@ -174,7 +282,7 @@ n_cove = 9          # main element: the cove from the slot's end to the trailing
 n_wake1 = 41        # main wake: from the trailing edge to above the flap's trailing edge
 n_aft = "n_cove + n_wake1 - 1"   # flap: its upper surface from the slot's end to its trailing edge
 n_flap = 65         # flap: its lower surface
-n_wake = 49         # each wake from the flap's trailing edge on, to the outflow
+{leg_constants}n_wake = 49         # each wake from the flap's trailing edge on, to the outflow
 ds_le = 0.001       # spacing along the walls at the main element's nose,
 ds_te = 0.0015      # at its trailing edge,
 ds_c = 0.002        # at the cove's corner where the slot's line starts,
@@ -235,8 +343,7 @@ curve = "spline"
 [blocks.sides.right]
 {stag_main}{dist('hs', 'd_far')}
 [blocks.sides.top]
-{arc('phia', '180')}[blocks.sides.left]
-{dist('hs', 'd_far')}{bez(L['lc'], (Cn, An))}
+{arc('phia', '180')}{lower_left}
 {patch('bottom', 'wall', 'main')}{patch('top', 'inflow', 'inflow')}
 # Above the main element: its upper surface and wake, out to the far field.
 [[blocks]]
@@ -258,14 +365,11 @@ y = "yw1 + (yt - yw1)*s"
 # far field, between the line from the cove and the flap's stagnation line.
 [[blocks]]
 name = "front"
-size = ["n_s", "n_n"]
-[blocks.sides.bottom]
-{dist('hs', 'hs')}{bez(L['slot'], (FLn, Cn))}
-[blocks.sides.right]
-{dist('hs', 'd_far')}{bez(L['lc'], (Cn, An))}
+size = [{front_size}]
+{front_bottom}
+{front_right}
 [blocks.sides.top]
-{arc('phib', 'phia')}[blocks.sides.left]
-{dist('hs', 'd_far')}{bez(L['stag'], (FLn, Bn))}
+{arc('phib', 'phia')}{front_left}
 {patch('top', 'inflow', 'inflow')}
 # The slot: between the cove above and the flap's nose below, from the
 # slot's line to the slot's end (a line across it short of the main trailing edge).
@@ -281,8 +385,7 @@ curve = "spline"
 [blocks.sides.top]
 curve = "spline"
 {dist('ds_c', 'ds_d')}{pts(cove1)}
-[blocks.sides.left]
-{dist('hs', 'hs')}{bez(L['slot'], (FLn, Cn))}
+{slot_left}
 {patch('bottom', 'wall', 'flap')}{patch('top', 'wall', 'main')}
 # Behind the slot: the flap's upper surface and its wake below, the end of
 # the cove and the main wake above.
@@ -324,27 +427,14 @@ share = "(n_flap - 1)/(ni - 1)"
 [[blocks.sides.top]]
 share = "(n_wake - 1)/(ni - 1)"
 {dist('ds_fte', 'd_wo')}{bez(L['fwake'], (Gn, W2n))}
-[blocks.sides.left]
-reverse = true
-{dist('hs', 'd_far')}{bez(L['stag'], (FLn, Bn))}
+{flap_left}
 {patch('top', 'wall', 'flap', last='n_flap - 1')}{patch('bottom', 'inflow', 'inflow', last='n_flap - 1')}{patch('bottom', 'farfield', 'farfield', first='n_flap - 1')}{patch('right', 'outflow', 'outflow')}
 # The joins, node to node.
 [[joins]]   # the main element's stagnation line
 a = "lower.right"
 b = "upper.left"
 
-[[joins]]   # the line from the cove to the far field
-a = "lower.left"
-b = "front.right"
-
-[[joins]]   # the slot's line, from the flap's nose to the cove
-a = "front.bottom"
-b = "slot.left"
-
-[[joins]]   # the flap's stagnation line
-a = "front.left"
-b = {{ block = "flap", side = "left", first = "n_n - 1", last = 0 }}
-
+{side_joins}
 [[joins]]   # the slot's end
 a = "slot.right"
 b = "wake.left"
@@ -360,7 +450,7 @@ b = {{ block = "wake", side = "bottom", first = "n_aft - 1", last = "n_aft + n_w
 '''
 if args.held:  # the placed lines held (held = true after their [[joins]] line)
     s = "\n".join(line + ("\nheld = true" if line.startswith("[[joins]]") and
-                          any(t in line for t in ("slot's line", "slot's end", "main wake", "flap's wake")) else "")
+                          any(t in line for t in ("slot's line", "slot's end", "main wake", "flap's wake", "normal to")) else "")
                    for line in s.split("\n"))
 with open(args.o, 'w') as out:
     out.write(s)
