@@ -32,13 +32,28 @@ ap.add_argument("--n-far", type=int, default=65, help="nodes from the walls and 
 ap.add_argument("--n-slot", type=int, default=49, help="nodes across the slot")
 ap.add_argument("--held", action="store_true",
                 help="hold the slot's line, the slot's end, both wakes (and the legs) where the case puts them (eg2d_blocks_hold_join)")
-ap.add_argument("--legs", type=float, default=0.0,
-                help="start the slot's line and the lines from the cove's corner and the flap's nose this far off the walls, at the end of a line normal to them (0: on the walls)")
-ap.add_argument("--alpha", type=float, default=15.0,
-                help="with --legs: the line to the far field and the flap's stagnation line turn this far (degrees) from their legs")
-ap.add_argument("--beta", type=float, default=60.0,
+ap.add_argument("--legs", default="0",
+                help="start the slot's line and the lines from the cove's corner and the flap's nose this far off the walls (chords), "
+                     "at the end of a line normal to them; auto: as far as --n-leg nodes growing by 1.2 from the first cell reach; 0: on the walls")
+ap.add_argument("--alpha", type=float, default=30.0,
+                help="with --legs: the line to the far field turns this far (degrees) from the cove's leg, away from the slot")
+ap.add_argument("--alpha-flap", type=float, default=45.0,
+                help="with --legs: the flap's stagnation line turns this far (degrees) from the flap's leg, away from the slot")
+ap.add_argument("--beta", type=float, default=45.0,
                 help="with --legs: the slot's line leaves each leg's end this far (degrees) from the leg's direction")
-ap.add_argument("--n-leg", type=int, default=17, help="nodes along each such normal line")
+ap.add_argument("--reach", type=float, default=0.3,
+                help="with --legs: the line to the far field and the flap's stagnation line keep their legs' ends' directions for about a third of this (chords)")
+ap.add_argument("--n-leg", type=int, default=9, help="nodes along each such normal line")
+ap.add_argument("--phia", type=float, default=215.0,
+                help="where the line from the cove's corner meets the far field (degrees about (0.5, 0))")
+ap.add_argument("--phib", type=float, default=250.0, help="where the flap's stagnation line meets the far field")
+ap.add_argument("--phig", type=float,
+                help="where the far field's circle ends below the flap (degrees; default: below its trailing edge)")
+ap.add_argument("--ds-fte", type=float, default=0.001, help="spacing along the flap at its trailing edge")
+ap.add_argument("--d-wake1", type=float, default=0.015,
+                help="spacing along the main wake above the flap's trailing edge (the same as --ds-fte or so: the lines across the wakes' block then lean less)")
+ap.add_argument("--solver", help="[solver] method (the library's default: multigrid)")
+ap.add_argument("--growth-limit", help="[controls] wall_growth_limit (the command's default: 1.2)")
 ap.add_argument("-o", default=os.path.join(HERE, "two-element-airfoil.toml"))
 args = ap.parse_args()
 
@@ -80,15 +95,20 @@ def split(P, s):
     return [P[0], a[0], b[0], c], [c, b[1], a[2], P[3]]
 
 
-PHIA, PHIB = 215.0, 250.0
+PHIA, PHIB = args.phia, args.phib
+PHIG = (f"phig = {args.phig:g}          # where the far field's circle ends below the flap" if args.phig is not None
+        else 'phig = "360 - acos((gx - xc)/R)*180/pi"   # and below the flap\'s')
 A, B = circle(PHIA), circle(PHIB)
 # The slot's line leaves the cove 45 degrees below it and the flap's nose 50
 # degrees from its upper surface; the line to the far field from C and the
 # flap's stagnation line leave 90 degrees further round.
 cove_dir = angle(M[IC + 1] - M[IC])
 slot0, slot1 = cove_dir - 45.0, angle(fup[1] - fup[0]) + 50.0
-LEGS = args.legs > 0
-ALPHA, BETA = args.alpha, args.beta
+LEG_GROWTH = 1.2
+LEG = (float(args.first_cell) * (LEG_GROWTH**(args.n_leg - 1) - 1) / (LEG_GROWTH - 1) if args.legs == "auto"
+       else float(args.legs))
+LEGS = LEG > 0
+BETA, REACH = args.beta, args.reach
 if LEGS:
     # The lines meet the walls only at 90 degrees: a normal line ("leg") from
     # the cove's corner and from the flap's nose, shared by the two blocks
@@ -99,23 +119,23 @@ if LEGS:
         d = P[i + 1] - P[i - 1]
         return np.array([d[1], -d[0]]) / np.hypot(*d)
     nc, nf = normal(M, IC), normal(F, IFL)
-    C1, F1 = C + args.legs * nc, FL + args.legs * nf
+    C1, F1 = C + LEG * nc, FL + LEG * nf
     Ls = np.linalg.norm(F1 - C1)
 
-    def fork(n, toward):
-        """The leg's direction n turned BETA degrees toward the point toward, and ALPHA away from it."""
+    def fork(n, toward, alpha):
+        """The leg's direction n turned BETA degrees toward the point toward, and alpha away from it."""
         def rot(t):
             t = np.radians(t)
             return np.array([np.cos(t) * n[0] - np.sin(t) * n[1], np.sin(t) * n[0] + np.cos(t) * n[1]])
         side = 1.0 if np.cross(n, toward) > 0 else -1.0
-        return rot(side * BETA), rot(-side * ALPHA)
-    (sc, lc), (sf, st) = fork(nc, F1 - C1), fork(nf, C1 - F1)
+        return rot(side * BETA), rot(-side * alpha)
+    (sc, lc), (sf, st) = fork(nc, F1 - C1, args.alpha), fork(nf, C1 - F1, args.alpha_flap)
     lines = {"slot": [F1, F1 + Ls / 3 * sf, C1 + Ls / 3 * sc, C1],
-             "lc": [C1, C1 + 0.1 * lc, A - 4.0 * u(PHIA), A],
-             "stag": [F1, F1 + 0.1 * st, B - 4.0 * u(PHIB), B]}
+             "lc": [C1, C1 + REACH * lc, A - 4.0 * u(PHIA), A],
+             "stag": [F1, F1 + REACH * st, B - 4.0 * u(PHIB), B]}
     h, n = float(args.first_cell), args.n_leg
     q = np.linspace(1.0001, 2.0, 200001)   # the legs' nodes grow geometrically from the wall's first cell
-    q = q[np.argmin(np.abs(h * (q**(n - 1) - 1) / (q - 1) - args.legs))]
+    q = q[np.argmin(np.abs(h * (q**(n - 1) - 1) / (q - 1) - LEG))]
     HL = f"{h * q**(n - 2):.3g}"
 else:
     Ls = np.linalg.norm(FL - C)
@@ -191,10 +211,31 @@ def main_wake(side):
 stag_main = 'x = "lx + (xc - R - lx)*s"\ny = "ly*(1 - s)"\n'
 
 
+def heights(wall, wake):
+    """A side's first cells node by node with legs: h on its wall's nodes, then
+    along a wake growing geometrically to d_wake at the outflow, so that the
+    rows beside the wake open up downstream as the outflow's (the side's
+    joined nodes grade the lines that leave them as its wall's do)."""
+    h = float(args.first_cell)
+    q = (0.004 / h)**(1.0 / (wake - 1))
+    v = [h] * wall + [h * q**k for k in range(1, wake)]
+    return "[" + ", ".join(f"{x:.4g}" for x in v) + "]"
+
+
+N_MAIN_WAKE = 41 + 49 - 1   # n_wake1 + n_wake - 1: the main wake's nodes, its trailing edge's included
+if LEGS:
+    WS_UPPER = f"wall_spacing = {{ bottom = {heights(97, N_MAIN_WAKE)} }}"
+    WS_WAKE = f"wall_spacing = {{ bottom = {heights(49, 49)}, top = {heights(9, N_MAIN_WAKE)} }}"
+    WS_FLAP = f"wall_spacing = {{ top = {heights(65, 49)} }}"
+else:
+    WS_UPPER, WS_WAKE, WS_FLAP = (f"wall_spacing = {{{{ {k} }}}}".replace("{{", "{").replace("}}", "}")
+                                  for k in ('bottom = "h"', 'bottom = "h", top = "h"', 'top = "h"'))
+
+
 def leg(side, wall, end, a, b, count):
     """A piece of a side: the straight leg from the point named wall to the one named end."""
     return (f'[[blocks.sides.{side}]]\nshare = "({count} - 1)/(nj - 1)"\n'
-            f'x = "{wall[0]} + ({end[0]} - {wall[0]})*s"\ny = "{wall[1]} + ({end[1]} - {wall[1]})*s"\n{dist(a, b)}')
+            f'points = [["{wall[0]}", "{wall[1]}"], ["{end[0]}", "{end[1]}"]]\n{dist(a, b)}')
 
 
 C1n, F1n = ("c1x", "c1y"), ("f1x", "f1y")
@@ -233,10 +274,10 @@ b = {{ block = "slot", side = "left", first = 0, last = "n_leg - 1" }}
 n_lc = "n_n - n_leg + 1"   # nodes from their ends out to the far field
 n_sl = "n_s - 2*n_leg + 2"   # nodes along the slot's line between them
 hl = {HL}        # spacing at the normal lines' ends
-c1x = {C1[0]:.5f}        # the end of the line normal to the cove's corner
-c1y = {C1[1]:.5f}
-f1x = {F1[0]:.5f}        # and of the one normal to the flap's nose
-f1y = {F1[1]:.5f}
+c1x = {C1[0]:.8f}        # the end of the line normal to the cove's corner
+c1y = {C1[1]:.8f}
+f1x = {F1[0]:.8f}        # and of the one normal to the flap's nose
+f1y = {F1[1]:.8f}
 """
 else:
     lower_left = f"[blocks.sides.left]\n{dist('hs', 'd_far')}{bez(L['lc'], (Cn, An))}"
@@ -270,6 +311,24 @@ title = "Two-element airfoil (NLR 7301 with flap, six blocks)"
 system = "winslow"
 
 """
+if LEGS:
+    given = " ".join(f"--{k.replace('_', '-')} {v}" for k, v in vars(args).items()
+                     if k not in ("o", "held") and v is not None and v != ap.get_default(k))
+    HEADER = f"""# The NLR 7301 two-element airfoil: a supercritical main element and its
+# slotted flap (van den Berg & Oskam 1979), chord 1, as six blocks solved as
+# one grid, wall-resolved on both elements (first cell {args.first_cell} chord) with a
+# wake from each trailing edge. The lines between the blocks are placed and
+# held (blockMesh's way), and meet the walls at 90 degrees. Written by
+# bench/two-element-airfoil/make_case.py{" --held" if args.held else ""} {given}
+# (its README says why this layout).
+title = "Two-element airfoil (NLR 7301 with flap, six blocks)"
+system = "winslow"
+
+"""
+if args.solver:
+    HEADER += f'[solver]\nmethod = "{args.solver}"\n\n'
+if args.growth_limit:
+    HEADER += f"[controls]\nwall_growth_limit = {args.growth_limit}   # the layers' growth where their lines meet held ones\n\n"
 s = HEADER + f'''[constants]
 h = {args.first_cell}            # first-cell height on both elements' walls (chords)
 hs = "h"            # spacing at the walls of the lines that leave them
@@ -289,17 +348,17 @@ ds_c = 0.002        # at the cove's corner where the slot's line starts,
 ds_fle = 0.001      # at the flap's nose,
 ds_d = 0.002        # at the cove's end, where the slot ends,
 ds_e = 0.002        # on the flap below it,
-ds_fte = 0.001      # and at the flap's trailing edge
+ds_fte = {args.ds_fte:g}      # and at the flap's trailing edge
 d_far = 1.0         # spacing at the far field
 d_wo = {d_wo}         # spacing along the wakes and the far field at the outflow
 d_ff = 0.01         # spacing along the far field below the flap where its wake's columns begin
 d_wake = 0.004      # spacing across the wakes at the outflow
-d_wake1 = 0.015     # spacing along the main wake above the flap's trailing edge
+d_wake1 = {args.d_wake1:g}     # spacing along the main wake above the flap's trailing edge
 R = 10              # the far field: a half circle of radius R about (xc, 0), then straight to x = xo
 xc = 0.5
 xo = {XO!r}
-phia = 215          # where the line from the cove meets the far field (degrees about (xc, 0))
-phib = 250          # where the flap's stagnation line meets it
+phia = {PHIA:g}          # where the line from the cove meets the far field (degrees about (xc, 0))
+phib = {PHIB:g}          # where the flap's stagnation line meets it
 ax = "xc + R*cos(phia*pi/180)"
 ay = "R*sin(phia*pi/180)"
 bx = "xc + R*cos(phib*pi/180)"
@@ -323,9 +382,10 @@ wpy = {float(WP[1])!r}
 yw1 = -0.25         # the main wake at the outflow
 yw2 = -0.5          # the flap's wake at the outflow
 phit = "acos((tx - xc)/R)*180/pi"         # the far field above the main trailing edge
-phig = "360 - acos((gx - xc)/R)*180/pi"   # and below the flap's
+{PHIG}
 yt = "R*sin(phit*pi/180)"
 yg = "R*sin(phig*pi/180)"
+xg = "xc + R*cos(phig*pi/180)"
 
 [output]
 formats = ["su2", "openfoam", "cgns", "vtm", "svg"]
@@ -349,7 +409,7 @@ curve = "spline"
 [[blocks]]
 name = "upper"
 size = ["n_upper + n_wake1 + n_wake - 2", "n_n"]
-wall_spacing = {{ bottom = "h" }}
+{WS_UPPER}
 [[blocks.sides.bottom]]
 curve = "spline"
 share = "(n_upper - 1)/(ni - 1)"
@@ -392,7 +452,7 @@ curve = "spline"
 [[blocks]]
 name = "wake"
 size = ["n_aft + n_wake - 1", "n_s"]
-wall_spacing = {{ bottom = "h", top = "h" }}
+{WS_WAKE}
 [[blocks.sides.bottom]]
 curve = "spline"
 share = "(n_aft - 1)/(ni - 1)"
@@ -415,8 +475,8 @@ share = "(n_cove - 1)/(ni - 1)"
 [[blocks]]
 name = "flap"
 size = ["n_flap + n_wake - 1", "n_n"]
-wall_spacing = {{ top = "h" }}
-{far_field('bottom', 'phib', 'phig', 'n_flap - 1', 'gx', 'yg', 'n_wake - 1')}[blocks.sides.right]
+{WS_FLAP}
+{far_field('bottom', 'phib', 'phig', 'n_flap - 1', 'xg', 'yg', 'n_wake - 1')}[blocks.sides.right]
 x = "xo"
 y = "yg + (yw2 - yg)*s"
 {dist('d_far', 'd_wake')}
@@ -448,9 +508,10 @@ a = {{ block = "flap", side = "top", first = "n_flap - 1", last = "n_flap + n_wa
 b = {{ block = "wake", side = "bottom", first = "n_aft - 1", last = "n_aft + n_wake - 2" }}
 
 '''
-if args.held:  # the placed lines held (held = true after their [[joins]] line)
-    s = "\n".join(line + ("\nheld = true" if line.startswith("[[joins]]") and
-                          any(t in line for t in ("slot's line", "slot's end", "main wake", "flap's wake", "normal to")) else "")
+if args.held:  # the placed lines held (held = true after their [[joins]] line); with legs, every line
+    placed = ("slot's line", "slot's end", "main wake", "flap's wake") + (
+        ("normal to", "stagnation line", "from the cove") if LEGS else ())
+    s = "\n".join(line + ("\nheld = true" if line.startswith("[[joins]]") and any(t in line for t in placed) else "")
                    for line in s.split("\n"))
 with open(args.o, 'w') as out:
     out.write(s)

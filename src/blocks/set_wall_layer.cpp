@@ -51,6 +51,49 @@ std::vector<double> fade(int cells, bool lo, bool hi) {
     return v;
 }
 
+// Cells over which the second pass re-grades a line from a wall whose
+// first cell the first pass left off its height.
+constexpr int kRegradeCells = kGradedRows;
+// First cells off by less than this factor are moved out (pitzDaily's, up
+// to 5%: re-graded, its rows kinked 14 degrees at the joins), by more than
+// kRegradeFull re-graded, between the two mixed.
+constexpr double kRegradeFrom = 1.1;
+constexpr double kRegradeFull = 2.0;
+
+// Positions p along a line re-graded from its start so that its first cell
+// is `scale` times what it was: cell k times scale^w exp(b sin^2(pi t)), t =
+// k/(span - 1), w a smoothstep from 1 at t = 0 to 0 at t = 1, b such that
+// the span keeps its length. The first cell is scaled, the last as it was,
+// the nodes beyond the span stay, every cell keeps its sign, and the layer
+// stays graded: moving the nodes by the first cell's error instead left the
+// second cell as it was (the two-element airfoil's lines off the main
+// element's nose: 1e-4 then 2.2e-5). False (p unchanged) where the span is
+// shorter than the scaled first cell.
+bool regrade(std::vector<double> &p, double scale, int span) {
+    span = std::min(span, static_cast<int>(p.size()) - 1);
+    if (span < 2 || !(scale > 0.0)) return false;
+    std::vector<double> d(static_cast<std::size_t>(span)), w(d.size()), bump(d.size());
+    const double pi = std::acos(-1.0);
+    for (int k = 0; k < span; ++k) {
+        const double t = k / (span - 1.0);
+        d[static_cast<std::size_t>(k)] = p[static_cast<std::size_t>(k + 1)] - p[static_cast<std::size_t>(k)];
+        w[static_cast<std::size_t>(k)] = 1.0 - t * t * (3.0 - 2.0 * t);
+        bump[static_cast<std::size_t>(k)] = std::pow(std::sin(pi * t), 2);
+    }
+    const double length = p[static_cast<std::size_t>(span)] - p[0], ls = std::log(scale);
+    if (!(length > d[0] * scale + d.back())) return false;
+    auto cell = [&](std::size_t k, double b) { return d[k] * std::exp(w[k] * ls + bump[k] * b); };
+    double lo = -60.0, hi = 60.0;  // b: the span's length increases with it
+    for (int it = 0; it < 200 && hi - lo > 1e-13; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        double total = 0.0;
+        for (std::size_t k = 0; k < d.size(); ++k) total += cell(k, mid);
+        (total < length ? lo : hi) = mid;
+    }
+    for (std::size_t k = 0; k + 1 < d.size(); ++k) p[k + 1] = p[k] + cell(k, 0.5 * (lo + hi));
+    return true;
+}
+
 // The first-cell heights block b asks of its sides (none: all -1).
 std::array<double, 4> block_heights(const BlockSet &set, int b) {
     const Control *wall = set.block(b)->controls().find(ControlKind::Orthogonality);
@@ -72,7 +115,9 @@ SetWallLayer::SetWallLayer(const BlockSet &set, const Composite &c) {
         ni_.push_back(c.shape(b).ni);
         nj_.push_back(c.shape(b).nj);
     }
-    // The walls: each block's heights over its sides' wall patches.
+    // The walls: each block's heights over its wall sides, their joined
+    // nodes too (a wake's first cells given node by node grade the lines
+    // that leave it, as the two-element airfoil's sides that hold its wakes).
     heights_.resize(static_cast<std::size_t>(blocks));
     for (int b = 0; b < blocks; ++b) {
         const std::array<double, 4> h = block_heights(set, b);
@@ -334,26 +379,54 @@ void SetWallLayer::respace(Composite &c, bool vertices) const {
 }
 
 // The second pass's correction (Stretch: after the first pass, the first
-// cells off their heights by what that solve left, typically a few per
-// cent): the node one in moved along the line by the first cell's error,
-// the nodes beyond by that times the wall's fade, so no node moves further
-// than the error. Scaling the cells instead (the first pass's re-spacing,
-// the length kept by fit_length) moved pitzDaily's join column 0.5 mm for
-// a first cell 0.1 mm off, and the rows kinked there by 13 degrees.
+// cells off their heights by what that solve left, a few per cent on
+// pitzDaily, up to 4.6 times where lines meet held joins). A first cell
+// less than kRegradeFrom off: the node one in moved along the line by the
+// error, those beyond by that times the wall's fade, so no node moves
+// further than the error (scaling the whole line instead, as the first
+// pass does, moved pitzDaily's join column 0.5 mm for a first cell 0.1 mm
+// off, and the rows kinked there by 13 degrees). More than kRegradeFull
+// off: the cells within kRegradeCells of the wall re-graded (regrade), no
+// node beyond them moved. Between, the two mixed; a line too short to
+// re-grade is moved.
 std::vector<double> SetWallLayer::corrected(const Stretch &s, const std::vector<double> &arc, const Graded &graded,
                                             const Composite &c) const {
     const int cells = static_cast<int>(arc.size()) - 1;
     std::vector<double> want = arc;
     const std::vector<double> lo = fade(cells, s.first > 0.0, false), hi = fade(cells, false, s.last > 0.0);
+    const int span = std::min(kRegradeCells, cells / (s.first > 0.0 && s.last > 0.0 ? 2 : 1));
+    // The two corrections mixed by how far the first cell is off: moved
+    // alone below kRegradeFrom, re-graded alone from kRegradeFull, so that
+    // neighbouring lines a little off alike are moved alike.
+    auto mixed = [&](const std::vector<double> &moved, std::vector<double> graded_p, double scale) {
+        const double t = std::clamp((std::abs(std::log(scale)) - std::log(kRegradeFrom)) /
+                                        (std::log(kRegradeFull) - std::log(kRegradeFrom)), 0.0, 1.0);
+        const double m = t * t * (3.0 - 2.0 * t);
+        if (m == 0.0 || !regrade(graded_p, scale, span)) return moved;
+        std::vector<double> out(moved.size());
+        for (std::size_t k = 0; k < out.size(); ++k) out[k] = (1.0 - m) * moved[k] + m * graded_p[k];
+        return out;
+    };
     if (s.first > 0.0) {
         const double first = arc[1] - arc[0];
-        const double error = first - first * std::pow(s.first / first, taper(c, s.first_wall, graded));
-        for (int k = 1; k < cells; ++k) want[static_cast<std::size_t>(k)] -= error * lo[static_cast<std::size_t>(k - 1)];
+        const double scale = std::pow(s.first / first, taper(c, s.first_wall, graded));
+        std::vector<double> moved = want;
+        for (int k = 1; k < cells; ++k)
+            moved[static_cast<std::size_t>(k)] -= (first - first * scale) * lo[static_cast<std::size_t>(k - 1)];
+        want = mixed(moved, want, scale);
     }
     if (s.last > 0.0) {
         const double last = arc[static_cast<std::size_t>(cells)] - arc[static_cast<std::size_t>(cells - 1)];
-        const double error = last - last * std::pow(s.last / last, taper(c, s.last_wall, graded));
-        for (int k = 1; k < cells; ++k) want[static_cast<std::size_t>(k)] += error * hi[static_cast<std::size_t>(k)];
+        const double scale = std::pow(s.last / last, taper(c, s.last_wall, graded));
+        // The line from its far end: reversed and negated, corrected from its start.
+        std::vector<double> back(want.rbegin(), want.rend()), moved = want;
+        for (double &v : back) v = -v;
+        for (int k = 1; k < cells; ++k)
+            moved[static_cast<std::size_t>(k)] += (last - last * scale) * hi[static_cast<std::size_t>(k)];
+        std::vector<double> moved_back(moved.rbegin(), moved.rend());
+        for (double &v : moved_back) v = -v;
+        back = mixed(moved_back, back, scale);
+        for (std::size_t k = 0; k < back.size(); ++k) want[want.size() - 1 - k] = -back[k];
     }
     return want;
 }

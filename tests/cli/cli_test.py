@@ -2292,6 +2292,89 @@ class BlockSets(unittest.TestCase):
                 else:
                     self.assertGreater(cut, 1e-3)
 
+    WAKES = {("upper", "bottom"), ("wake", "bottom"), ("wake", "top"), ("flap", "top")}
+
+    def test_two_element_airfoil(self):
+        """bench/two-element-airfoil/walls.toml: the NLR 7301 main element and
+        slotted flap (van den Berg & Oskam 1979) in six blocks, wall-resolved
+        on both elements (every wall's first cells within 1% of 1e-5 chord,
+        its lines within 1 degree of the normal, growth within the case's
+        1.45) with a wake from each trailing edge to the outflow (VTK's reader
+        on the blocks' file), no folded cell; checkMesh (Mesh OK, skewness at
+        most 4), cgnscheck and meshio read the merged mesh."""
+        with tempfile.TemporaryDirectory() as d:
+            case = os.path.join(os.path.dirname(EXAMPLES), "bench", "two-element-airfoil", "walls.toml")
+            code, stdout, stderr = run("run", case, "-o", d)
+            self.assertEqual(code, 0, stdout + stderr)
+            self.assertIn("quality: 0 folded cells in the set", stdout)
+            walls = re.findall(r"wall layer block (\w+) (\w+): first cell \S+ \(median; (\S+) to (\S+), asked (\S+)"
+                               r"(?: to (\S+))?\), growth (\S+) over 30 cells, angle (\S+) deg", stdout)
+            self.assertEqual(sorted((b, s) for b, s, *_ in walls),
+                             [("flap", "top"), ("lower", "bottom"), ("slot", "bottom"), ("slot", "top"),
+                              ("upper", "bottom"), ("wake", "bottom"), ("wake", "top")])
+            for b, side, lo, hi, asked, asked_hi, growth, angle in walls:
+                # the sides that hold a wake ask 1e-5 on the wall, growing to 4e-3 along the wake
+                self.assertEqual(float(asked), 1e-5)
+                self.assertEqual(float(asked_hi or asked), 4e-3 if (b, side) in self.WAKES else 1e-5, (b, side))
+                self.assertLess(abs(float(lo) / 1e-5 - 1), 0.01, (b, side))
+                self.assertLess(abs(float(hi) / float(asked_hi or asked) - 1), 0.05, (b, side))
+                self.assertLessEqual(float(growth), 1.45, (b, side))
+                self.assertLess(float(angle), 1.0, (b, side))
+            name = os.path.join(d, "walls")
+            check_cgns_file(self, name + ".cgns", ["main", "flap", "inflow", "farfield", "outflow"])
+            checkmesh = shutil_which("checkMesh")
+            if checkmesh:
+                env = dict(os.environ)
+                env.setdefault("WM_PROJECT_DIR", "/usr/share/openfoam")
+                out = subprocess.run([checkmesh, "-case", name + "_foam"], capture_output=True, text=True,
+                                     env=env).stdout
+                self.assertIn("Mesh OK.", out)
+                self.assertLessEqual(float(re.search(r"Max skewness = ([0-9.eE+-]+)", out).group(1)), 4.0)
+            try:
+                import meshio
+            except ImportError:
+                meshio = None
+            if meshio:
+                mesh = meshio.read(name + ".su2")
+                self.assertEqual(sum(len(c.data) for c in mesh.cells if c.type == "quad"),
+                                 80 * 128 + 184 * 128 + 80 * 120 + 24 * 96 + 96 * 96 + 112 * 128)
+            try:
+                import vtk
+            except ImportError:
+                return
+            reader = vtk.vtkXMLMultiBlockDataReader()
+            reader.SetFileName(name + ".vtm")
+            reader.Update()
+            blocks = reader.GetOutput()
+            # Each wake: the row on the wall side of a block, from the trailing
+            # edge (node n_upper - 1 of "upper", the case's second block, and
+            # n_flap - 1 of "flap", its sixth) downstream to the outflow at x = 10.5.
+            self.assertEqual(blocks.GetNumberOfBlocks(), 6)
+            for k, block in ((1, "upper"), (5, "flap")):
+                grid = blocks.GetBlock(k)
+                ni, nj, _ = grid.GetDimensions()
+                j, first, edge = (0, 96, (0.9436, 0.01454)) if block == "upper" else (nj - 1, 64, (1.2049, -0.10267))
+                xs = [grid.GetPoint(j * ni + i)[:2] for i in range(first, ni)]
+                self.assertAlmostEqual(xs[0][0], edge[0], places=5, msg=block)
+                self.assertAlmostEqual(xs[0][1], edge[1], places=5, msg=block)
+                self.assertAlmostEqual(xs[-1][0], 10.5, places=9, msg=block)
+                self.assertTrue(all(b[0] > a[0] for a, b in zip(xs, xs[1:])), block)
+
+    def test_set_controls(self):
+        """A set's [controls] holds wall_growth_limit only (its walls' heights
+        are each block's wall_spacing): other keys and a limit below 1 are
+        refused at the key."""
+        for controls, message in (("wall_spacing = 1e-5", "controls.wall_spacing': unknown key (expected one of: "
+                                                          "wall_growth_limit)"),
+                                  ("wall_growth_limit = 0.5", "controls.wall_growth_limit': must be >= 1")):
+            with tempfile.TemporaryDirectory() as d:
+                path = os.path.join(d, "ring.toml")
+                with open(path, "w") as f:
+                    f.write(self.RING.replace("[output]", f"[controls]\n{controls}\n[output]"))
+                code, stdout, stderr = run("run", path, "-o", d)
+                self.assertEqual(code, 3, stdout + stderr)
+                self.assertIn(message, stderr)
+
     def test_refused_set_says_why(self):
         """A set the library refuses before it runs (bench/two-element-airfoil's
         get-run-error.toml: a wake curve through the flap) is refused with the

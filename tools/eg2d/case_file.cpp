@@ -153,13 +153,26 @@ void read_wall_spacing(const Fields &f, int topology, const Constants &constants
     }
 }
 
-void read_wall_controls(const Fields &f, Case &c) {
-    read_wall_spacing(f, c.topology, c.constants, c.wall_spacings);
+void read_growth_limit(const Fields &f, Case &c) {
     if (f.has("wall_growth_limit")) {
         c.wall_growth_limit = f.number("wall_growth_limit", c.constants);
         if (!(c.wall_growth_limit >= 1))
             throw Failure(EXIT_CASE, f.at("wall_growth_limit").str() + ": must be >= 1");
     }
+}
+
+void read_wall_controls(const Fields &f, Case &c) {
+    read_wall_spacing(f, c.topology, c.constants, c.wall_spacings);
+    read_growth_limit(f, c);
+}
+
+// A set's [controls]: the growth its walls' layers may have (the walls'
+// heights are each block's wall_spacing; a set has no other controls).
+void read_set_controls(const Fields &top, Case &c) {
+    if (!top.has("controls")) return;
+    Fields f(top.table("controls"), top.at("controls"), {"wall_growth_limit"});
+    f.finish();
+    read_growth_limit(f, c);
 }
 
 // Calls fn(table, location) for key's table, or for each table of key's array.
@@ -514,7 +527,7 @@ Case read_case(const std::string &text, const std::string &file, const std::stri
     // A set of blocks: each block has its size; the one-grid keys are not at the top.
     const bool set = top.has("blocks");
     if (set) {
-        for (const char *k : {"size", "topology", "sides", "patches", "controls", "interior_lines"})
+        for (const char *k : {"size", "topology", "sides", "patches", "interior_lines"})
             if (top.has(k))
                 throw Failure(EXIT_CASE, top.at(k).str() + ": not in a case of [[blocks]] (each block has its own size, "
                                          "sides and patches; a set of blocks is single-block grids without controls or "
@@ -567,6 +580,7 @@ Case read_case(const std::string &text, const std::string &file, const std::stri
         if (c.initial != EG2D_INIT_TFI)
             throw Failure(EXIT_CASE, c.initial_at.str() + ": a set of blocks starts from each block's TFI grid");
         if (!c.solve) throw Failure(EXIT_CASE, top.at("solve").str() + ": a set of blocks is solved (solve = true)");
+        read_set_controls(top, c);
         read_blocks(top, c);
         read_joins(top, c);
         read_output(top, c, stem_of(file));
