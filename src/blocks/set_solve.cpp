@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "base/error.hpp"
@@ -94,6 +96,23 @@ public:
         }
     }
     bool multigrid() const { return solver_ == EG2D_SOLVER_MULTIGRID; }
+    // Line SOR from here on, its stall window its own; use_own_solver goes
+    // back to the set's.
+    void use_line_sor(const Composite &c) {
+        own_ = {solver_, window_};
+        solver_ = EG2D_SOLVER_LSOR;
+        if (s_.stall_iterations == 0) {
+            int longest = 0;
+            for (int b = 0; b < set_.size(); ++b)
+                longest = std::max({longest, set_.block(b)->grid().ni(), set_.block(b)->grid().nj()});
+            window_ = std::max(500L, 2L * static_cast<long>(std::sqrt(static_cast<double>(c.unknowns())) + longest));
+        }
+        prepare(c);
+    }
+    void use_own_solver(const Composite &c) {
+        std::tie(solver_, window_) = own_;
+        prepare(c);
+    }
 
     // The levels of this composite (built from its controls as they are now).
     void prepare(const Composite &c) {
@@ -193,6 +212,7 @@ private:
     RunReport &report_;
     double extent_;
     long window_ = 0;
+    std::pair<int, long> own_{0, 0};
     std::vector<SetMultigrid> mg_;  // the levels: multigrid's and the nested iteration's
     std::unique_ptr<SetSor> sor_;
 };
@@ -264,17 +284,35 @@ void solve_set(BlockSet &set, const std::function<bool(long, double)> &monitor, 
         // leaves exactly. Where it diverges (boundary sides far from the
         // walls' heights shear the lines beside them) the set is solved
         // without the layer, said.
+        bool by_lines = false;  // line SOR after multigrid diverged
         try {
-            pass.converge(c, kShapeTolerance);
+            try {
+                pass.converge(c, kShapeTolerance);
+            } catch (const Error &e) {
+                // Multigrid's coarse levels cannot always carry the lines'
+                // controls (the two-element airfoil's, its wakes and slot
+                // held: diverged in 3 cycles); line SOR then, said.
+                if (e.failure() != Failure::Diverged || !pass.multigrid()) throw;
+                const double residual = run.residual;
+                c.restore(start);
+                pass.use_line_sor(c);
+                by_lines = true;
+                report.note(format("wall layer (graded, set of blocks): on its lines' controls multigrid diverged in "
+                                   "%ld iteration(s) (residual %.3g); the layer is made by line SOR instead",
+                                   run.iterations - before, residual));
+                pass.converge(c, kShapeTolerance);
+            }
         } catch (const Error &e) {
-            if (e.failure() != Failure::Diverged) throw;
+            const bool diverged = e.failure() == Failure::Diverged;
+            if (!diverged && !(by_lines && e.failure() == Failure::NotConverged)) throw;
             c.restore(start);
             c.drop_layer_controls();
+            if (by_lines) pass.use_own_solver(c);
             pass.prepare(c);
             report.note(format("wall layer (graded, set of blocks): not made: on its lines' controls the set "
-                               "diverged in %ld iteration(s) (residual %.3g); the grid has no wall layer (space "
-                               "the sides that meet the walls for their heights)", run.iterations - before,
-                               run.residual));
+                               "%s in %ld iteration(s) (residual %.3g); the grid has no wall layer (space the "
+                               "sides that meet the walls for their heights)", diverged ? "diverged" : "stalled",
+                               run.iterations - before, run.residual));
             made = false;
         }
     }

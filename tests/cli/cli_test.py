@@ -2360,6 +2360,25 @@ class BlockSets(unittest.TestCase):
                 self.assertAlmostEqual(xs[-1][0], 10.5, places=9, msg=block)
                 self.assertTrue(all(b[0] > a[0] for a, b in zip(xs, xs[1:])), block)
 
+    def test_two_element_airfoil_multigrid(self):
+        """The same case by multigrid: its coarse levels cannot carry the
+        layer's controls (the first pass diverges in 3 cycles), so the layer
+        is made by line SOR instead, said in the run's notes, with the same
+        first cells."""
+        case = os.path.join(os.path.dirname(EXAMPLES), "bench", "two-element-airfoil", "walls.toml")
+        with open(case) as f:
+            text = f.read().replace('method = "lsor"', 'method = "multigrid"')
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "walls.toml")
+            with open(path, "w") as f:
+                f.write(re.sub(r"formats = \[[^]]*\]", 'formats = ["plot3d"]', text))
+            code, stdout, stderr = run("run", path, "-o", d)
+            self.assertEqual(code, 0, stdout + stderr)
+            self.assertRegex(stdout, r"wall layer \(graded, set of blocks\): on its lines' controls multigrid diverged "
+                                     r"in \d+ iteration\(s\) \(residual \S+\); the layer is made by line SOR instead")
+            self.assertIn("first cells within 0.083% of their heights", stdout)
+            self.assertIn("quality: 0 folded cells in the set", stdout)
+
     def test_set_controls(self):
         """A set's [controls] holds wall_growth_limit only (its walls' heights
         are each block's wall_spacing): other keys and a limit below 1 are
