@@ -87,13 +87,7 @@ public:
         : set_(set), s_(set.block(0)->settings), solver_(set.block(0)->solver_id()), system_(set.block(0)->system()),
           monitor_(monitor), run_(run), report_(report), extent_(set.extent()) {
         window_ = static_cast<long>(s_.stall_iterations);
-        if (window_ == 0) {  // the single-block solvers' windows (Solver::stall_window)
-            int longest = 0;
-            for (int b = 0; b < set.size(); ++b)
-                longest = std::max({longest, set.block(b)->grid().ni(), set.block(b)->grid().nj()});
-            window_ = multigrid() ? 200L
-                                  : std::max(500L, 2L * static_cast<long>(std::sqrt(static_cast<double>(run.unknowns)) + longest));
-        }
+        if (window_ == 0) window_ = multigrid() ? 200L : sor_window(run.unknowns);
     }
     bool multigrid() const { return solver_ == EG2D_SOLVER_MULTIGRID; }
     // Line SOR from here on, its stall window its own; use_own_solver goes
@@ -101,12 +95,7 @@ public:
     void use_line_sor(const Composite &c) {
         own_ = {solver_, window_};
         solver_ = EG2D_SOLVER_LSOR;
-        if (s_.stall_iterations == 0) {
-            int longest = 0;
-            for (int b = 0; b < set_.size(); ++b)
-                longest = std::max({longest, set_.block(b)->grid().ni(), set_.block(b)->grid().nj()});
-            window_ = std::max(500L, 2L * static_cast<long>(std::sqrt(static_cast<double>(c.unknowns())) + longest));
-        }
+        if (s_.stall_iterations == 0) window_ = sor_window(c.unknowns());
         prepare(c);
     }
     void use_own_solver(const Composite &c) {
@@ -186,6 +175,14 @@ public:
     }
 
 private:
+    // The single-block SOR solvers' stall window (Solver::stall_window).
+    long sor_window(long unknowns) const {
+        int longest = 0;
+        for (int b = 0; b < set_.size(); ++b)
+            longest = std::max({longest, set_.block(b)->grid().ni(), set_.block(b)->grid().nj()});
+        return std::max(500L, 2L * static_cast<long>(std::sqrt(static_cast<double>(unknowns)) + longest));
+    }
+
     // FMG, unless it leaves a start near its solution worse: a tensor set
     // re-spaced for walls of 1e-5 (its start off the solution by 1e-6) came
     // back from the coarse levels at residual 0.2, and the run stopped as
