@@ -315,6 +315,38 @@ static void test_area_barriers_swan_steps(void **state) {
     eg2d_destroy(gv);
 }
 
+/* A re-solve after new weights starts its Newton iteration over, its trust
+ * region included: the same steps and the same grid as a fresh handle with
+ * those weights started from the same grid (it kept the last run's radius:
+ * 4 of 11 steps on the swan at 257^2 regrew it). */
+static void test_new_weights_start_over(void **state) {
+    const weights changed = {0, 1, 2.5, 1, 1};
+    int first = 0, total = 0, fresh = 0, ni, nj;
+    double *x;
+    eg2d_grid *g = make("swan", 65, EG2D_SYSTEM_VARIATIONAL, &kCotangents), *h;
+    (void)state;
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    assert_int_equal(eg2d_get_iterations(g, &first), EG2D_OK);
+    assert_int_equal(eg2d_get_size(g, &ni, &nj), EG2D_OK);
+    x = malloc(sizeof(double) * 2 * (size_t)ni * (size_t)nj);
+    assert_non_null(x);
+    assert_int_equal(eg2d_get_coordinates(g, x, x + ni * nj), EG2D_OK);
+    assert_int_equal(eg2d_set_parameter(g, EG2D_PARAM_VARIATIONAL_ORTHOGONALITY, changed.c), EG2D_OK);
+    assert_int_equal(eg2d_solve(g), EG2D_OK);
+    assert_int_equal(eg2d_get_iterations(g, &total), EG2D_OK);
+    h = make("swan", 65, EG2D_SYSTEM_VARIATIONAL, &changed);
+    assert_int_equal(eg2d_set_coordinates(h, x, x + ni * nj), EG2D_OK);
+    assert_int_equal(eg2d_solve(h), EG2D_OK);
+    assert_int_equal(eg2d_get_iterations(h, &fresh), EG2D_OK);
+    print_message("  swan 65^2: %d steps, then %d with c = 2.5; a fresh handle from that grid %d\n", first,
+                  total - first, fresh);
+    assert_int_equal(total - first, fresh);
+    assert_true(distance(g, h) < 1e-12);
+    free(x);
+    eg2d_destroy(g);
+    eg2d_destroy(h);
+}
+
 /* O- and C-grids with the area weight: converged, unfolded, and the O-grid's
  * cut columns still the same points. */
 static void test_o_and_c_grids(void **state) {
@@ -400,6 +432,7 @@ int main(void) {
         cmocka_unit_test(test_folded_start_untangled),
         cmocka_unit_test(test_area_barriers_antenna),
         cmocka_unit_test(test_area_barriers_swan_steps),
+        cmocka_unit_test(test_new_weights_start_over),
         cmocka_unit_test(test_o_and_c_grids),
         cmocka_unit_test(test_point_solvers_agree),
         cmocka_unit_test(test_settings_and_refusals),
