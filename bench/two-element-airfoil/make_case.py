@@ -52,6 +52,10 @@ ap.add_argument("--phig", type=float,
 ap.add_argument("--ds-fte", type=float, default=0.001, help="spacing along the flap at its trailing edge")
 ap.add_argument("--d-wake1", type=float, default=0.015,
                 help="spacing along the main wake above the flap's trailing edge (the same as --ds-fte or so: the lines across the wakes' block then lean less)")
+ap.add_argument("--n-upper", type=int, default=97, help="nodes along the main element's upper surface, nose to trailing edge")
+ap.add_argument("--n-front", type=int, default=81, help="nodes along the main element's lower surface, from the slot's line to the nose")
+ap.add_argument("--n-wake", type=int, default=49, help="nodes along each wake from the flap's trailing edge on, to the outflow")
+ap.add_argument("--d-far", type=float, default=1.0, help="spacing at the far field (chords)")
 ap.add_argument("--solver", help="[solver] method (the library's default: multigrid)")
 ap.add_argument("--growth-limit", help="[controls] wall_growth_limit (the command's default: 1.2)")
 ap.add_argument("-o", default=os.path.join(HERE, "two-element-airfoil.toml"))
@@ -222,11 +226,11 @@ def heights(wall, wake):
     return "[" + ", ".join(f"{x:.4g}" for x in v) + "]"
 
 
-N_MAIN_WAKE = 41 + 49 - 1   # n_wake1 + n_wake - 1: the main wake's nodes, its trailing edge's included
+N_MAIN_WAKE = 41 + args.n_wake - 1   # n_wake1 + n_wake - 1: the main wake's nodes, its trailing edge's included
 if LEGS:
-    WS_UPPER = f"wall_spacing = {{ bottom = {heights(97, N_MAIN_WAKE)} }}"
-    WS_WAKE = f"wall_spacing = {{ bottom = {heights(49, 49)}, top = {heights(9, N_MAIN_WAKE)} }}"
-    WS_FLAP = f"wall_spacing = {{ top = {heights(65, 49)} }}"
+    WS_UPPER = f"wall_spacing = {{ bottom = {heights(args.n_upper, N_MAIN_WAKE)} }}"
+    WS_WAKE = f"wall_spacing = {{ bottom = {heights(49, args.n_wake)}, top = {heights(9, N_MAIN_WAKE)} }}"
+    WS_FLAP = f"wall_spacing = {{ top = {heights(65, args.n_wake)} }}"
 else:
     WS_UPPER, WS_WAKE, WS_FLAP = (f"wall_spacing = {{{{ {k} }}}}".replace("{{", "{").replace("}}", "}")
                                   for k in ('bottom = "h"', 'bottom = "h", top = "h"', 'top = "h"'))
@@ -334,14 +338,14 @@ h = {args.first_cell}            # first-cell height on both elements' walls (ch
 hs = "h"            # spacing at the walls of the lines that leave them
 n_n = {args.n_far}            # nodes from the walls and wakes out to the far field
 n_s = {args.n_slot}            # nodes across the slot (and between the two wakes)
-n_front = 81        # main element: its lower surface, from the slot's line to the nose
-n_upper = 97        # main element: its upper surface, nose to trailing edge
+n_front = {args.n_front}        # main element: its lower surface, from the slot's line to the nose
+n_upper = {args.n_upper}        # main element: its upper surface, nose to trailing edge
 n_nose = 25         # the slot: along the cove and the flap's nose, from the slot's line to the slot's end
 n_cove = 9          # main element: the cove from the slot's end to the trailing edge
 n_wake1 = 41        # main wake: from the trailing edge to above the flap's trailing edge
 n_aft = "n_cove + n_wake1 - 1"   # flap: its upper surface from the slot's end to its trailing edge
 n_flap = 65         # flap: its lower surface
-{leg_constants}n_wake = 49         # each wake from the flap's trailing edge on, to the outflow
+{leg_constants}n_wake = {args.n_wake}         # each wake from the flap's trailing edge on, to the outflow
 ds_le = 0.001       # spacing along the walls at the main element's nose,
 ds_te = 0.0015      # at its trailing edge,
 ds_c = 0.002        # at the cove's corner where the slot's line starts,
@@ -349,7 +353,7 @@ ds_fle = 0.001      # at the flap's nose,
 ds_d = 0.002        # at the cove's end, where the slot ends,
 ds_e = 0.002        # on the flap below it,
 ds_fte = {args.ds_fte:g}      # and at the flap's trailing edge
-d_far = 1.0         # spacing at the far field
+d_far = {args.d_far!r}         # spacing at the far field
 d_wo = {d_wo}         # spacing along the wakes and the far field at the outflow
 d_ff = 0.01         # spacing along the far field below the flap where its wake's columns begin
 d_wake = 0.004      # spacing across the wakes at the outflow

@@ -2301,7 +2301,8 @@ class BlockSets(unittest.TestCase):
         its lines within 1 degree of the normal, growth within the case's
         1.45) with a wake from each trailing edge to the outflow (VTK's reader
         on the blocks' file), no folded cell; checkMesh (Mesh OK, skewness at
-        most 4), cgnscheck and meshio read the merged mesh."""
+        most 4, non-orthogonality at most 70 degrees), cgnscheck and meshio
+        read the merged mesh."""
         with tempfile.TemporaryDirectory() as d:
             case = os.path.join(os.path.dirname(EXAMPLES), "bench", "two-element-airfoil", "walls.toml")
             code, stdout, stderr = run("run", case, "-o", d)
@@ -2330,6 +2331,7 @@ class BlockSets(unittest.TestCase):
                                      env=env).stdout
                 self.assertIn("Mesh OK.", out)
                 self.assertLessEqual(float(re.search(r"Max skewness = ([0-9.eE+-]+)", out).group(1)), 4.0)
+                self.assertLessEqual(float(re.search(r"non-orthogonality Max: ([0-9.eE+-]+)", out).group(1)), 70.0)
             try:
                 import meshio
             except ImportError:
@@ -2337,7 +2339,7 @@ class BlockSets(unittest.TestCase):
             if meshio:
                 mesh = meshio.read(name + ".su2")
                 self.assertEqual(sum(len(c.data) for c in mesh.cells if c.type == "quad"),
-                                 80 * 128 + 184 * 128 + 80 * 120 + 24 * 96 + 96 * 96 + 112 * 128)
+                                 224 * 128 + 264 * 128 + 74 * 117 + 24 * 96 + 112 * 96 + 128 * 128)
             try:
                 import vtk
             except ImportError:
@@ -2353,7 +2355,7 @@ class BlockSets(unittest.TestCase):
             for k, block in ((1, "upper"), (5, "flap")):
                 grid = blocks.GetBlock(k)
                 ni, nj, _ = grid.GetDimensions()
-                j, first, edge = (0, 96, (0.9436, 0.01454)) if block == "upper" else (nj - 1, 64, (1.2049, -0.10267))
+                j, first, edge = (0, 160, (0.9436, 0.01454)) if block == "upper" else (nj - 1, 64, (1.2049, -0.10267))
                 xs = [grid.GetPoint(j * ni + i)[:2] for i in range(first, ni)]
                 self.assertAlmostEqual(xs[0][0], edge[0], places=5, msg=block)
                 self.assertAlmostEqual(xs[0][1], edge[1], places=5, msg=block)
