@@ -1,11 +1,11 @@
 #!/usr/bin/python3
 """The two-element airfoil of issue 39 (bench/two-element-airfoil): its case
-files are what make_case.py writes (walls.toml with the options its header
-names), and the eg2d command accepts the first layout (geometry, six blocks,
+files are what make_case.py writes (examples/two-element-airfoil.toml with
+the options its header names), and the eg2d command accepts the first layout (geometry, six blocks,
 seven joins, patches) and runs it: given one iteration, the set stops at its
 iteration limit (exit 5) after printing the blocks. That layout does not
-mesh (README.md there); this keeps it a valid reproducer. walls.toml, which
-meshes, is run by the cli test BlockSets.test_two_element_airfoil.
+mesh (README.md there); this keeps it a valid reproducer. The example, which
+meshes, is run by the cli tests (its example test, BlockSets.test_two_element_airfoil).
 
     two_element_airfoil.py EG2D_TOOL REPO_ROOT WORK_DIR"""
 import os
@@ -34,8 +34,8 @@ with open(fresh) as f:
     made = f.read()
 check(made == committed, "two-element-airfoil.toml is what make_case.py writes")
 
-# walls.toml: the options are those its header says wrote it
-with open(os.path.join(here, "walls.toml")) as f:
+# the example: the options are those its header says wrote it
+with open(os.path.join(root, "examples", "two-element-airfoil.toml")) as f:
     walls = f.read()
 options = next(l for l in walls.splitlines() if l.startswith("# bench/two-element-airfoil/make_case.py"))
 fresh = os.path.join(work, "walls.toml")
@@ -43,7 +43,7 @@ p = subprocess.run([sys.executable, os.path.join(here, "make_case.py"), *options
                    capture_output=True, text=True)
 check(p.returncode == 0, f"make_case.py {' '.join(options.split()[2:])}: exit {p.returncode} {p.stderr.strip()}")
 with open(fresh) as f:
-    check(f.read() == walls, "walls.toml is what make_case.py writes with the options its header names")
+    check(f.read() == walls, "examples/two-element-airfoil.toml is what make_case.py writes with the options its header names")
 
 one = os.path.join(work, "one-iteration.toml")
 with open(one, "w") as f:
