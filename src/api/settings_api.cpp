@@ -28,16 +28,7 @@ int set_params(eg2d_grid *grid, const char *function, const ParamValue (&values)
             by_caller.insert(v.id);
         }
         check_settings(next);
-        const Settings &now = grid->gen.settings;
-        // A re-solve with new weights kept the last run's trust region: 4 of
-        // a restart's 11 Newton steps on the swan at 257^2 regrew its radius.
-        const bool weights = next.variational_area != now.variational_area ||
-                             next.variational_spacing != now.variational_spacing ||
-                             next.variational_orthogonality != now.variational_orthogonality ||
-                             next.variational_smoothness != now.variational_smoothness ||
-                             next.variational_orthogonality_form != now.variational_orthogonality_form;
         set_settings_remaking_airfoil(grid, next);
-        if (weights) grid->gen.changed_weights();
         grid->set_by_caller.swap(by_caller);
     });
 }

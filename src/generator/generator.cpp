@@ -260,8 +260,6 @@ void Generator::set_solver(int id) {
     solver_ = std::move(next);
 }
 
-void Generator::changed_weights() { solver_->reset(); }
-
 void Generator::changed_controls() {
     controls_.invalidate();
     solver_->reset();

@@ -108,9 +108,6 @@ public:
     const ControlSet &controls() const { return controls_; }
     // Call after changing controls().
     void changed_controls();
-    // Call after changing the variational system's weights: the solver's
-    // state (the Newton iteration's trust region) starts over with them.
-    void changed_weights();
 
     // Exactly n iterations (n >= 0). Throws Diverged (grid restored to before
     // the failing iteration) or Interrupted (iterations kept).

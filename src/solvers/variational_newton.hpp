@@ -88,6 +88,7 @@ private:
     double mean_ = 0.0;           // the mean cell area (variational_cell.hpp)
     double last_gradient_ = -1.0, forcing_ = 0.5;
     bool started_ = false, noted_shift_ = false;
+    Functional functional_;    // what the state below was built minimising
     NewtonProgress progress_;  // the stop tests
     bool last_limited_ = false;
     bool last_full_ = false;   // the last step a full one along a direction of positive curvature
