@@ -392,40 +392,31 @@ void SetWallLayer::respace(Composite &c, bool vertices) const {
 std::vector<double> SetWallLayer::corrected(const Stretch &s, const std::vector<double> &arc, const Graded &graded,
                                             const Composite &c) const {
     const int cells = static_cast<int>(arc.size()) - 1;
-    std::vector<double> want = arc;
-    const std::vector<double> lo = fade(cells, s.first > 0.0, false), hi = fade(cells, false, s.last > 0.0);
+    const std::vector<double> fading = fade(cells, true, false);
     const int span = std::min(kRegradeCells, cells / (s.first > 0.0 && s.last > 0.0 ? 2 : 1));
-    // The two corrections mixed by how far the first cell is off: moved
-    // alone below kRegradeFrom, re-graded alone from kRegradeFull, so that
-    // neighbouring lines a little off alike are moved alike.
-    auto mixed = [&](const std::vector<double> &moved, std::vector<double> graded_p, double scale) {
+    // Positions p from a wall end (increasing), its first cell brought to
+    // `height` (tapered): moved alone below kRegradeFrom, re-graded alone
+    // from kRegradeFull, the two mixed between, so that neighbouring lines a
+    // little off alike are moved alike.
+    auto from_wall = [&](const std::vector<double> &p, double height, const WallAt &wall) {
+        const double first = p[1] - p[0], scale = std::pow(height / first, taper(c, wall, graded));
+        const double error = first * (1.0 - scale);
+        std::vector<double> moved = p, graded_p = p;
+        for (int k = 1; k < cells; ++k) moved[static_cast<std::size_t>(k)] -= error * fading[static_cast<std::size_t>(k - 1)];
         const double t = std::clamp((std::abs(std::log(scale)) - std::log(kRegradeFrom)) /
                                         (std::log(kRegradeFull) - std::log(kRegradeFrom)), 0.0, 1.0);
         const double m = t * t * (3.0 - 2.0 * t);
         if (m == 0.0 || !regrade(graded_p, scale, span)) return moved;
-        std::vector<double> out(moved.size());
-        for (std::size_t k = 0; k < out.size(); ++k) out[k] = (1.0 - m) * moved[k] + m * graded_p[k];
-        return out;
+        for (std::size_t k = 0; k < moved.size(); ++k) moved[k] = (1.0 - m) * moved[k] + m * graded_p[k];
+        return moved;
     };
-    if (s.first > 0.0) {
-        const double first = arc[1] - arc[0];
-        const double scale = std::pow(s.first / first, taper(c, s.first_wall, graded));
-        std::vector<double> moved = want;
-        for (int k = 1; k < cells; ++k)
-            moved[static_cast<std::size_t>(k)] -= (first - first * scale) * lo[static_cast<std::size_t>(k - 1)];
-        want = mixed(moved, want, scale);
-    }
+    std::vector<double> want = arc;
+    if (s.first > 0.0) want = from_wall(want, s.first, s.first_wall);
     if (s.last > 0.0) {
-        const double last = arc[static_cast<std::size_t>(cells)] - arc[static_cast<std::size_t>(cells - 1)];
-        const double scale = std::pow(s.last / last, taper(c, s.last_wall, graded));
         // The line from its far end: reversed and negated, corrected from its start.
-        std::vector<double> back(want.rbegin(), want.rend()), moved = want;
+        std::vector<double> back(want.rbegin(), want.rend());
         for (double &v : back) v = -v;
-        for (int k = 1; k < cells; ++k)
-            moved[static_cast<std::size_t>(k)] += (last - last * scale) * hi[static_cast<std::size_t>(k)];
-        std::vector<double> moved_back(moved.rbegin(), moved.rend());
-        for (double &v : moved_back) v = -v;
-        back = mixed(moved_back, back, scale);
+        back = from_wall(back, s.last, s.last_wall);
         for (std::size_t k = 0; k < back.size(); ++k) want[want.size() - 1 - k] = -back[k];
     }
     return want;
