@@ -221,12 +221,13 @@ def heights(wall, wake):
     rows beside the wake open up downstream as the outflow's (the side's
     joined nodes grade the lines that leave them as its wall's do)."""
     h = float(args.first_cell)
-    q = (0.004 / h)**(1.0 / (wake - 1))
+    q = (D_WAKE / h)**(1.0 / (wake - 1))
     v = [h] * wall + [h * q**k for k in range(1, wake)]
     return "[" + ", ".join(f"{x:.4g}" for x in v) + "]"
 
 
-N_MAIN_WAKE = 41 + args.n_wake - 1   # n_wake1 + n_wake - 1: the main wake's nodes, its trailing edge's included
+N_WAKE1, D_WAKE = 41, 0.004   # the case's n_wake1 and d_wake (below)
+N_MAIN_WAKE = N_WAKE1 + args.n_wake - 1   # n_wake1 + n_wake - 1: the main wake's nodes, its trailing edge's included
 if LEGS:
     WS_UPPER = f"wall_spacing = {{ bottom = {heights(args.n_upper, N_MAIN_WAKE)} }}"
     WS_WAKE = f"wall_spacing = {{ bottom = {heights(49, args.n_wake)}, top = {heights(9, N_MAIN_WAKE)} }}"
@@ -342,7 +343,7 @@ n_front = {args.n_front}        # main element: its lower surface, from the slot
 n_upper = {args.n_upper}        # main element: its upper surface, nose to trailing edge
 n_nose = 25         # the slot: along the cove and the flap's nose, from the slot's line to the slot's end
 n_cove = 9          # main element: the cove from the slot's end to the trailing edge
-n_wake1 = 41        # main wake: from the trailing edge to above the flap's trailing edge
+n_wake1 = {N_WAKE1}        # main wake: from the trailing edge to above the flap's trailing edge
 n_aft = "n_cove + n_wake1 - 1"   # flap: its upper surface from the slot's end to its trailing edge
 n_flap = 65         # flap: its lower surface
 {leg_constants}n_wake = {args.n_wake}         # each wake from the flap's trailing edge on, to the outflow
@@ -356,7 +357,7 @@ ds_fte = {args.ds_fte:g}      # and at the flap's trailing edge
 d_far = {args.d_far!r}         # spacing at the far field
 d_wo = {d_wo}         # spacing along the wakes and the far field at the outflow
 d_ff = 0.01         # spacing along the far field below the flap where its wake's columns begin
-d_wake = 0.004      # spacing across the wakes at the outflow
+d_wake = {D_WAKE:g}      # spacing across the wakes at the outflow
 d_wake1 = {args.d_wake1:g}     # spacing along the main wake above the flap's trailing edge
 R = 10              # the far field: a half circle of radius R about (xc, 0), then straight to x = xo
 xc = 0.5

@@ -442,13 +442,11 @@ int run_block_set(const Case &c, const RunOptions &o) {
     if (status != EG2D_OK) throw Failure(exit_code_for_status(status), c.file + ": " + why + " (no files written)");
     double at_joins = 0, nearby = 0;
     check_set(set, eg2d_blocks_get_kinks(set, &at_joins, &nearby), c.blocks_at);
-    const bool any_free = std::any_of(c.joins.begin(), c.joins.end(), [](const JoinSpec &j) { return !j.held; });
-    if (any_free)
+    const auto held = std::count_if(c.joins.begin(), c.joins.end(), [](const JoinSpec &j) { return j.held; });
+    if (held < static_cast<long>(c.joins.size()))
         std::printf("grid lines across the joins: turns up to %.2f deg at the joined nodes, %.2f deg one line into "
                     "the blocks%s\n", at_joins, nearby,
-                    std::any_of(c.joins.begin(), c.joins.end(), [](const JoinSpec &j) { return j.held; })
-                        ? " (the free joins; held ones are boundaries the lines meet)"
-                        : "");
+                    held > 0 ? " (the free joins; held ones are boundaries the lines meet)" : "");
     else
         std::printf("grid lines across the joins: every join is held (lines placed by the case, met as boundaries: "
                     "their turns are not measured)\n");
