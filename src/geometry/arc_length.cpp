@@ -22,6 +22,11 @@ constexpr double kRelativeTolerance = 1e-14;
 // whose tolerance cannot be met anywhere (noise in a callback, or a length
 // in the subnormal range, found by fuzz_api) would otherwise make 2^30 panels.
 constexpr std::size_t kMaxPanels = std::size_t{1} << 16;
+// The tolerance is not tried where the round-off bound over a piece is this
+// far above it: the panels' round-off falls with their width, but it would
+// take more than kMaxPanels of them (the bound is about 100x the round-off
+// seen on smooth callbacks).
+constexpr double kFarBelow = 1e7;
 }  // namespace
 
 double ArcLength::speed(double t, std::size_t piece) const {
@@ -39,24 +44,37 @@ double ArcLength::integrate(double a, double b, std::size_t piece) const {
     return h * sum;
 }
 
-void ArcLength::refine(double a, double b, double whole, std::size_t piece, int depth, double tol) {
+bool ArcLength::refine(double a, double b, double whole, std::size_t piece, int depth, double tol, double noise) {
     const double m = 0.5 * (a + b);
     const double left = integrate(a, m, piece), right = integrate(m, b, piece);
-    if (depth >= kMaxDepth || std::fabs(left + right - whole) <= tol) {
+    // The three integrals' round-off is at most about noise (b - a) each.
+    if (depth >= kMaxDepth || std::fabs(left + right - whole) <= std::max(tol, 3.0 * noise * (b - a))) {
         t_.push_back(m);
         piece_.push_back(piece);
         cumulative_.push_back(cumulative_.back() + left);
         t_.push_back(b);
         piece_.push_back(piece);
         cumulative_.push_back(cumulative_.back() + right);
-        return;
+        return true;
     }
-    if (t_.size() >= kMaxPanels)
-        fail(Failure::Argument, format("the curve's arc length does not converge to %g of its length within %zu "
-                                       "panels: the curve is not smooth, or too small (length %g)",
-                                       kRelativeTolerance, kMaxPanels, whole));
-    refine(a, m, left, piece, depth + 1, tol);
-    refine(m, b, right, piece, depth + 1, tol);
+    if (t_.size() >= kMaxPanels) return false;
+    return refine(a, m, left, piece, depth + 1, tol, noise) && refine(m, b, right, piece, depth + 1, tol, noise);
+}
+
+bool ArcLength::tabulate(double tol, double r_max, bool with_round_off) {
+    t_.assign(1, 0.0);
+    piece_.assign(1, 0);
+    cumulative_.assign(1, 0.0);
+    for (std::size_t p = 0; p + 1 < knots_.size(); ++p) {
+        const double noise = with_round_off ? curve_->speed_round_off(knots_[p], knots_[p + 1], r_max) : 0.0;
+        for (int k = 0; k < kInitialPanels; ++k) {
+            const double a = knots_[p] + (knots_[p + 1] - knots_[p]) * k / kInitialPanels;
+            const double c = k + 1 == kInitialPanels ? knots_[p + 1]
+                                                     : knots_[p] + (knots_[p + 1] - knots_[p]) * (k + 1) / kInitialPanels;
+            if (!refine(a, c, integrate(a, c, p), p, 0, tol, noise)) return false;
+        }
+    }
+    return true;
 }
 
 ArcLength::ArcLength(std::shared_ptr<const Curve> curve) : curve_(std::move(curve)) {
@@ -66,27 +84,33 @@ ArcLength::ArcLength(std::shared_ptr<const Curve> curve) : curve_(std::move(curv
     for (double t : b)
         if (t > knots_.back() && t < 1.0) knots_.push_back(t);
     knots_.push_back(1.0);
-    // A first estimate of the length sets the absolute tolerance of the panels.
-    double estimate = 0.0;
+    // A first estimate of the length sets the absolute tolerance of the
+    // panels; the points' distance from the origin, the speed's round-off.
+    double estimate = 0.0, r_max = 0.0;
     for (std::size_t p = 0; p + 1 < knots_.size(); ++p)
         for (int k = 0; k < kInitialPanels; ++k) {
             const double a = knots_[p] + (knots_[p + 1] - knots_[p]) * k / kInitialPanels;
             const double c = knots_[p] + (knots_[p + 1] - knots_[p]) * (k + 1) / kInitialPanels;
             estimate += integrate(a, c, p);
+            double x, y;
+            curve_->eval(a, x, y);
+            r_max = std::max({r_max, std::fabs(x), std::fabs(y)});
         }
     if (!(estimate > 0.0) || !std::isfinite(estimate))
         fail(Failure::Argument, format("the curve has length %g: need a finite, positive length", estimate));
+    // 1e-14 of the length where the curve's points resolve it; to the
+    // speed's round-off where they do not (Curve::speed_round_off: a piece
+    // far shorter than its distance from the origin), which the bound on the
+    // panels finds, or the bound on that round-off says up front.
     const double tol = kRelativeTolerance * estimate;
-    t_.assign(1, 0.0);
-    piece_.assign(1, 0);
-    cumulative_.assign(1, 0.0);
+    bool far_below = false;
     for (std::size_t p = 0; p + 1 < knots_.size(); ++p)
-        for (int k = 0; k < kInitialPanels; ++k) {
-            const double a = knots_[p] + (knots_[p + 1] - knots_[p]) * k / kInitialPanels;
-            const double c = k + 1 == kInitialPanels ? knots_[p + 1]
-                                                     : knots_[p] + (knots_[p + 1] - knots_[p]) * (k + 1) / kInitialPanels;
-            refine(a, c, integrate(a, c, p), p, 0, tol);
-        }
+        far_below = far_below || curve_->speed_round_off(knots_[p], knots_[p + 1], r_max) *
+                                             (knots_[p + 1] - knots_[p]) > kFarBelow * tol;
+    if (!(!far_below && tabulate(tol, r_max, false)) && !tabulate(tol, r_max, true))
+        fail(Failure::Argument, format("the curve's arc length does not converge to %g of its length within %zu "
+                                       "panels: the curve is not smooth, or too small (length %g)",
+                                       kRelativeTolerance, kMaxPanels, estimate));
     double x, y;
     for (double t : {0.0, 0.5, 1.0}) {
         curve_->eval(t, x, y);

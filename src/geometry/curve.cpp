@@ -2,14 +2,26 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace eg2d {
 
+namespace {
+// The differences' step, relative to the piece: fourth-order error ~ h^4
+// |r^(5)|/30, round-off ~ eps |r|/h; 2e-4 keeps both near 1e-12 of |r'| for
+// curves whose derivatives grow like (2 pi)^k (a closed curve traversed once).
+constexpr double kStep = 2e-4;
+// Round-off of one callback coordinate, in units of eps |r| (a few operations).
+constexpr double kPointUlps = 4.0;
+}  // namespace
+
+double Curve::speed_round_off(double lo, double hi, double r_max) const {
+    // The central formula's weights sum to 18/12 in absolute value.
+    return 1.5 * kPointUlps * std::numeric_limits<double>::epsilon() * r_max / (kStep * (hi - lo));
+}
+
 void Curve::derivative(double t, double lo, double hi, double &dx, double &dy) const {
-    // Fourth-order differences: error ~ h^4 |r^(5)|/30, round-off ~ eps |r|/h;
-    // h = 2e-4 of the piece keeps both near 1e-12 of |r'| for curves whose
-    // derivatives grow like (2 pi)^k (a closed curve traversed once).
-    const double h = 2e-4 * (hi - lo);
+    const double h = kStep * (hi - lo);  // fourth-order differences
     double x[5], y[5];
     if (t - 2 * h >= lo && t + 2 * h <= hi) {  // central
         for (int k = 0; k < 5; ++k) eval(t + (k - 2) * h, x[k], y[k]);

@@ -16,6 +16,11 @@ public:
     // breaks). Default: fourth-order finite differences kept inside [lo, hi],
     // so a kink at a break never enters a difference.
     virtual void derivative(double t, double lo, double hi, double &dx, double &dy) const;
+    // The round-off in |dr/dt| on the piece [lo, hi] of a curve whose points
+    // are about r_max from the origin: the differences' (about eps r_max /
+    // their step), far above eps |r'| when the piece is much shorter than
+    // r_max. A curve whose derivative is exact overrides it with 0.
+    virtual double speed_round_off(double lo, double hi, double r_max) const;
     // Parameters in (0, 1) where the curve may have a kink or a jump in
     // curvature (polyline vertices, spline knots, an airfoil's leading edge).
     virtual std::vector<double> breaks() const { return {}; }
@@ -42,9 +47,14 @@ std::shared_ptr<Curve> read_airfoil(const char *path);
 // Arc length of a curve (the grid-generation lecture notes eq 2.11): s(t) = (1/L) int_0^t |r'(u)| du.
 // The integral is tabulated once on panels of 5-point Gauss-Legendre
 // quadrature, split until halving a panel changes its length by less than
-// 1e-14 L; s -> t is then solved by safeguarded Newton on one panel. The
-// normalized arc length of a returned parameter is exact to about 1e-12
-// (1e-11 for callbacks, whose speed comes from finite differences).
+// 1e-14 L, or, where the curve's points cannot resolve that (a callback's
+// piece much shorter than its distance from the origin), by less than the
+// speed's round-off over the panel (Curve::speed_round_off); s -> t is then
+// solved by safeguarded
+// Newton on one panel. The normalized arc length of a returned parameter is
+// exact to about 1e-12 (1e-11 for callbacks, whose speed comes from finite
+// differences; for a callback's curve of length L about r_max from the
+// origin, to about 1e-16 r_max / L more).
 class ArcLength {
 public:
     // Throws Argument for a curve with a non-finite point or zero length.
@@ -60,7 +70,11 @@ public:
 private:
     double speed(double t, std::size_t panel) const;
     double integrate(double a, double b, std::size_t panel) const;  // 5-point Gauss on [a, b]
-    void refine(double a, double b, double whole, std::size_t piece, int depth, double tol);
+    // Splits [a, b] until its length is known to tol or to the speed's
+    // round-off (noise per unit t); false when the panels run out.
+    bool refine(double a, double b, double whole, std::size_t piece, int depth, double tol, double noise);
+    // The panels of the whole curve (false: as refine()).
+    bool tabulate(double tol, double r_max, bool with_round_off);
 
     std::shared_ptr<const Curve> curve_;
     std::vector<double> knots_;       // 0, the breaks, 1

@@ -51,6 +51,47 @@ static void test_circle_arc_length_points(void **state) {
     free(y);
 }
 
+/* An arc of length L turning by 2 radians, starting at (x0, 0.3), t
+ * proportional to its arc length: a piece much shorter than its distance from
+ * the origin (a short formula side, say a leg 1e-5 long at a trailing edge). */
+struct small_arc { double x0, L; };
+static void small_arc_fn(void *user, double t, double *x, double *y) {
+    const struct small_arc *a = user;
+    *x = a->x0 + a->L * sin(2 * t) / 2;
+    *y = 0.3 + a->L * (1 - cos(2 * t)) / 2;
+}
+
+/* The arc length of such a piece cannot converge to 1e-14 of its length
+ * (its points carry round-off of 1e-16 of their distance from the origin,
+ * which its finite differences multiply): it converges to that round-off
+ * instead, where it used to fail after 65536 panels. */
+static void test_small_curve_far_from_origin(void **state) {
+    static const double lengths[3] = {1.65e-4, 1e-5, 1e-7}, origins[3] = {0.89, 10, 1000};
+    int a, b, k;
+    (void)state;
+    for (a = 0; a < 3; ++a)
+        for (b = 0; b < 3; ++b) {
+            struct small_arc arc = {origins[b], lengths[a]};
+            /* the points' round-off over the length: eps r / L */
+            const double floor = 2.2e-16 * origins[b] / lengths[a];
+            double L, worst = 0;
+            eg2d_curve *c;
+            assert_int_equal(eg2d_curve_function(small_arc_fn, &arc, &c), EG2D_OK);
+            assert_int_equal(eg2d_curve_length(c, &L), EG2D_OK);
+            for (k = 0; k <= 50; ++k) {
+                double x, y, xe, ye;
+                assert_int_equal(eg2d_curve_evaluate(c, k / 50.0, &x, &y), EG2D_OK);
+                small_arc_fn(&arc, k / 50.0, &xe, &ye);
+                worst = fmax(worst, hypot(x - xe, y - ye) / arc.L);
+            }
+            print_message("arc %g at x = %g: length error %.1e, point error %.1e of its length (round-off %.1e)\n",
+                          arc.L, arc.x0, fabs(L - arc.L) / arc.L, worst, floor);
+            assert_true(fabs(L - arc.L) <= fmax(1e-10, 1e3 * floor) * arc.L);
+            assert_true(worst <= fmax(1e-10, 1e3 * floor));
+            eg2d_curve_destroy(c);
+        }
+}
+
 /* NACA0012 (sharp TE) on one surface as a function of phi, x = (1 - cos phi)/2:
  * the test's own arc length Lambda(phi) from the leading edge by composite
  * 8-point Gauss-Legendre. */
@@ -469,6 +510,7 @@ static void test_curve_errors(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_circle_arc_length_points),
+        cmocka_unit_test(test_small_curve_far_from_origin),
         cmocka_unit_test(test_naca0012_arc_length_points),
         cmocka_unit_test(test_polyline_and_spline),
         cmocka_unit_test(test_distributions_end_spacings),
