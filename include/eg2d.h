@@ -60,9 +60,9 @@
  *     eg2d_first_cell_height, eg2d_set_airfoil.
  * 11) Sets of blocks (multi-block): eg2d_blocks_create,
  *     eg2d_blocks_destroy, eg2d_blocks_last_error, eg2d_blocks_add,
- *     eg2d_blocks_join, eg2d_blocks_hold_join, eg2d_blocks_check,
- *     eg2d_blocks_solve, eg2d_blocks_get_run, eg2d_blocks_get_kinks,
- *     eg2d_blocks_write.
+ *     eg2d_blocks_set_name, eg2d_blocks_name, eg2d_blocks_join,
+ *     eg2d_blocks_hold_join, eg2d_blocks_check, eg2d_blocks_solve,
+ *     eg2d_blocks_get_run, eg2d_blocks_get_kinks, eg2d_blocks_write.
  *
  * Introduction
  * ------------
@@ -1215,6 +1215,17 @@ EG2D_API const char *eg2d_blocks_last_error(const eg2d_blocks *set);
  * EG2D_ERR_ARGUMENT for a NULL or a grid that is in the set already. */
 EG2D_API int eg2d_blocks_add(eg2d_blocks *set, eg2d_grid *grid, int *block);
 
+/* Names a block: the name of its zone in the files that hold a zone a
+ * block (CGNS, VTK multiblock). 1 to 32 letters, digits, '_' or '-', a
+ * letter first, and no other block's name; "block" and a number is a
+ * block's name until it is named ("block0", "block1", ...), so a name of
+ * that form is only the block's own. EG2D_ERR_ARGUMENT naming the rule or
+ * the block that has the name; nothing changes then. */
+EG2D_API int eg2d_blocks_set_name(eg2d_blocks *set, int block, const char *name);
+/* Block `block`'s name, valid until the set is changed or destroyed; NULL
+ * for a NULL set or a block the set has not. */
+EG2D_API const char *eg2d_blocks_name(const eg2d_blocks *set, int block);
+
 /* Joins nodes first_a..last_a of side side_a (EG2D_SIDE_*) of block_a to
  * nodes first_b..last_b of side side_b of block_b, node to node: node
  * first_a is node first_b, and so on. Node indices count along the side in
@@ -1288,10 +1299,12 @@ EG2D_API int eg2d_blocks_get_kinks(const eg2d_blocks *set, double *at_joins, dou
  * blocks' patches (eg2d_set_patch on each block; those of the same name
  * one patch, the joined edges in none) the boundary. EG2D_FORMAT_PLOT3D
  * and _PLOT3D_ASCII (with their flags) hold a zone a block, in block
- * order, in a multi-grid file; EG2D_FORMAT_CGNS a zone a block ("block0",
- * ...) with its boundary conditions less the joined edges and each join
+ * order, in a multi-grid file; EG2D_FORMAT_CGNS a zone a block (named as
+ * the block, eg2d_blocks_set_name; CGNS readers number zones in the order
+ * of their names; EG2D_ERR_ARGUMENT for a block named as a patch, the
+ * base's family) with its boundary conditions less the joined edges and each join
  * as a 1-to-1 connection from both zones; EG2D_FORMAT_VTM a .vts a block
- * ("block0", ...) named by the .vtm (see eg2d_write), which ParaView and
+ * (NAME/NAME_0.vts, ...) that the .vtm names as the block (see eg2d_write), which ParaView and
  * VTK's vtkXMLMultiBlockDataReader read as the set. Any other format: EG2D_ERR_UNSUPPORTED
  * naming those (write each block's grid with eg2d_write). EG2D_ERR_STATE
  * unless the set checks and every block is initialised; EG2D_ERR_IO as

@@ -600,6 +600,13 @@ public:
         check(::eg2d_blocks_add(s_, g.get(), &b));
         return b;
     }
+    /* The block's name in the files that hold a zone a block ("block0", ... until named). */
+    void set_name(int block, const std::string &name) { check(::eg2d_blocks_set_name(s_, block, name.c_str())); }
+    std::string name(int block) const {
+        const char *n = ::eg2d_blocks_name(s_, block);
+        if (!n) throw error(EG2D_ERR_ARGUMENT, "eg2d_blocks_name: the set has no block " + std::to_string(block));
+        return n;
+    }
     void join(int block_a, int side_a, int first_a, int last_a, int block_b, int side_b, int first_b, int last_b) {
         check(::eg2d_blocks_join(s_, block_a, side_a, first_a, last_a, block_b, side_b, first_b, last_b));
     }

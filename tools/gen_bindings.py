@@ -194,6 +194,8 @@ HAND_WRITTEN = {
     "eg2d_blocks_destroy": "blocks_destroy and the final procedure: a no-op on a freed set",
     "eg2d_blocks_last_error": "last_error() of eg2d_blocks_t",
     "eg2d_blocks_add": "a procedure of eg2d_blocks_t taking a class(eg2d_grid_t)",
+    "eg2d_blocks_set_name": "a procedure of eg2d_blocks_t",
+    "eg2d_blocks_name": "name() of eg2d_blocks_t",
     "eg2d_blocks_join": "a procedure of eg2d_blocks_t",
     "eg2d_blocks_hold_join": "a procedure of eg2d_blocks_t",
     "eg2d_blocks_check": "a procedure of eg2d_blocks_t",

@@ -18,7 +18,7 @@ trailing edge G): "lower" under the main element from C round to L, "upper"
 over it and its wake, "front" the fan from the slot's line C-F out to the
 far field, "slot" between the cove C-D and the flap's nose F-E, "wake" from
 the slot's end D-E between the main wake (with the cove's end D-T) and the
-flap's upper surface and wake, "flap" under the flap and its wake.
+flap's upper surface and wake, "below_flap" under the flap and its wake.
 Needs numpy (Debian's /usr/bin/python3)."""
 import argparse
 import os
@@ -265,14 +265,14 @@ b = {{ block = "slot", side = "left", first = "n_leg - 1", last = "n_s - n_leg" 
 
 [[joins]]   # the flap's stagnation line
 a = "front.left"
-b = {{ block = "flap", side = "left", first = "n_lc - 1", last = 0 }}
+b = {{ block = "below_flap", side = "left", first = "n_lc - 1", last = 0 }}
 
 [[joins]]   # the line normal to the cove's corner
 a = {{ block = "lower", side = "left", first = 0, last = "n_leg - 1" }}
 b = {{ block = "slot", side = "left", first = "n_s - 1", last = "n_s - n_leg" }}
 
 [[joins]]   # the line normal to the flap's nose
-a = {{ block = "flap", side = "left", first = "n_n - 1", last = "n_lc - 1" }}
+a = {{ block = "below_flap", side = "left", first = "n_n - 1", last = "n_lc - 1" }}
 b = {{ block = "slot", side = "left", first = 0, last = "n_leg - 1" }}
 """
     leg_constants = f"""n_leg = {args.n_leg}         # nodes along the lines normal to the cove's corner and the flap's nose
@@ -301,7 +301,7 @@ b = "slot.left"
 
 [[joins]]   # the flap's stagnation line
 a = "front.left"
-b = { block = "flap", side = "left", first = "n_n - 1", last = 0 }
+b = { block = "below_flap", side = "left", first = "n_n - 1", last = 0 }
 """
     leg_constants = ""
 exitl = 'x = "ex + (dx - ex)*s"\ny = "ey + (dy - ey)*s"\n'
@@ -478,7 +478,7 @@ share = "(n_cove - 1)/(ni - 1)"
 {patch('bottom', 'wall', 'flap', last='n_aft - 1')}{patch('top', 'wall', 'main', last='n_cove - 1')}{patch('right', 'outflow', 'outflow')}
 # Below the flap: its lower surface and wake, out to the far field.
 [[blocks]]
-name = "flap"
+name = "below_flap"
 size = ["n_flap + n_wake - 1", "n_n"]
 {WS_FLAP}
 {far_field('bottom', 'phib', 'phig', 'n_flap - 1', 'xg', 'yg', 'n_wake - 1')}[blocks.sides.right]
@@ -509,7 +509,7 @@ a = {{ block = "upper", side = "bottom", first = "n_upper - 1", last = "n_upper 
 b = {{ block = "wake", side = "top", first = "n_cove - 1", last = "n_cove + n_wake1 + n_wake - 3" }}
 
 [[joins]]   # the flap's wake
-a = {{ block = "flap", side = "top", first = "n_flap - 1", last = "n_flap + n_wake - 2" }}
+a = {{ block = "below_flap", side = "top", first = "n_flap - 1", last = "n_flap + n_wake - 2" }}
 b = {{ block = "wake", side = "bottom", first = "n_aft - 1", last = "n_aft + n_wake - 2" }}
 
 '''

@@ -113,6 +113,8 @@ module eg2d
     procedure :: c_handle => blocks_c_handle
     procedure :: last_error => blocks_last_error
     procedure :: add => blocks_add
+    procedure :: set_name => blocks_set_name
+    procedure :: name => blocks_name
     procedure :: join => blocks_join
     procedure :: hold_join => blocks_hold_join
     procedure :: check => blocks_check
@@ -630,6 +632,23 @@ contains
     call blocks_finish(self, eg2d_blocks_add(self%handle, grid%handle, b), status)
     block = int(b)
   end subroutine blocks_add
+
+  ! Names block `block` (0, 1, ...) in the files that hold a zone a block.
+  subroutine blocks_set_name(self, block, name, status)
+    class(eg2d_blocks_t), intent(inout) :: self
+    integer, intent(in) :: block
+    character(*), intent(in) :: name
+    integer, intent(out), optional :: status
+    call blocks_finish(self, eg2d_blocks_set_name(self%handle, int(block, c_int), c_path(name)), status)
+  end subroutine blocks_set_name
+
+  ! Block `block`'s name ("block0", ... until named); '' for a block the set has not.
+  function blocks_name(self, block) result(s)
+    class(eg2d_blocks_t), intent(in) :: self
+    integer, intent(in) :: block
+    character(:), allocatable :: s
+    s = eg2d_c_string(eg2d_blocks_name(self%handle, int(block, c_int)))
+  end function blocks_name
 
   subroutine blocks_join(self, block_a, side_a, first_a, last_a, block_b, side_b, first_b, last_b, status)
     class(eg2d_blocks_t), intent(inout) :: self

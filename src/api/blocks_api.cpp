@@ -85,6 +85,17 @@ EG2D_API int eg2d_blocks_hold_join(eg2d_blocks *set, int join, int held) {
     });
 }
 
+EG2D_API int eg2d_blocks_set_name(eg2d_blocks *set, int block, const char *name) {
+    return guard_set(set, "eg2d_blocks_set_name", [&] {
+        require_ptr(name, "name");
+        set->set.rename(block, name);
+    });
+}
+
+EG2D_API const char *eg2d_blocks_name(const eg2d_blocks *set, int block) {
+    return set && block >= 0 && block < set->set.size() ? set->set.name(block).c_str() : nullptr;
+}
+
 EG2D_API int eg2d_blocks_check(eg2d_blocks *set) {
     return guard_set(set, "eg2d_blocks_check", [&] { set->set.check(); });
 }
@@ -154,7 +165,9 @@ EG2D_API int eg2d_blocks_write(const eg2d_blocks *set, const char *path, int fil
             std::vector<ZoneJoin> joins;
             for (const Join &j : bs.joins())
                 joins.push_back(ZoneJoin{j.a.block, j.a.side, j.a.first, j.a.last, j.b.block, j.b.side, j.b.first, j.b.last});
-            write_blocks(grids, joins, bs.block(0)->settings, path, file_format);
+            std::vector<std::string> names;
+            for (int b = 0; b < bs.size(); ++b) names.push_back(bs.name(b));
+            write_blocks(grids, joins, names, bs.block(0)->settings, path, file_format);
             return;
         }
         std::vector<MeshTwin> twins;

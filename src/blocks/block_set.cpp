@@ -1,6 +1,7 @@
 #include "blocks/block_set.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 
@@ -19,8 +20,29 @@ int BlockSet::add(Generator *block) {
     if (std::find(blocks_.begin(), blocks_.end(), block) != blocks_.end())
         fail(Failure::Argument, format("the grid is block %d of this set already",
                                        static_cast<int>(std::find(blocks_.begin(), blocks_.end(), block) - blocks_.begin())));
+    names_.reserve(names_.size() + 1);
     blocks_.push_back(block);
+    names_.push_back(format("block%d", size() - 1));
     return size() - 1;
+}
+
+void BlockSet::rename(int b, const std::string &name) {
+    if (b < 0 || b >= size())
+        fail(Failure::Argument, format("block = %d: the set has %s", b,
+                                       size() ? format("blocks 0..%d", size() - 1).c_str() : "no blocks"));
+    bool good = !name.empty() && name.size() <= 32 && std::isalpha(static_cast<unsigned char>(name[0]));
+    for (char ch : name) good = good && (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-');
+    if (!good)
+        fail(Failure::Argument, format("name \"%.40s\": a block's name is 1 to 32 letters, digits, '_' or '-', a "
+                                       "letter first", name.c_str()));
+    if (name.size() > 5 && name.compare(0, 5, "block") == 0 &&
+        name.find_first_not_of("0123456789", 5) == std::string::npos && name != format("block%d", b))
+        fail(Failure::Argument, format("name \"%s\": \"block\" and a number name blocks by their index (this is "
+                                       "block %d)", name.c_str(), b));
+    for (int o = 0; o < size(); ++o)
+        if (o != b && names_[static_cast<std::size_t>(o)] == name)
+            fail(Failure::Argument, format("name \"%s\": block %d has that name", name.c_str(), o));
+    names_[static_cast<std::size_t>(b)] = name;
 }
 
 void BlockSet::forget(const Generator *block) {

@@ -49,6 +49,14 @@ public:
     // side is joined twice); Argument naming the join otherwise. Strong
     // guarantee.
     void join(const Join &j);
+    // Block b's name, "block<b>" until named: the zone's in the files that
+    // hold a zone a block (CGNS, VTK multiblock).
+    const std::string &name(int b) const { return names_[static_cast<std::size_t>(b)]; }
+    // Names block b: 1 to 32 letters, digits, '_' or '-', a letter first (a
+    // CGNS name, an XML attribute, part of a file name), no other block's
+    // name, and "block" with digits only as b's own default (a block added
+    // later gets that). Argument naming the rule or the other block.
+    void rename(int b, const std::string &name);
     // Join `index` (in the order join() took them) held, or free again.
     // Argument for an index the set has not.
     void hold(int index, bool held);
@@ -70,6 +78,7 @@ private:
     double join_gap(const Join &j, int t, bool given, double &xa, double &ya, double &xb, double &yb) const;
 
     std::vector<Generator *> blocks_;  // nullptr: forgotten
+    std::vector<std::string> names_;
     std::vector<Join> joins_;
 };
 

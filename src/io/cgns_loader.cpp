@@ -157,7 +157,7 @@ void join_transform(const ZoneJoin &j, int *t) {
 }
 }  // namespace
 
-// A set of blocks: a zone a block ("block0", ...), its patches less the
+// A set of blocks: a zone a block (named as the blocks), its patches less the
 // joined edges, each join a 1-to-1 connection listed from both zones.
 void write_cgns_blocks(const BlocksRequest &r, OutputFile &out) {
     const Plugin plugin = load_plugin();
@@ -173,7 +173,7 @@ void write_cgns_blocks(const BlocksRequest &r, OutputFile &out) {
             for (int q = std::min(first, last); q < std::max(first, last); ++q) e[static_cast<std::size_t>(q)] = 1;
         }
     std::vector<std::string> zone_names;
-    for (std::size_t b = 0; b < n; ++b) zone_names.push_back(format("block%zu", b));
+    for (std::size_t b = 0; b < n; ++b) zone_names.push_back(r.name(b));
     std::vector<CgnsBoundary> boundaries;
     std::vector<std::vector<CellField>> fields(n);
     std::vector<std::vector<const char *>> names(n);
@@ -181,6 +181,18 @@ void write_cgns_blocks(const BlocksRequest &r, OutputFile &out) {
     for (std::size_t b = 0; b < n; ++b) {
         boundaries.push_back(cgns_boundary(*r.grids[b], &joined[b]));
         fields[b] = cell_fields(*r.grids[b]);
+    }
+    // Zones and the patches' families are children of one base: one set of names.
+    for (std::size_t b = 0; b < n; ++b)
+        for (std::size_t o = 0; o < n; ++o)
+            for (const eg2d_cgns_patch &p : boundaries[o].patches)
+                if (zone_names[b] == p.family)
+                    fail(Failure::Argument,
+                         format("%s: block %zu's name \"%s\" is also a patch's (block %zu): a CGNS base holds its "
+                                "zones and the patches' families under one set of names; rename the block "
+                                "(eg2d_blocks_set_name)",
+                                out.path().c_str(), b, zone_names[b].c_str(), o));
+    for (std::size_t b = 0; b < n; ++b) {
         for (const CellField &f : fields[b]) {
             names[b].push_back(f.name.c_str());
             values[b].push_back(f.values.data());

@@ -95,14 +95,14 @@ void write_mesh(const UnstructuredMesh &mesh, const Settings &settings, const st
     out.commit();
 }
 
-void write_blocks(const std::vector<const Grid *> &grids, const std::vector<ZoneJoin> &joins, const Settings &settings,
-                  const char *path, int id) {
+void write_blocks(const std::vector<const Grid *> &grids, const std::vector<ZoneJoin> &joins,
+                  const std::vector<std::string> &names, const Settings &settings, const char *path, int id) {
     const FileFormat *f = find_format(id & kFormatMask);
     const int flags = id & ~kFormatMask;
     if (flags & ~f->allowed_flags)
         fail(Failure::Argument, format("format = %#x: flags %#x do not apply to the %s format", id,
                                        flags & ~f->allowed_flags, f->name));
-    const BlocksRequest r{grids, settings, flags, joins};
+    const BlocksRequest r{grids, settings, flags, joins, names};
     if (f->write_blocks_files) {
         if (!*path) fail(Failure::Argument, "path is empty");
         f->write_blocks_files(r, path);

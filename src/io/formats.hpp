@@ -53,6 +53,8 @@ struct BlocksRequest {
     const Settings &settings;
     int flags;
     std::vector<ZoneJoin> joins = {};
+    std::vector<std::string> names = {};  // a zone a block's names; empty: block0, block1, ...
+    std::string name(std::size_t b) const { return b < names.size() ? names[b] : "block" + std::to_string(b); }
 };
 
 struct FileFormat {
@@ -93,8 +95,9 @@ std::vector<FileFormat> set_formats();
 // Writes a merged mesh (a set of blocks) to path in the format id.
 void write_mesh(const UnstructuredMesh &mesh, const Settings &settings, const std::string &title, const char *path, int id);
 // Writes the blocks a zone (or a file) each to path in the format (id | flags).
-void write_blocks(const std::vector<const Grid *> &grids, const std::vector<ZoneJoin> &joins, const Settings &settings,
-                  const char *path, int id);
+// names: the blocks' (BlocksRequest::names).
+void write_blocks(const std::vector<const Grid *> &grids, const std::vector<ZoneJoin> &joins,
+                  const std::vector<std::string> &names, const Settings &settings, const char *path, int id);
 
 // Writes the grid to path in the format (id | flags); all-or-nothing.
 void write_grid(const Grid &grid, const Settings &settings, const char *path, int id,

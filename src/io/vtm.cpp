@@ -70,7 +70,7 @@ void write_vtm(const BlocksRequest &r, const std::string &path) {
         if (lstat(file_path.c_str(), &st) != 0) new_files.push_back(file_path);
         blocks.push_back(std::make_unique<OutputFile>(file_path));
         write_vts(WriteRequest{*r.grids[k], r.settings, 0, nullptr}, *blocks.back());
-        vtm.print("    <DataSet index=\"%zu\" name=\"block%zu\" file=\"%s\"/>\n", k, k,
+        vtm.print("    <DataSet index=\"%zu\" name=\"%s\" file=\"%s\"/>\n", k, xml_attribute(r.name(k)).c_str(),
                   xml_attribute(name + "/" + file).c_str());
     }
     vtm.print("  </vtkMultiBlockDataSet>\n"

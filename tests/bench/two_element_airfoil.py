@@ -53,7 +53,7 @@ out = p.stdout + p.stderr
 check(p.returncode == 5, f"eg2d run with one iteration: exit {p.returncode} == 5")
 check("a set of 6 blocks, 7 joins, 33798 nodes" in out, "the set: 6 blocks, 7 joins, 33798 nodes")
 for block, size in (("lower", "81 x 65"), ("upper", "185 x 65"), ("front", "49 x 65"),
-                    ("slot", "25 x 49"), ("wake", "97 x 49"), ("flap", "113 x 65")):
+                    ("slot", "25 x 49"), ("wake", "97 x 49"), ("below_flap", "113 x 65")):
     check(f"block {block}: {size}" in out, f"block {block}: {size}")
 check("the set reached the iteration limit (1)" in out, "stopped at the iteration limit, not refused")
 check(not os.path.exists(os.path.join(work, "out")), "no files written")

@@ -320,6 +320,48 @@ static void test_errors(void **state) {
     expect(eg2d_blocks_check(NULL), EG2D_ERR_ARGUMENT, NULL, "set is NULL");
 }
 
+/* Blocks' names (eg2d_blocks_set_name): "blockK" until named; the rule,
+ * another block's name and a default name of another block refused by
+ * name, and a refused name changes nothing. The writers' use of them is
+ * checked by readers eg2d did not write (tests/io/blocks_formats.py). */
+static void test_block_names(void **state) {
+    (void)state;
+    eg2d_grid *left = make_block(MID + 1, NJ, map_left), *right = make_block(NI - MID, NJ, map_right);
+    eg2d_blocks *set;
+    int b;
+    assert_int_equal(eg2d_blocks_create(&set), EG2D_OK);
+    assert_null(eg2d_blocks_name(set, 0));
+    expect(eg2d_blocks_set_name(set, 0, "inlet"), EG2D_ERR_ARGUMENT, set, "block = 0: the set has no blocks");
+    assert_int_equal(eg2d_blocks_add(set, left, &b), EG2D_OK);
+    assert_int_equal(eg2d_blocks_add(set, right, &b), EG2D_OK);
+    assert_string_equal(eg2d_blocks_name(set, 0), "block0");
+    assert_string_equal(eg2d_blocks_name(set, 1), "block1");
+    assert_null(eg2d_blocks_name(set, 2));
+    assert_null(eg2d_blocks_name(set, -1));
+    assert_null(eg2d_blocks_name(NULL, 0));
+    assert_int_equal(eg2d_blocks_set_name(set, 0, "inlet-duct_2"), EG2D_OK);
+    assert_string_equal(eg2d_blocks_name(set, 0), "inlet-duct_2");
+    expect(eg2d_blocks_set_name(set, 1, "inlet-duct_2"), EG2D_ERR_ARGUMENT, set,
+           "name \"inlet-duct_2\": block 0 has that name");
+    expect(eg2d_blocks_set_name(set, 1, "2nd"), EG2D_ERR_ARGUMENT, set, "a letter first");
+    expect(eg2d_blocks_set_name(set, 1, ""), EG2D_ERR_ARGUMENT, set, "1 to 32 letters, digits, '_' or '-'");
+    expect(eg2d_blocks_set_name(set, 1, "a b"), EG2D_ERR_ARGUMENT, set, "name \"a b\"");
+    expect(eg2d_blocks_set_name(set, 1, "abcdefghijabcdefghijabcdefghijabc"), EG2D_ERR_ARGUMENT, set, "1 to 32");
+    expect(eg2d_blocks_set_name(set, 1, "block0"), EG2D_ERR_ARGUMENT, set,
+           "\"block\" and a number name blocks by their index (this is block 1)");
+    expect(eg2d_blocks_set_name(set, 1, NULL), EG2D_ERR_ARGUMENT, set, "name is NULL");
+    expect(eg2d_blocks_set_name(set, 2, "outlet"), EG2D_ERR_ARGUMENT, set, "block = 2: the set has blocks 0..1");
+    assert_string_equal(eg2d_blocks_name(set, 1), "block1");  /* nothing changed */
+    assert_int_equal(eg2d_blocks_set_name(set, 1, "block1"), EG2D_OK);  /* its own default */
+    assert_int_equal(eg2d_blocks_set_name(set, 1, "block"), EG2D_OK);
+    assert_int_equal(eg2d_blocks_set_name(set, 0, "block1"), EG2D_ERR_ARGUMENT);
+    assert_string_equal(eg2d_blocks_name(set, 0), "inlet-duct_2");
+    expect(eg2d_blocks_set_name(NULL, 0, "x"), EG2D_ERR_ARGUMENT, NULL, "set is NULL");
+    eg2d_blocks_destroy(set);
+    eg2d_destroy(left);
+    eg2d_destroy(right);
+}
+
 static void test_backward_facing_step(void **state) {
     (void)state;
     eg2d_grid *grids[3];
@@ -675,6 +717,7 @@ int main(void) {
         cmocka_unit_test(test_controls),
         cmocka_unit_test(test_run_events),
         cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_block_names),
         cmocka_unit_test(test_backward_facing_step),
         cmocka_unit_test(test_walls_across_blocks),
         cmocka_unit_test(test_walled_step), cmocka_unit_test(test_walled_step_heights_node_by_node),

@@ -2294,7 +2294,7 @@ class BlockSets(unittest.TestCase):
                 else:
                     self.assertGreater(cut, 1e-3)
 
-    WAKES = {("upper", "bottom"), ("wake", "bottom"), ("wake", "top"), ("flap", "top")}
+    WAKES = {("upper", "bottom"), ("wake", "bottom"), ("wake", "top"), ("below_flap", "top")}
 
     def test_two_element_airfoil(self):
         """examples/two-element-airfoil.toml: the NLR 7301 main element and
@@ -2312,7 +2312,7 @@ class BlockSets(unittest.TestCase):
             walls = re.findall(r"wall layer block (\w+) (\w+): first cell \S+ \(median; (\S+) to (\S+), asked (\S+)"
                                r"(?: to (\S+))?\), growth (\S+) over 30 cells, angle (\S+) deg", stdout)
             self.assertEqual(sorted((b, s) for b, s, *_ in walls),
-                             [("flap", "top"), ("lower", "bottom"), ("slot", "bottom"), ("slot", "top"),
+                             [("below_flap", "top"), ("lower", "bottom"), ("slot", "bottom"), ("slot", "top"),
                               ("upper", "bottom"), ("wake", "bottom"), ("wake", "top")])
             for b, side, lo, hi, asked, asked_hi, growth, angle in walls:
                 # the sides that hold a wake ask 1e-5 on the wall, growing to 4e-3 along the wake
@@ -2351,9 +2351,10 @@ class BlockSets(unittest.TestCase):
             blocks = reader.GetOutput()
             # Each wake: the row on the wall side of a block, from the trailing
             # edge (node n_upper - 1 of "upper", the case's second block, and
-            # n_flap - 1 of "flap", its sixth) downstream to the outflow at x = 10.5.
+            # n_flap - 1 of "below_flap", its sixth) downstream to the outflow at x = 10.5.
             self.assertEqual(blocks.GetNumberOfBlocks(), 6)
-            for k, block in ((1, "upper"), (5, "flap")):
+            for k, block in ((1, "upper"), (5, "below_flap")):
+                self.assertEqual(blocks.GetMetaData(k).Get(vtk.vtkCompositeDataSet.NAME()), block)  # the case's names
                 grid = blocks.GetBlock(k)
                 ni, nj, _ = grid.GetDimensions()
                 j, first, edge = (0, 160, (0.9436, 0.01454)) if block == "upper" else (nj - 1, 64, (1.2049, -0.10267))
@@ -2474,6 +2475,14 @@ class BlockSets(unittest.TestCase):
                 with open(os.path.join(out, name + ".vtm")) as f:
                     text = f.read()
                 self.assertEqual(re.findall(r'file="([^"]+)"', text), [name + "/" + f for f in files])
+            # the blocks named as the case file names them (eg2d_blocks_set_name), read by VTK
+            import vtk
+            reader = vtk.vtkXMLMultiBlockDataReader()
+            reader.SetFileName(os.path.join(out, name + ".vtm"))
+            reader.Update()
+            data = reader.GetOutput()
+            self.assertEqual([data.GetMetaData(k).Get(vtk.vtkCompositeDataSet.NAME()) for k in range(data.GetNumberOfBlocks())],
+                             ["upstream", "upper", "lower"])
             with open(os.path.join(out, name, files[2])) as f:
                 self.assertIn('WholeExtent="0 80 0 16 0 0"', f.read())
 
@@ -2576,6 +2585,10 @@ class BlockSets(unittest.TestCase):
 
     def test_duplicate_block_name(self):
         self.bad([('name = "lower"', 'name = "upper"')], 3, "key 'blocks[2].name': \"upper\" names two blocks")
+
+    def test_block_name_refused_by_the_library(self):
+        self.bad([('name = "lower"', 'name = "lower part"'), ('block = "lower"', 'block = "lower part"')], 3,
+                 "key 'blocks[2].name': eg2d_blocks_set_name: name \"lower part\": a block's name is 1 to 32 letters")
 
     def test_one_grid_keys_refused(self):
         self.bad([('system = "winslow"', 'system = "winslow"\nsize = [9, 9]')], 3,

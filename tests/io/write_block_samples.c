@@ -101,6 +101,10 @@ int main(int argc, char **argv) {
     eg2d_grid *g[3];
     eg2d_blocks *set;
     check(step_blocks(UP, DOWN, UPPER, LOWER, g, &set), "step_blocks", eg2d_last_error(NULL));
+    /* The step's blocks named (their CGNS zones and VTK blocks); the turned pair keeps block0, block1. */
+    check(eg2d_blocks_set_name(set, 0, "upstream") || eg2d_blocks_set_name(set, 1, "upper") ||
+              eg2d_blocks_set_name(set, 2, "lower"),
+          "eg2d_blocks_set_name", eg2d_blocks_last_error(set));
     const struct {
         int block, side, first, last, type;
         const char *name;

@@ -301,15 +301,6 @@ void read_patch_array(const Fields &parent, int topology, int ni, int nj, const 
 
 void read_patches(const Fields &top, Case &c) { read_patch_array(top, c.topology, c.ni, c.nj, c.constants, c.patches); }
 
-// A block's name: 1 to 32 letters, digits, '_' or '-', a letter first (it is
-// part of the block's file names, NAME-BLOCK.vts).
-bool good_block_name(const std::string &n) {
-    if (n.empty() || n.size() > 32 || !std::isalpha(static_cast<unsigned char>(n[0]))) return false;
-    for (char ch : n)
-        if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '-') return false;
-    return true;
-}
-
 // [[blocks]]: name, size, sides (as a single-block case's [sides]),
 // [[blocks.patches]] and wall_spacing (as [controls] wall_spacing, for this
 // block's sides); each block's formulas see its own ni, nj.
@@ -324,10 +315,10 @@ void read_blocks(const Fields &top, Case &c) {
         f.finish();
         BlockSpec b;
         b.where = l;
+        // Its form is the library's to check (eg2d_blocks_set_name); the joins
+        // refer to blocks by name, so two blocks of one name are refused here.
         b.name = f.text("name");
-        if (!good_block_name(b.name))
-            throw Failure(EXIT_CASE, f.at("name").str() + ": \"" + b.name +
-                                         "\": a block's name is 1 to 32 letters, digits, '_' or '-', a letter first");
+        b.name_at = f.at("name");
         for (const auto &other : c.blocks)
             if (other.name == b.name)
                 throw Failure(EXIT_CASE, f.at("name").str() + ": \"" + b.name + "\" names two blocks (the other at line " +

@@ -66,7 +66,7 @@ struct OutputFile {
 struct BlockSpec {  // one block: a single-block grid of its own
     std::string name;
     int ni = 0, nj = 0;
-    Location where, size_at;
+    Location where, size_at, name_at;
     Constants constants;  // the case's, with this block's ni, nj
     std::vector<SideSpec> sides;
     std::vector<PatchSetting> patches;

@@ -376,6 +376,11 @@ int run_block_set(const Case &c, const RunOptions &o) {
     for (std::size_t k = 0; k < grids.size(); ++k) {
         int index = 0;
         check_set(set, eg2d_blocks_add(set, grids[k].get(), &index), c.blocks[k].where);
+        // A name the library refuses is the case file's error, as another key's is.
+        const int named = eg2d_blocks_set_name(set, index, c.blocks[k].name.c_str());
+        if (named == EG2D_ERR_ARGUMENT)
+            throw Failure(EXIT_CASE, c.blocks[k].name_at.str() + ": " + eg2d_blocks_last_error(set));
+        check_set(set, named, c.blocks[k].name_at);
     }
     for (std::size_t k = 0; k < c.joins.size(); ++k) {
         const JoinSpec &j = c.joins[k];

@@ -111,6 +111,8 @@ PROTOTYPES = {
     "eg2d_blocks_destroy": (None, [blocks_p]),
     "eg2d_blocks_last_error": (c_char_p, [blocks_p]),
     "eg2d_blocks_add": (c_int, [blocks_p, grid_p, int_p]),
+    "eg2d_blocks_set_name": (c_int, [blocks_p, c_int, c_char_p]),
+    "eg2d_blocks_name": (c_char_p, [blocks_p, c_int]),
     "eg2d_blocks_join": (c_int, [blocks_p, c_int, c_int, c_int, c_int, c_int, c_int, c_int, c_int]),
     "eg2d_blocks_hold_join": (c_int, [blocks_p, c_int, c_int]),
     "eg2d_blocks_check": (c_int, [blocks_p]),

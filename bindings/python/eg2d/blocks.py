@@ -52,6 +52,17 @@ class Blocks(Handle):
         self._grids.append(grid)
         return b.value
 
+    def set_name(self, block, name):
+        """Names the block in the files that hold a zone a block (CGNS, VTK multiblock)."""
+        self._check(lib.eg2d_blocks_set_name(self._handle(), int(block), str(name).encode()))
+
+    def name(self, block):
+        """The block's name ("block0", ... until named)."""
+        n = lib.eg2d_blocks_name(self._handle(), int(block))
+        if n is None:
+            raise IndexError("the set has no block %d" % block)
+        return _text(n)
+
     def join(self, block_a, side_a, first_a, last_a, block_b, side_b, first_b, last_b):
         """Nodes first_a..last_a of side_a of block_a are nodes first_b..last_b of side_b of block_b."""
         self._check(lib.eg2d_blocks_join(self._handle(), int(block_a), int(side_a), int(first_a), int(last_a),
