@@ -7,7 +7,8 @@
  * DIR/step.su2, the OpenFOAM case DIR/step_foam, the three blocks as zones
  * of the one-cell-thick ASCII Plot3D DIR/step.p3d, a zone a block with
  * its boundary conditions and the joins as 1-to-1 connections in
- * DIR/step.cgns (unless no-cgns), VTK's multiblock DIR/step.vtm (its
+ * DIR/step.cgns (unless no-cgns; and there a block named as a patch is
+ * refused: EG2D_ERR_ARGUMENT, no DIR/clash.cgns), VTK's multiblock DIR/step.vtm (its
  * blocks in DIR/step/), DIR/step.txt: "cells points wall inlet outlet",
  * the counts worked out here from the blocks, and DIR/step_nodes.txt:
  * each block's "ni nj" line, then its nodes "x y" (eg2d_get_coordinates,
@@ -24,6 +25,7 @@
 #include <string.h>
 #include <dirent.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "block_domains.h"
 #include "eg2d.h"
@@ -130,6 +132,15 @@ int main(int argc, char **argv) {
     if (argc < 3 || strcmp(argv[2], "no-cgns")) {
         snprintf(path, sizeof path, "%s/step.cgns", argv[1]);
         check(eg2d_blocks_write(set, path, EG2D_FORMAT_CGNS), path, eg2d_blocks_last_error(set));
+        /* A block named as a patch (a family of the base): refused by name, no file. */
+        snprintf(path, sizeof path, "%s/clash.cgns", argv[1]);
+        check(eg2d_blocks_set_name(set, 1, "outlet"), "eg2d_blocks_set_name", eg2d_blocks_last_error(set));
+        if (eg2d_blocks_write(set, path, EG2D_FORMAT_CGNS) != EG2D_ERR_ARGUMENT ||
+            !strstr(eg2d_blocks_last_error(set), "block 1's name \"outlet\" is also a patch's") || access(path, F_OK) == 0) {
+            fprintf(stderr, "%s: a block named as a patch was not refused: %s\n", path, eg2d_blocks_last_error(set));
+            return 1;
+        }
+        check(eg2d_blocks_set_name(set, 1, "upper"), "eg2d_blocks_set_name", eg2d_blocks_last_error(set));
     }
     snprintf(path, sizeof path, "%s/step.vtm", argv[1]);
     check(eg2d_blocks_write(set, path, EG2D_FORMAT_VTM), path, eg2d_blocks_last_error(set));
