@@ -1297,7 +1297,9 @@ EG2D_API int eg2d_blocks_get_kinks(const eg2d_blocks *set, double *at_joins, dou
  * EG2D_FORMAT_OPENFOAM (a case directory, as eg2d_write makes) take it as
  * one mesh: the joined nodes one point, the joins interior faces, the
  * blocks' patches (eg2d_set_patch on each block; those of the same name
- * one patch, the joined edges in none) the boundary. EG2D_FORMAT_PLOT3D
+ * one patch, the joined edges in none) the boundary, its cells block by
+ * block (OpenFOAM: a cellZone a block, named as the block; a mesh written
+ * without zones removes an earlier cellZones). EG2D_FORMAT_PLOT3D
  * and _PLOT3D_ASCII (with their flags) hold a zone a block, in block
  * order, in a multi-grid file; EG2D_FORMAT_CGNS a zone a block (named as
  * the block, eg2d_blocks_set_name; CGNS readers number zones in the order

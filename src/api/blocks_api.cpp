@@ -184,7 +184,14 @@ EG2D_API int eg2d_blocks_write(const eg2d_blocks *set, const char *path, int fil
                 }
             }
         }
-        const UnstructuredMesh mesh = unstructured_mesh(blocks, twins);
+        UnstructuredMesh mesh = unstructured_mesh(blocks, twins);
+        std::size_t first = 0;  // its cells are the blocks', block by block
+        for (int b = 0; b < bs.size(); ++b) {
+            const Grid &g = bs.block(b)->grid();
+            const std::size_t count = static_cast<std::size_t>(g.ni() - 1) * static_cast<std::size_t>(g.nj() - 1);
+            mesh.zones.push_back(CellZone{bs.name(b), first, count});
+            first += count;
+        }
         write_mesh(mesh, bs.block(0)->settings, format("a set of %d blocks, %ld nodes", bs.size(), nodes), path, file_format);
     });
 }

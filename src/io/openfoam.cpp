@@ -10,6 +10,7 @@
 // pointing out of the domain. system/ gets a minimal controlDict, fvSchemes
 // and fvSolution, which checkMesh and the other utilities need to run, but
 // only where the case has none: a case the user has set up keeps its own.
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
@@ -159,6 +160,20 @@ void write_openfoam_mesh(const MeshRequest &r, const std::string &dir) {
     entry("frontAndBack", "empty", 2 * m.cells());
     boundary.print(")\n");
 
+    // A set's blocks as cell zones named as the blocks (blockMesh's zones).
+    std::unique_ptr<OutputFile> zones;
+    if (!m.zones.empty()) {
+        zones = std::make_unique<OutputFile>(mesh + "cellZones");
+        header(*zones, "regIOobject", loc, "cellZones");
+        zones->print("%zu\n(\n", m.zones.size());
+        for (const CellZone &z : m.zones) {
+            zones->print("%s\n{\n    type cellZone;\ncellLabels List<label> %zu\n(\n", z.name.c_str(), z.count);
+            for (std::size_t c = z.first; c < z.first + z.count; ++c) zones->print("%zu\n", c);
+            zones->print(")\n;\n}\n");
+        }
+        zones->print(")\n");
+    }
+
     // The user's own system/ files stay; missing ones are written.
     std::vector<std::unique_ptr<OutputFile>> system;
     const struct { const char *name, *cls, *text; } files[] = {
@@ -176,6 +191,8 @@ void write_openfoam_mesh(const MeshRequest &r, const std::string &dir) {
 
     // Everything is written: now put it in place.
     for (OutputFile *f : {&points, &face_file, &owner, &neighbour, &boundary}) f->commit();
+    if (zones) zones->commit();
+    else std::remove((mesh + "cellZones").c_str());  // an earlier mesh's: its cells are not these
     for (auto &f : system) f->commit();
     made.keep();
 }

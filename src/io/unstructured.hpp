@@ -30,10 +30,17 @@ struct MeshPatch {
     std::vector<MeshEdge> edges;
 };
 
+// Cells first..first+count-1 of a mesh, named: a set's block.
+struct CellZone {
+    std::string name;
+    std::size_t first, count;
+};
+
 struct UnstructuredMesh {
     std::vector<double> x, y;                // per point
     std::vector<std::array<int, 4>> quads;   // per cell, counter-clockwise
     std::vector<MeshPatch> patches;          // every boundary edge in exactly one
+    std::vector<CellZone> zones;             // a set's blocks (none for one grid)
     std::size_t points() const { return x.size(); }
     std::size_t cells() const { return quads.size(); }
 };

@@ -10,7 +10,8 @@ and a pair of blocks one turned by 90 degrees; write_block_samples.c), then:
     markers wall, inlet and outlet with their edge counts;
   OpenFOAM: checkMesh says "Mesh OK.", one region (the joins are interior
     faces), upper-triangular order, its patch table wall, inlet, outlet and
-    frontAndBack with their face counts;
+    frontAndBack with their face counts, and a cell zone a block, named as
+    the block, with the block's cells;
   Plot3D: the three zones read by OpenFOAM's plot3dToFoam (which merges
     the points zones share), then checkMesh: "Mesh OK.", one region, the
     cells, and the boundary faces less the joins';
@@ -91,6 +92,12 @@ def main():
     table = {k: int(v) for k, v in re.findall(r"^\s{4}(\w+)\s+(\d+)\s+\d+\s+ok", log, re.M)}
     want = dict(patches, frontAndBack=2 * cells)
     check(table == want, f"openfoam: checkMesh's patches and face counts {table} == {want}")
+    # the blocks as cell zones named as the blocks, block by block
+    section = log.split("Checking basic cellZone addressing...")[-1].split("\n\n")[0]
+    zones = {k: int(v) for k, v in re.findall(r"^\s{4}(\w+)\s+(\d+)\s+\d+\s+\S+\s+\(", section, re.M)}
+    sizes = [(25, 41), (81, 41), (81, 17)]
+    want = {n: (ni - 1) * (nj - 1) for n, (ni, nj) in zip(["upstream", "upper", "lower"], sizes)}
+    check("cell zones:       3" in log and zones == want, f"openfoam: checkMesh's cell zones and cells {zones} == {want}")
     non_orth = re.search(r"Mesh non-orthogonality Max: (\S+)", log)
     skew = re.search(r"Max skewness = (\S+)", log)
     print(f"     checkMesh: non-orthogonality max {non_orth.group(1) if non_orth else '?'}, "

@@ -4,7 +4,9 @@
  * (blocks 25x41, 81x41 and 81x17), solved, with the patches: "wall" on
  * every wall (the floors, the top, the step's face), "inlet" (block 0's
  * IMIN), "outlet" (blocks 1 and 2's IMAX); the joins none. Writes
- * DIR/step.su2, the OpenFOAM case DIR/step_foam, the three blocks as zones
+ * DIR/step.su2, the OpenFOAM case DIR/step_foam (and DIR/rewritten_foam:
+ * the set's case with its cellZones, then block 0 alone over it, which
+ * removes them), the three blocks as zones
  * of the one-cell-thick ASCII Plot3D DIR/step.p3d, a zone a block with
  * its boundary conditions and the joins as 1-to-1 connections in
  * DIR/step.cgns (unless no-cgns; and there a block named as a patch is
@@ -127,6 +129,15 @@ int main(int argc, char **argv) {
     check(eg2d_blocks_write(set, path, EG2D_FORMAT_SU2), path, eg2d_blocks_last_error(set));
     snprintf(path, sizeof path, "%s/step_foam", argv[1]);
     check(eg2d_blocks_write(set, path, EG2D_FORMAT_OPENFOAM), path, eg2d_blocks_last_error(set));
+    {   /* a grid written over a set's case: the set's cell zones go with its mesh */
+        char zones[4200];
+        snprintf(path, sizeof path, "%s/rewritten_foam", argv[1]);
+        check(eg2d_blocks_write(set, path, EG2D_FORMAT_OPENFOAM), path, eg2d_blocks_last_error(set));
+        snprintf(zones, sizeof zones, "%s/constant/polyMesh/cellZones", path);
+        check(access(zones, F_OK), zones, "no cellZones written for a set");
+        check(eg2d_write(g[0], path, EG2D_FORMAT_OPENFOAM), path, eg2d_last_error(g[0]));
+        check(access(zones, F_OK) == 0, zones, "an earlier set's cellZones left beside a single grid's mesh");
+    }
     snprintf(path, sizeof path, "%s/step.p3d", argv[1]);
     check(eg2d_blocks_write(set, path, EG2D_FORMAT_PLOT3D_ASCII | EG2D_PLOT3D_EXTRUDED), path, eg2d_blocks_last_error(set));
     if (argc < 3 || strcmp(argv[2], "no-cgns")) {
