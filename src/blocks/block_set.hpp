@@ -50,7 +50,8 @@ public:
     // guarantee.
     void join(const Join &j);
     // Block b's name, "block<b>" until named: the zone's in the files that
-    // hold a zone a block (CGNS, VTK multiblock).
+    // hold a zone a block (CGNS, VTK multiblock) and the merged OpenFOAM
+    // mesh's cellZones.
     const std::string &name(int b) const { return names_[static_cast<std::size_t>(b)]; }
     // Names block b: 1 to 32 letters, digits, '_' or '-', a letter first (a
     // CGNS name, an XML attribute, part of a file name), no other block's
