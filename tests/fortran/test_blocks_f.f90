@@ -1,7 +1,8 @@
 ! A set of blocks from Fortran (eg2d_blocks_t), as tests/c/test_blocks.c
 ! does in C: the unit square with a bulging top as one block and as two
 ! blocks joined down its middle solve to the same grid; a join whose node
-! counts differ is refused with the message naming both ranges.
+! counts differ is refused with the message naming both ranges; the blocks'
+! names read and set, a name another block has refused.
 program test_blocks_f
   use eg2d
   use checks
@@ -31,6 +32,14 @@ program test_blocks_f
   call check_contains(set%last_error(), 'block 0 side IMAX nodes 0..1 has 2 nodes, block 1 side IMIN nodes 0..2 has 3', &
                       'the message names both ranges')
   call set%join(b0, EG2D_SIDE_IMAX, 0, nj - 1, b1, EG2D_SIDE_IMIN, 0, nj - 1)
+  ! names: block0, block1 until named; the library's rule refused by name
+  call check(set%name(b0) == 'block0' .and. set%name(b1) == 'block1', 'blocks named block0 and block1 until named')
+  call set%set_name(b1, 'right-half')
+  call set%set_name(b0, 'right-half', st)
+  call check_status(st, EG2D_ERR_ARGUMENT, 'a name another block has refused')
+  call check_contains(set%last_error(), 'name "right-half": block 1 has that name', 'the message names the other block')
+  call check(set%name(b0) == 'block0' .and. set%name(b1) == 'right-half' .and. set%name(2) == '', &
+             'names read back; none for a block the set has not')
   call left%set_tolerance(1d-13)
   call set%solve()
   call set%get_run(it, residual, unknowns)

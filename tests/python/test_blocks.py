@@ -2,7 +2,8 @@
 in C: the unit square with a bulging top as one block and as two blocks
 joined down its middle solve to the same grid, and it is written as one
 SU2 mesh; a bad join raises the error naming both ranges; the set keeps
-its Grids alive."""
+its Grids alive; the blocks' names are read and set, a name another
+block has is refused, and the .vtm names the block."""
 import gc
 import os
 
@@ -38,6 +39,15 @@ def test_set_is_the_single_block(tmp_path):
         assert e.value.status == eg2d.ERR_ARGUMENT
         assert "block 0 side IMAX nodes 0..1 has 2 nodes, block 1 side IMIN nodes 0..2 has 3" in str(e.value)
         blocks.join(0, eg2d.SIDE_IMAX, 0, NJ - 1, 1, eg2d.SIDE_IMIN, 0, NJ - 1)
+        # names: block0, block1 until named; the library's rule refused by name
+        assert (blocks.name(0), blocks.name(1)) == ("block0", "block1")
+        blocks.set_name(1, "right-half")
+        with pytest.raises(eg2d.Error) as e:
+            blocks.set_name(0, "right-half")
+        assert e.value.status == eg2d.ERR_ARGUMENT and 'name "right-half": block 1 has that name' in str(e.value)
+        assert (blocks.name(0), blocks.name(1)) == ("block0", "right-half")
+        with pytest.raises(IndexError):
+            blocks.name(2)
         left.set_tolerance(1e-13)
         del left, right  # the set keeps its Grids alive
         gc.collect()
@@ -58,6 +68,7 @@ def test_set_is_the_single_block(tmp_path):
         blocks.write(tmp_path / "set.vtm", eg2d.FORMAT_VTM)  # VTK multiblock: a .vts a block in set/
         assert sorted(os.listdir(tmp_path / "set")) == ["set_0.vts", "set_1.vts"]
         assert 'file="set/set_1.vts"' in (tmp_path / "set.vtm").read_text()
+        assert 'name="right-half"' in (tmp_path / "set.vtm").read_text()
     assert blocks.closed
     with pytest.raises(eg2d.StateError):
         blocks.solve()
