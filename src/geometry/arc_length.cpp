@@ -103,11 +103,11 @@ ArcLength::ArcLength(std::shared_ptr<const Curve> curve) : curve_(std::move(curv
     // far shorter than its distance from the origin), which the bound on the
     // panels finds, or the bound on that round-off says up front.
     const double tol = kRelativeTolerance * estimate;
-    bool far_below = false;
+    bool hopeless = false;  // the round-off far above the tolerance somewhere
     for (std::size_t p = 0; p + 1 < knots_.size(); ++p)
-        far_below = far_below || curve_->speed_round_off(knots_[p], knots_[p + 1], r_max) *
+        hopeless = hopeless || curve_->speed_round_off(knots_[p], knots_[p + 1], r_max) *
                                              (knots_[p + 1] - knots_[p]) > kFarBelow * tol;
-    if (!(!far_below && tabulate(tol, r_max, false)) && !tabulate(tol, r_max, true))
+    if (!(!hopeless && tabulate(tol, r_max, false)) && !tabulate(tol, r_max, true))
         fail(Failure::Argument, format("the curve's arc length does not converge to %g of its length within %zu "
                                        "panels: the curve is not smooth, or too small (length %g)",
                                        kRelativeTolerance, kMaxPanels, estimate));
